@@ -1,0 +1,329 @@
+//! `screwbender`: the command-line interface to the ScrewBender motion core.
+//!
+//! Reads a JSON motion document from FILE or standard input (`-`), writes JSON to standard
+//! output. Exit status 0 on success, 2 with a one-line message on standard error for bad usage
+//! or bad input.
+
+use std::io::Read;
+use std::process::ExitCode;
+
+use screwbender::{
+    scenes, Error, Motion, MotionDocument, Polyscrew, Pose, Rules, Scheme, Screw, ScrewBender,
+    ScrewKind, Subdivision,
+};
+use serde_json::{json, Value};
+
+const HELP: &str = "\
+screwbender — smooth rigid motions by screw subdivision (Powell & Rossignac)
+
+USAGE:
+  screwbender subdivide [OPTIONS] [FILE]         refined motion document on stdout
+  screwbender eval --u U [--u U ...] [OPTIONS] [FILE]
+                                                 poses of the motion at coarse parameters U
+  screwbender screw --t T [--t T ...] [FILE]     screw(p0, T, p1) for a document of two poses
+  screwbender preset [ID]                        list presets, or print preset ID as a document
+  screwbender help | --help | --version
+
+OPTIONS (subdivide, eval):
+  --scheme bspline|fourpoint|jarek   subdivision scheme (default: fourpoint)
+  --s S                              use the J_s family with parameter S instead of --scheme
+                                     (S=0 4-point, S=0.5 Jarek, S=1 B-spline; direct rules only)
+  --rules direct|split               rule set: revised paper's direct rules (default) or the
+                                     first version's split-then-tweak rules
+  --levels N                         subdivision steps (default 5; eval: 0 = plain polyscrew)
+  --open                             treat the poses as an open sequence (overrides 'closed')
+
+FILE is a JSON motion document (default: standard input, also '-'):
+  {\"closed\": true, \"poses\": [{\"origin\": [x,y,z], \"rotation\": [w,x,y,z]}, ...]}
+a pose may give \"basis\": [I, J, K] (column vectors) instead of \"rotation\".
+Quaternions are [w, x, y, z], scalar first; angles in radians; frames right-handed.
+
+EXAMPLE:
+  screwbender preset l_cycle_rotated | screwbender subdivide --scheme jarek --levels 3
+";
+
+/// A failure of the command: a message for standard error (exit status 2).
+struct Failure(String);
+
+impl From<Error> for Failure {
+    fn from(e: Error) -> Self {
+        Failure(e.to_string())
+    }
+}
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match run(&args) {
+        Ok(out) => {
+            print!("{out}");
+            ExitCode::SUCCESS
+        }
+        Err(Failure(msg)) => {
+            eprintln!("screwbender: {msg}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn run(args: &[String]) -> Result<String, Failure> {
+    let Some((command, rest)) = args.split_first() else {
+        return Err(Failure(
+            "no command given (try 'screwbender --help')".into(),
+        ));
+    };
+    match command.as_str() {
+        "help" | "--help" | "-h" => Ok(HELP.to_string()),
+        "--version" | "-V" => Ok(format!("screwbender {}\n", env!("CARGO_PKG_VERSION"))),
+        "subdivide" => subdivide(rest),
+        "eval" => eval(rest),
+        "screw" => screw_command(rest),
+        "preset" => preset(rest),
+        other => Err(Failure(format!(
+            "unknown command '{other}' (expected subdivide, eval, screw, preset; try --help)"
+        ))),
+    }
+}
+
+/// Parsed options shared by the commands.
+#[derive(Default)]
+struct Options {
+    scheme: Option<Scheme>,
+    s: Option<f64>,
+    rules: Rules,
+    levels: Option<u32>,
+    open: bool,
+    us: Vec<f64>,
+    ts: Vec<f64>,
+    file: Option<String>,
+}
+
+/// Which options a command accepts.
+struct Accepts {
+    subdivision: bool,
+    u: bool,
+    t: bool,
+}
+
+fn parse_options(args: &[String], accepts: Accepts) -> Result<Options, Failure> {
+    let mut o = Options::default();
+    let mut it = args.iter();
+    while let Some(arg) = it.next() {
+        let mut value = |name: &str| {
+            it.next()
+                .cloned()
+                .ok_or_else(|| Failure(format!("{name} needs a value")))
+        };
+        match arg.as_str() {
+            "--scheme" if accepts.subdivision => {
+                o.scheme = Some(value("--scheme")?.parse::<Scheme>()?)
+            }
+            "--s" if accepts.subdivision => o.s = Some(number("--s", &value("--s")?)?),
+            "--rules" if accepts.subdivision => o.rules = value("--rules")?.parse::<Rules>()?,
+            "--levels" if accepts.subdivision => o.levels = Some(levels(&value("--levels")?)?),
+            "--open" if accepts.subdivision => o.open = true,
+            "--u" if accepts.u => o.us.push(number("--u", &value("--u")?)?),
+            "--t" if accepts.t => o.ts.push(number("--t", &value("--t")?)?),
+            a if a.starts_with("--") => {
+                return Err(Failure(format!("unknown option '{a}' (try --help)")))
+            }
+            f => {
+                if o.file.replace(f.to_string()).is_some() {
+                    return Err(Failure("more than one input FILE given".into()));
+                }
+            }
+        }
+    }
+    if o.scheme.is_some() && o.s.is_some() {
+        return Err(Failure(
+            "give either --scheme or --s (the J_s family), not both".into(),
+        ));
+    }
+    Ok(o)
+}
+
+fn number(name: &str, text: &str) -> Result<f64, Failure> {
+    match text.parse::<f64>() {
+        Ok(v) if v.is_finite() => Ok(v),
+        _ => Err(Failure(format!("{name}: '{text}' is not a finite number"))),
+    }
+}
+
+fn levels(text: &str) -> Result<u32, Failure> {
+    text.parse::<u32>().map_err(|_| {
+        Failure(format!(
+            "--levels: '{text}' is not a level count (expected a whole number ≥ 0)"
+        ))
+    })
+}
+
+fn read_document(file: Option<&str>) -> Result<MotionDocument, Failure> {
+    let (name, text) = match file {
+        None | Some("-") => {
+            let mut text = String::new();
+            std::io::stdin()
+                .read_to_string(&mut text)
+                .map_err(|e| Failure(format!("standard input: {e}")))?;
+            ("standard input".to_string(), text)
+        }
+        Some(path) => {
+            let meta = std::fs::metadata(path).map_err(|e| Failure(format!("{path}: {e}")))?;
+            if meta.len() > screwbender::MAX_DOCUMENT_BYTES as u64 {
+                return Err(Failure(format!(
+                    "{path}: {} bytes is larger than the limit of {} bytes",
+                    meta.len(),
+                    screwbender::MAX_DOCUMENT_BYTES
+                )));
+            }
+            let text =
+                std::fs::read_to_string(path).map_err(|e| Failure(format!("{path}: {e}")))?;
+            (path.to_string(), text)
+        }
+    };
+    MotionDocument::from_json(&text).map_err(|e| Failure(format!("{name}: {e}")))
+}
+
+impl Options {
+    fn subdivision(&self, default_levels: u32) -> Subdivision {
+        let scheme = match (self.scheme, self.s) {
+            (_, Some(s)) => Scheme::J(s),
+            (Some(scheme), None) => scheme,
+            (None, None) => Scheme::default(),
+        };
+        Subdivision::new(scheme, self.rules, self.levels.unwrap_or(default_levels))
+    }
+}
+
+fn subdivide(args: &[String]) -> Result<String, Failure> {
+    let o = parse_options(
+        args,
+        Accepts {
+            subdivision: true,
+            u: false,
+            t: false,
+        },
+    )?;
+    let doc = read_document(o.file.as_deref())?;
+    let closed = doc.closed && !o.open;
+    let motion = ScrewBender::new(doc.poses, closed, o.subdivision(5))?;
+    let mut out = MotionDocument::new(motion.refined().poses().to_vec(), closed);
+    out.name = doc.name;
+    Ok(out.to_json())
+}
+
+fn pose_json(p: &Pose) -> Value {
+    json!({"origin": p.origin.to_array(), "rotation": p.rotation_wxyz()})
+}
+
+fn eval(args: &[String]) -> Result<String, Failure> {
+    let o = parse_options(
+        args,
+        Accepts {
+            subdivision: true,
+            u: true,
+            t: false,
+        },
+    )?;
+    if o.us.is_empty() {
+        return Err(Failure("eval needs at least one --u U".into()));
+    }
+    let doc = read_document(o.file.as_deref())?;
+    let closed = doc.closed && !o.open;
+    let sub = o.subdivision(5);
+    let motion: Box<dyn Motion> = if sub.levels == 0 {
+        Box::new(Polyscrew::new(doc.poses, closed)?)
+    } else {
+        Box::new(ScrewBender::new(doc.poses, closed, sub)?)
+    };
+    let poses: Vec<Value> =
+        o.us.iter()
+            .map(|&u| {
+                let mut v = pose_json(&motion.pose_at(u));
+                v["u"] = json!(u);
+                v
+            })
+            .collect();
+    Ok(with_pose_lines(
+        &[("motion", json!(motion.name())), ("closed", json!(closed))],
+        &poses,
+    ))
+}
+
+fn screw_command(args: &[String]) -> Result<String, Failure> {
+    let o = parse_options(
+        args,
+        Accepts {
+            subdivision: false,
+            u: false,
+            t: true,
+        },
+    )?;
+    if o.ts.is_empty() {
+        return Err(Failure("screw needs at least one --t T".into()));
+    }
+    let doc = read_document(o.file.as_deref())?;
+    if doc.poses.len() != 2 {
+        return Err(Failure(format!(
+            "poses: screw needs exactly 2 poses, {} given",
+            doc.poses.len()
+        )));
+    }
+    let s = Screw::between(&doc.poses[0], &doc.poses[1]);
+    let params = match s.parameters() {
+        ScrewKind::Identity => json!({"kind": "identity"}),
+        ScrewKind::Translation {
+            direction,
+            distance,
+        } => json!({"kind": "translation", "axis": direction.to_array(), "angle": 0.0,
+                    "slide": distance}),
+        ScrewKind::General(p) => json!({"kind": "screw", "axis": p.axis.to_array(),
+            "angle": p.angle, "slide": p.slide, "pitch": p.pitch,
+            "point": p.point.to_array(), "foot": p.foot.to_array()}),
+    };
+    let poses: Vec<Value> =
+        o.ts.iter()
+            .map(|&t| {
+                let mut v = pose_json(&s.at(t));
+                v["t"] = json!(t);
+                v
+            })
+            .collect();
+    Ok(with_pose_lines(&[("screw", params)], &poses))
+}
+
+fn preset(args: &[String]) -> Result<String, Failure> {
+    match args {
+        [] => {
+            let mut s = String::new();
+            for sc in scenes::scenes() {
+                s += &format!("{:<18} {:<4} {}\n", sc.id, sc.label, sc.description);
+            }
+            Ok(s)
+        }
+        [id] => {
+            let sc = scenes::scene(id).ok_or_else(|| {
+                Failure(format!(
+                    "unknown preset '{id}' (run 'screwbender preset' for the list)"
+                ))
+            })?;
+            let mut doc = MotionDocument::new(sc.poses, sc.closed);
+            doc.name = Some(sc.id.to_string());
+            Ok(doc.to_json())
+        }
+        _ => Err(Failure("preset takes at most one ID".into())),
+    }
+}
+
+/// A JSON object with the given header fields (in order) and a `poses` array, one pose per
+/// line — the same layout as a motion document, so outputs diff and grep well.
+fn with_pose_lines(header: &[(&str, Value)], poses: &[Value]) -> String {
+    let mut s = String::from("{\n");
+    for (key, value) in header {
+        s += &format!("  {}: {},\n", json!(key), value);
+    }
+    s += "  \"poses\": [\n";
+    for (i, p) in poses.iter().enumerate() {
+        s += &format!("    {p}{}\n", if i + 1 < poses.len() { "," } else { "" });
+    }
+    s += "  ]\n}\n";
+    s
+}

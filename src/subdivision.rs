@@ -1,0 +1,279 @@
+//! Split&Tweak subdivision of cyclic and open sequences (spec §6, §7), generic over [`Blend`], so
+//! the same rules refine poses (by screws) and points (by affine combinations, spec §4).
+//!
+//! Slot convention everywhere: `out[2i]` is the image of input `i` (the *old* slot), `out[2i+1]`
+//! the *new* pose between inputs `i` and `i+1`. All outputs of one step are computed from that
+//! step's input (simultaneous update).
+
+use crate::blend::Blend;
+use crate::error::Error;
+use crate::scheme::{Rules, Scheme};
+
+/// The largest number of elements a subdivision may produce or hold in between (the memory
+/// guard): `2²⁰ = 1 048 576` poses, about 59 MB. Asking for more returns
+/// [`Error::TooManyPoses`] before anything is allocated.
+pub const MAX_REFINED_POSES: usize = 1 << 20;
+
+/// A complete subdivision request: scheme, rule set and number of levels.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Subdivision {
+    /// The scheme (or J_s parameter).
+    pub scheme: Scheme,
+    /// The rule set (paper version).
+    pub rules: Rules,
+    /// Number of subdivision steps; `0` leaves the input as it is.
+    pub levels: u32,
+}
+
+impl Subdivision {
+    /// A request with the given scheme, rules and levels.
+    pub fn new(scheme: Scheme, rules: Rules, levels: u32) -> Subdivision {
+        Subdivision {
+            scheme,
+            rules,
+            levels,
+        }
+    }
+
+    /// Checks the options themselves (not the input): the J_s family exists only with the direct
+    /// rules, and its parameter must be finite.
+    pub fn validate(&self) -> Result<(), Error> {
+        if let Scheme::J(s) = self.scheme {
+            if !s.is_finite() {
+                return Err(Error::NonFinite { at: "s".into() });
+            }
+            if self.rules == Rules::SplitTweak {
+                return Err(Error::Unsupported {
+                    at: "rules".into(),
+                    reason: "the J_s family is defined with the direct rules only".into(),
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// How many elements [`Subdivision::apply`] returns for `n` inputs, or the memory-guard
+    /// error (which also covers the intermediate sequence of an open input).
+    pub fn output_len(&self, n: usize, closed: bool) -> Result<usize, Error> {
+        let min = 2;
+        if n < min {
+            return Err(Error::TooFewPoses {
+                at: "poses".into(),
+                found: n,
+                min,
+            });
+        }
+        let working = if closed {
+            n
+        } else {
+            n + 2 * self.scheme.half_width()
+        };
+        let too_many = |requested: usize| Error::TooManyPoses {
+            at: "levels".into(),
+            requested,
+            max: MAX_REFINED_POSES,
+        };
+        let factor = 1usize.checked_shl(self.levels).filter(|_| self.levels < 64);
+        let peak = factor.and_then(|f| working.checked_mul(f));
+        match peak {
+            Some(p) if p <= MAX_REFINED_POSES => {
+                let f = factor.unwrap_or(1);
+                Ok(if closed { p } else { (n - 1) * f + 1 })
+            }
+            Some(p) => Err(too_many(p)),
+            None => Err(too_many(usize::MAX)),
+        }
+    }
+
+    /// Subdivides `input` `levels` times.
+    ///
+    /// Closed (cyclic) input of `n ≥ 2` elements gives `n·2^levels` elements. Open input of
+    /// `m ≥ 2` elements is extended by dummy poses extrapolated along the end screws, subdivided as
+    /// a cycle and cut back (spec §7), giving `(m−1)·2^levels + 1` elements that cover exactly the
+    /// original parameter range; motions sampled from one screw are reproduced exactly.
+    pub fn apply<T: Blend>(&self, input: &[T], closed: bool) -> Result<Vec<T>, Error> {
+        self.validate()?;
+        self.output_len(input.len(), closed)?;
+        if closed {
+            return Ok(self.refine_cycle(input.to_vec()));
+        }
+        let k = self.scheme.half_width();
+        let extended = extend_open(input, k);
+        let refined = self.refine_cycle(extended);
+        let f = 1usize << self.levels;
+        let start = k * f;
+        let len = (input.len() - 1) * f + 1;
+        Ok(refined[start..start + len].to_vec())
+    }
+
+    /// One step on a cycle, appended to `out` (which is cleared first).
+    pub fn step_cyclic<T: Blend>(&self, input: &[T], out: &mut Vec<T>) {
+        out.clear();
+        match self.rules {
+            Rules::Direct => direct_step(input, self.scheme, out),
+            Rules::SplitTweak => split_tweak_step(input, self.scheme, out),
+        }
+    }
+
+    fn refine_cycle<T: Blend>(&self, mut current: Vec<T>) -> Vec<T> {
+        let mut next = Vec::with_capacity(current.len() << self.levels);
+        for _ in 0..self.levels {
+            self.step_cyclic(&current, &mut next);
+            std::mem::swap(&mut current, &mut next);
+        }
+        current
+    }
+}
+
+/// Spec §7 step 1–2: `P_{−j} = blend(P₀, −j, P₁)`, `P_{m−1+j} = blend(P_{m−2}, 1+j, P_{m−1})`
+/// for `j = 1..k`, in order `P_{−k} … P_{m−1+k}`.
+pub(crate) fn extend_open<T: Blend>(input: &[T], k: usize) -> Vec<T> {
+    let m = input.len();
+    let first = T::span(&input[0], &input[1]);
+    let last = T::span(&input[m - 2], &input[m - 1]);
+    let mut e = Vec::with_capacity(m + 2 * k);
+    e.extend((1..=k).rev().map(|j| T::span_at(&first, -(j as f64))));
+    e.extend_from_slice(input);
+    e.extend((1..=k).map(|j| T::span_at(&last, 1.0 + j as f64)));
+    e
+}
+
+/// The direct rules (spec §6.1) and the J_s family, with each coarse span's interpolant computed
+/// once. `L_i` is the span `P_i → P_{i+1}`; reversed arguments use `blend(b, t, a) =
+/// blend(a, 1 − t, b)`.
+fn direct_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>) {
+    let n = p.len();
+    let spans: Vec<T::Span> = (0..n).map(|i| T::span(&p[i], &p[(i + 1) % n])).collect();
+    let at = |i: usize, t: f64| T::span_at(&spans[i % n], t);
+    out.reserve(2 * n);
+    for i in 0..n {
+        let prev = (i + n - 1) % n; // span a → b
+        let next = (i + 1) % n; // span c → d
+        let (old, new) = match scheme {
+            // old s(s(b,¼,a), ½, s(b,¼,c)); new s(b,½,c)
+            Scheme::BSpline => (T::blend(&at(prev, 0.75), 0.5, &at(i, 0.25)), at(i, 0.5)),
+            // old b; new s(s(a,9/8,b), ½, s(d,9/8,c))
+            Scheme::FourPoint => (
+                p[i],
+                T::blend(&at(prev, 9.0 / 8.0), 0.5, &at(next, -1.0 / 8.0)),
+            ),
+            // old s(s(a,7/8,b), ½, s(c,7/8,b)); new s(s(a,17/16,b), ½, s(d,17/16,c))
+            Scheme::Jarek => (
+                T::blend(&at(prev, 7.0 / 8.0), 0.5, &at(i, 1.0 / 8.0)),
+                T::blend(&at(prev, 17.0 / 16.0), 0.5, &at(next, -1.0 / 16.0)),
+            ),
+            // old s(s(b,s/4,a), ½, s(b,s/4,c)); new s(s(a,w,b), ½, s(d,w,c)), w = 1 + (1−s)/8
+            Scheme::J(s) => {
+                let old = if s == 0.0 {
+                    p[i]
+                } else {
+                    T::blend(&at(prev, 1.0 - s / 4.0), 0.5, &at(i, s / 4.0))
+                };
+                let w = 1.0 + (1.0 - s) / 8.0;
+                (old, T::blend(&at(prev, w), 0.5, &at(next, 1.0 - w)))
+            }
+        };
+        out.push(old);
+        out.push(new);
+    }
+}
+
+/// The first version's rules (spec §6.2): split, then tweak the split sequence `Z`, all right-hand
+/// sides reading `Z`. The 4-point and Jarek new-pose tweaks use the corrected argument order
+/// `s(s(Z_{j−2}, ½, Z_{j+2}), 5/4 resp. 9/8, Z_j)`.
+fn split_tweak_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>) {
+    let n = p.len();
+    let m = 2 * n;
+    let mut z = Vec::with_capacity(m);
+    for i in 0..n {
+        z.push(p[i]);
+        z.push(T::blend(&p[i], 0.5, &p[(i + 1) % n]));
+    }
+    let zz = |j: usize| &z[j % m];
+    // (old-pose weight, new-pose weight): how far each tweak goes.
+    let (old_w, new_w) = match scheme {
+        Scheme::BSpline => (Some(0.5), None),
+        Scheme::FourPoint => (None, Some(5.0 / 4.0)),
+        Scheme::Jarek => (Some(0.25), Some(9.0 / 8.0)),
+        Scheme::J(_) => unreachable!("validated: J_s uses the direct rules"),
+    };
+    out.reserve(m);
+    for j in 0..m {
+        let q = if j % 2 == 0 {
+            match old_w {
+                // Q_j = s(Z_j, w, s(Z_{j−1}, ½, Z_{j+1}))
+                Some(w) => T::blend(zz(j), w, &T::blend(zz(j + m - 1), 0.5, zz(j + 1))),
+                None => z[j],
+            }
+        } else {
+            match new_w {
+                // Q_j = s(s(Z_{j−2}, ½, Z_{j+2}), w, Z_j)
+                Some(w) => T::blend(&T::blend(zz(j + m - 2), 0.5, zz(j + 2)), w, zz(j)),
+                None => z[j],
+            }
+        };
+        out.push(q);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec2;
+
+    #[test]
+    fn memory_guard_counts_open_extension() {
+        let s = Subdivision::new(Scheme::FourPoint, Rules::Direct, 18);
+        assert_eq!(s.output_len(4, true).unwrap(), 4 << 18);
+        // open: 4 + 2·2 = 8 working poses · 2^18 = 2^21 > limit
+        assert!(matches!(
+            s.output_len(4, false),
+            Err(Error::TooManyPoses { .. })
+        ));
+        let huge = Subdivision::new(Scheme::BSpline, Rules::Direct, 200);
+        assert!(matches!(
+            huge.output_len(3, true),
+            Err(Error::TooManyPoses {
+                requested: usize::MAX,
+                ..
+            })
+        ));
+        assert!(matches!(
+            s.output_len(1, true),
+            Err(Error::TooFewPoses {
+                found: 1,
+                min: 2,
+                ..
+            })
+        ));
+    }
+
+    #[test]
+    fn j_with_split_rules_is_rejected() {
+        let s = Subdivision::new(Scheme::J(0.3), Rules::SplitTweak, 1);
+        let pts = [DVec2::ZERO, DVec2::X, DVec2::Y];
+        assert!(matches!(
+            s.apply(&pts, true),
+            Err(Error::Unsupported { .. })
+        ));
+        let s = Subdivision::new(Scheme::J(f64::NAN), Rules::Direct, 1);
+        assert!(matches!(s.apply(&pts, true), Err(Error::NonFinite { .. })));
+    }
+
+    #[test]
+    fn open_output_covers_the_range() {
+        let pts: Vec<DVec2> = (0..5).map(|i| DVec2::new(i as f64, 0.0)).collect();
+        for scheme in [Scheme::BSpline, Scheme::FourPoint, Scheme::Jarek] {
+            let out = Subdivision::new(scheme, Rules::Direct, 3)
+                .apply(&pts, false)
+                .unwrap();
+            assert_eq!(out.len(), 4 * 8 + 1);
+            for (j, q) in out.iter().enumerate() {
+                assert!(
+                    (q.x - j as f64 / 8.0).abs() < 1e-14 && q.y == 0.0,
+                    "{scheme} {j}"
+                );
+            }
+        }
+    }
+}
