@@ -1,0 +1,155 @@
+//! Core benchmarks: screw evaluations (full and cached), subdivision of 32 poses × 6 levels per
+//! scheme and rule set, and nalgebra's `UnitDualQuaternion::sclerp` on the same pose pairs.
+//!
+//! Run: `cargo bench --bench core`. Before timing, the accuracy of both screw implementations is
+//! printed against screws constructed exactly (rotation about a known axis + slide).
+
+use std::hint::black_box;
+
+use criterion::{criterion_group, criterion_main, BatchSize, Criterion, Throughput};
+use glam::{DQuat, DVec3};
+use nalgebra::{Isometry3, Quaternion, Translation3, UnitDualQuaternion, UnitQuaternion};
+use screwbender::{screw, Pose, Rules, Scheme, Screw, Subdivision};
+
+/// Pairs per batch (fixed seed).
+const PAIRS: usize = 1024;
+
+struct Rng(u64);
+impl Rng {
+    fn unit(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+    }
+    fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.unit()
+    }
+    fn vec(&mut self, s: f64) -> DVec3 {
+        DVec3::new(self.range(-s, s), self.range(-s, s), self.range(-s, s))
+    }
+    fn axis(&mut self) -> DVec3 {
+        loop {
+            let v = self.vec(1.0);
+            if v.length() > 0.1 {
+                return v.normalize();
+            }
+        }
+    }
+    fn pose(&mut self) -> Pose {
+        let q = DQuat::from_axis_angle(self.axis(), self.range(0.0, std::f64::consts::PI));
+        Pose::new(self.vec(5.0), q)
+    }
+}
+
+/// Pose pairs related by a known screw (angle below π − 0.01 so sclerp is defined), with the
+/// exact pose at `t = 0.3`.
+fn pairs(rng: &mut Rng) -> Vec<(Pose, Pose, Pose)> {
+    (0..PAIRS)
+        .map(|_| {
+            let a = rng.pose();
+            let (axis, point) = (rng.axis(), rng.vec(5.0));
+            let (angle, slide) = (
+                rng.range(0.0, std::f64::consts::PI - 0.01),
+                rng.range(-3.0, 3.0),
+            );
+            let at = |t: f64| {
+                let r = DQuat::from_axis_angle(axis, t * angle);
+                Pose::new(point - r * point + t * slide * axis, r).compose(&a)
+            };
+            (a, at(1.0), at(0.3))
+        })
+        .collect()
+}
+
+fn to_dq(p: &Pose) -> UnitDualQuaternion<f64> {
+    let q = p.rotation;
+    UnitDualQuaternion::from_isometry(&Isometry3::from_parts(
+        Translation3::new(p.origin.x, p.origin.y, p.origin.z),
+        UnitQuaternion::from_quaternion(Quaternion::new(q.w, q.x, q.y, q.z)),
+    ))
+}
+
+fn dq_error(got: &UnitDualQuaternion<f64>, want: &Pose) -> f64 {
+    let iso = got.to_isometry();
+    let t = iso.translation.vector;
+    let q = iso.rotation.quaternion();
+    let p = Pose::new(
+        DVec3::new(t.x, t.y, t.z),
+        DQuat::from_xyzw(q.i, q.j, q.k, q.w),
+    );
+    p.distance(want)
+}
+
+fn report_accuracy(data: &[(Pose, Pose, Pose)]) {
+    let ours = data
+        .iter()
+        .map(|(a, b, x)| screw(a, 0.3, b).distance(x))
+        .fold(0.0, f64::max);
+    let theirs = data
+        .iter()
+        .map(|(a, b, x)| dq_error(&to_dq(a).sclerp(&to_dq(b), 0.3), x))
+        .fold(0.0, f64::max);
+    println!("accuracy at t = 0.3 over {PAIRS} pairs (max |Δo| + angle): screwbender {ours:.2e}, nalgebra sclerp {theirs:.2e}");
+}
+
+fn screws(c: &mut Criterion) {
+    let mut rng = Rng(42);
+    let data = pairs(&mut rng);
+    report_accuracy(&data);
+    let mut g = c.benchmark_group("screw");
+    g.throughput(Throughput::Elements(PAIRS as u64));
+    g.bench_function("full screw(a, t, b)", |bench| {
+        bench.iter(|| {
+            for (a, b, _) in &data {
+                black_box(screw(black_box(a), black_box(0.3), black_box(b)));
+            }
+        })
+    });
+    let cached: Vec<Screw> = data.iter().map(|(a, b, _)| Screw::between(a, b)).collect();
+    g.bench_function("cached Screw::at(t)", |bench| {
+        bench.iter(|| {
+            for s in &cached {
+                black_box(s.at(black_box(0.3)));
+            }
+        })
+    });
+    let dqs: Vec<_> = data.iter().map(|(a, b, _)| (to_dq(a), to_dq(b))).collect();
+    g.bench_function("nalgebra sclerp", |bench| {
+        bench.iter(|| {
+            for (a, b) in &dqs {
+                black_box(black_box(a).sclerp(black_box(b), black_box(0.3)));
+            }
+        })
+    });
+    g.finish();
+}
+
+fn subdivision(c: &mut Criterion) {
+    let mut rng = Rng(7);
+    // A smooth-ish 32-pose cycle: consecutive poses 0.3 rad and ~1 unit apart.
+    let mut poses = vec![rng.pose()];
+    for _ in 1..32 {
+        let last = *poses.last().unwrap();
+        let r = DQuat::from_axis_angle(rng.axis(), 0.3);
+        poses.push(Pose::new(last.origin + rng.vec(1.0), r * last.rotation));
+    }
+    let mut g = c.benchmark_group("subdivide 32 poses x 6 levels");
+    for rules in [Rules::Direct, Rules::SplitTweak] {
+        for scheme in [Scheme::BSpline, Scheme::FourPoint, Scheme::Jarek] {
+            let s = Subdivision::new(scheme, rules, 6);
+            g.bench_function(format!("{scheme} {rules}"), |bench| {
+                bench.iter_batched(
+                    || poses.clone(),
+                    |p| black_box(s.apply(&p, true).unwrap()),
+                    BatchSize::SmallInput,
+                )
+            });
+        }
+    }
+    g.finish();
+}
+
+criterion_group!(benches, screws, subdivision);
+criterion_main!(benches);
