@@ -72,7 +72,6 @@
 mod blend;
 mod document;
 mod error;
-pub mod methods;
 mod motion;
 mod polyscrew;
 mod pose;
