@@ -83,6 +83,11 @@ mod subdivision;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
 
+/// The README's Rust examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;
+
 pub use blend::Blend;
 pub use document::{MotionDocument, RawDocument, RawPose, MAX_DOCUMENT_BYTES};
 pub use error::Error;
