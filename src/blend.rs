@@ -27,6 +27,12 @@ pub trait Blend: Copy {
     fn blend(a: &Self, t: f64, b: &Self) -> Self {
         Self::span_at(&Self::span(a, b), t)
     }
+    /// `blend(a, ½, b)`, which a space may compute more cheaply (the outer blend of every
+    /// subdivision rule is a midpoint).
+    #[inline]
+    fn midpoint(a: &Self, b: &Self) -> Self {
+        Self::blend(a, 0.5, b)
+    }
 }
 
 impl Blend for Pose {
@@ -38,6 +44,10 @@ impl Blend for Pose {
     #[inline]
     fn span_at(span: &Screw, t: f64) -> Self {
         span.at(t)
+    }
+    #[inline]
+    fn midpoint(a: &Self, b: &Self) -> Self {
+        Screw::midpoint(a, b)
     }
 }
 

@@ -119,6 +119,28 @@ impl Screw {
     /// The screw from `a` to `b` (the logarithm of `b ∘ a⁻¹`), with the half-turn tie-break.
     #[inline]
     pub fn between(a: &Pose, b: &Pose) -> Screw {
+        let mut s = Screw::between_unmeasured(a, b);
+        s.half_angle = half_angle(s.sin_half, s.cos_half);
+        s
+    }
+
+    /// `screw(a, ½, b)` without any transcendental function: the half-angle of the half-angle
+    /// comes from `cos(θ/4) = √((1 + cos(θ/2))/2)`, well conditioned since `θ/2 ≤ π/2`.
+    #[inline]
+    pub fn midpoint(a: &Pose, b: &Pose) -> Pose {
+        let s = Screw::between_unmeasured(a, b);
+        if s.sin_half == 0.0 {
+            return Pose::new(a.origin + 0.5 * s.translation, a.rotation);
+        }
+        let ca = (0.5 * (1.0 + s.cos_half)).sqrt();
+        let sa = s.sin_half / (2.0 * ca);
+        s.evaluate(0.5, sa, ca)
+    }
+
+    /// Everything of [`Screw::between`] but `half_angle`, which is left NaN (the caller fills
+    /// it in, or evaluates only where the angle's sine and cosine suffice).
+    #[inline]
+    fn between_unmeasured(a: &Pose, b: &Pose) -> Screw {
         let mut qd = b.rotation * a.rotation.conjugate();
         if qd.w < 0.0 {
             qd = -qd;
@@ -162,7 +184,7 @@ impl Screw {
         Screw {
             start: *a,
             axis,
-            half_angle: s.atan2(w),
+            half_angle: f64::NAN,
             sin_half,
             cos_half,
             slide,
@@ -185,11 +207,20 @@ impl Screw {
     /// The pose at fraction `t` of the screw (any real `t`).
     #[inline]
     pub fn at(&self, t: f64) -> Pose {
-        let a = &self.start;
         if self.sin_half == 0.0 {
-            return Pose::new(a.origin + t * self.translation, a.rotation);
+            return Pose::new(
+                self.start.origin + t * self.translation,
+                self.start.rotation,
+            );
         }
         let (sa, ca) = (t * self.half_angle).sin_cos();
+        self.evaluate(t, sa, ca)
+    }
+
+    /// The pose at `t` given `sa = sin(tθ/2)` and `ca = cos(tθ/2)` (rotating case only).
+    #[inline]
+    fn evaluate(&self, t: f64, sa: f64, ca: f64) -> Pose {
+        let a = &self.start;
         let n = self.axis;
         let qt = DQuat::from_xyzw(n.x * sa, n.y * sa, n.z * sa, ca);
         // Rot(n, φ) u with φ = (t−1)θ/2 = tθ/2 − θ/2, by the angle-difference formulas.
@@ -255,6 +286,19 @@ impl Screw {
     /// The end pose (`at(1)`).
     pub fn end(&self) -> Pose {
         self.at(1.0)
+    }
+}
+
+/// `atan2(s, c)` for `s ≥ 0` (the half angle, in `[0, π]`), through the single-argument
+/// `atan` of the smaller ratio: the same accuracy as `atan2` and, without `atan2`'s special
+/// cases, about half its cost (it is a third of a screw's instructions otherwise).
+#[inline]
+fn half_angle(s: f64, c: f64) -> f64 {
+    use std::f64::consts::FRAC_PI_2;
+    if c >= s {
+        (s / c).atan()
+    } else {
+        FRAC_PI_2 - (c / s).atan()
     }
 }
 

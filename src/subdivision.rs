@@ -106,8 +106,16 @@ impl Subdivision {
         Ok(refined[start..start + len].to_vec())
     }
 
-    /// One step on a cycle, appended to `out` (which is cleared first).
-    pub fn step_cyclic<T: Blend>(&self, input: &[T], out: &mut Vec<T>) {
+    /// One step on a cycle (ignoring `levels`): `out` is cleared and receives `2·input.len()`
+    /// elements. Fails for invalid options or fewer than 2 inputs.
+    pub fn step_cyclic<T: Blend>(&self, input: &[T], out: &mut Vec<T>) -> Result<(), Error> {
+        self.validate()?;
+        Subdivision { levels: 1, ..*self }.output_len(input.len(), true)?;
+        self.step_unchecked(input, out);
+        Ok(())
+    }
+
+    fn step_unchecked<T: Blend>(&self, input: &[T], out: &mut Vec<T>) {
         out.clear();
         match self.rules {
             Rules::Direct => direct_step(input, self.scheme, out),
@@ -118,7 +126,7 @@ impl Subdivision {
     fn refine_cycle<T: Blend>(&self, mut current: Vec<T>) -> Vec<T> {
         let mut next = Vec::with_capacity(current.len() << self.levels);
         for _ in 0..self.levels {
-            self.step_cyclic(&current, &mut next);
+            self.step_unchecked(&current, &mut next);
             std::mem::swap(&mut current, &mut next);
         }
         current
@@ -151,26 +159,26 @@ fn direct_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>) {
         let next = (i + 1) % n; // span c → d
         let (old, new) = match scheme {
             // old s(s(b,¼,a), ½, s(b,¼,c)); new s(b,½,c)
-            Scheme::BSpline => (T::blend(&at(prev, 0.75), 0.5, &at(i, 0.25)), at(i, 0.5)),
+            Scheme::BSpline => (T::midpoint(&at(prev, 0.75), &at(i, 0.25)), at(i, 0.5)),
             // old b; new s(s(a,9/8,b), ½, s(d,9/8,c))
             Scheme::FourPoint => (
                 p[i],
-                T::blend(&at(prev, 9.0 / 8.0), 0.5, &at(next, -1.0 / 8.0)),
+                T::midpoint(&at(prev, 9.0 / 8.0), &at(next, -1.0 / 8.0)),
             ),
             // old s(s(a,7/8,b), ½, s(c,7/8,b)); new s(s(a,17/16,b), ½, s(d,17/16,c))
             Scheme::Jarek => (
-                T::blend(&at(prev, 7.0 / 8.0), 0.5, &at(i, 1.0 / 8.0)),
-                T::blend(&at(prev, 17.0 / 16.0), 0.5, &at(next, -1.0 / 16.0)),
+                T::midpoint(&at(prev, 7.0 / 8.0), &at(i, 1.0 / 8.0)),
+                T::midpoint(&at(prev, 17.0 / 16.0), &at(next, -1.0 / 16.0)),
             ),
             // old s(s(b,s/4,a), ½, s(b,s/4,c)); new s(s(a,w,b), ½, s(d,w,c)), w = 1 + (1−s)/8
             Scheme::J(s) => {
                 let old = if s == 0.0 {
                     p[i]
                 } else {
-                    T::blend(&at(prev, 1.0 - s / 4.0), 0.5, &at(i, s / 4.0))
+                    T::midpoint(&at(prev, 1.0 - s / 4.0), &at(i, s / 4.0))
                 };
                 let w = 1.0 + (1.0 - s) / 8.0;
-                (old, T::blend(&at(prev, w), 0.5, &at(next, 1.0 - w)))
+                (old, T::midpoint(&at(prev, w), &at(next, 1.0 - w)))
             }
         };
         out.push(old);
@@ -187,28 +195,28 @@ fn split_tweak_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>) {
     let mut z = Vec::with_capacity(m);
     for i in 0..n {
         z.push(p[i]);
-        z.push(T::blend(&p[i], 0.5, &p[(i + 1) % n]));
+        z.push(T::midpoint(&p[i], &p[(i + 1) % n]));
     }
     let zz = |j: usize| &z[j % m];
-    // (old-pose weight, new-pose weight): how far each tweak goes.
-    let (old_w, new_w) = match scheme {
-        Scheme::BSpline => (Some(0.5), None),
-        Scheme::FourPoint => (None, Some(5.0 / 4.0)),
-        Scheme::Jarek => (Some(0.25), Some(9.0 / 8.0)),
-        Scheme::J(_) => unreachable!("validated: J_s uses the direct rules"),
+    // (old-pose weight, new-pose weight): how far each tweak goes. The J_s family has no
+    // split-tweak form (options are validated before a step runs); its named members map here.
+    let (old_w, new_w) = match scheme.j_parameter() {
+        s if s == 1.0 => (Some(0.5), None),
+        s if s == 0.0 => (None, Some(5.0 / 4.0)),
+        _ => (Some(0.25), Some(9.0 / 8.0)),
     };
     out.reserve(m);
     for j in 0..m {
         let q = if j % 2 == 0 {
             match old_w {
                 // Q_j = s(Z_j, w, s(Z_{j−1}, ½, Z_{j+1}))
-                Some(w) => T::blend(zz(j), w, &T::blend(zz(j + m - 1), 0.5, zz(j + 1))),
+                Some(w) => T::blend(zz(j), w, &T::midpoint(zz(j + m - 1), zz(j + 1))),
                 None => z[j],
             }
         } else {
             match new_w {
                 // Q_j = s(s(Z_{j−2}, ½, Z_{j+2}), w, Z_j)
-                Some(w) => T::blend(&T::blend(zz(j + m - 2), 0.5, zz(j + 2)), w, zz(j)),
+                Some(w) => T::blend(&T::midpoint(zz(j + m - 2), zz(j + 2)), w, zz(j)),
                 None => z[j],
             }
         };

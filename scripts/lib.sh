@@ -1,0 +1,51 @@
+# shellcheck shell=bash
+# Shared helpers for scripts/*.sh. Source it; do not execute it.
+
+# Repository root, whatever the caller's working directory.
+REPO_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+export REPO_ROOT
+
+# Never prompt (apt, npm, cargo): CI runs with no stdin.
+export DEBIAN_FRONTEND=noninteractive
+
+# cargo's bin dir may be missing from PATH in a non-login shell; wasm-bindgen lands there.
+export PATH="${CARGO_HOME:-$HOME/.cargo}/bin:$PATH"
+
+# The only Rust target besides the host that this project builds for (used by the scripts).
+# shellcheck disable=SC2034
+WASM_TARGET=wasm32-unknown-unknown
+
+log() { printf '[%s] %s\n' "$(date +%H:%M:%S)" "$*" >&2; }
+die() { log "ERROR: $*"; exit 1; }
+
+# header TEXT: a visible separator line, so each step is easy to find in CI logs.
+header() { printf '\n==================== %s ====================\n' "$*" >&2; }
+
+# timed LABEL CMD...: run CMD and report how long it took (install steps are slow; CI budget matters).
+timed() {
+  local label=$1 start rc=0
+  shift
+  start=$SECONDS
+  "$@" || rc=$?
+  if ((rc == 0)); then
+    log "$label: done in $((SECONDS - start)) s"
+  else
+    log "$label: FAILED (exit $rc) after $((SECONDS - start)) s"
+  fi
+  return "$rc"
+}
+
+# Version of the wasm-bindgen crate in Cargo.lock: the CLI must match it exactly, or the
+# generated JS glue and the wasm module disagree ("schema version mismatch").
+locked_wasm_bindgen_version() {
+  awk '
+    $0 == "[[package]]" { name = "" }
+    $1 == "name" && $3 == "\"wasm-bindgen\"" { name = "wasm-bindgen" }
+    name == "wasm-bindgen" && $1 == "version" { gsub(/"/, "", $3); print $3; exit }
+  ' "$REPO_ROOT/Cargo.lock"
+}
+
+# Run as root directly, otherwise through sudo (a developer's own machine).
+as_root() {
+  if ((EUID == 0)); then "$@"; else sudo "$@"; fi
+}

@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# Run every test of the project, installing what is missing first (scripts/setup.sh).
+#
+#   ./scripts/test.sh              # setup + all stages; fails fast on the first failing stage
+#   SKIP_SETUP=1 ./scripts/test.sh # skip the install checks (fast local reruns)
+#
+# Stages: rustfmt, clippy (native + wasm32, with and without `render`), native tests, doc
+# tests, wasm tests (node, and headless Chromium for tests with
+# `wasm_bindgen_test_configure!(run_in_browser)`), then scripts/test.d/.
+#
+# scripts/test.d/: every executable `*.sh` there is one more stage, run in sorted (C locale)
+# order from the repo root after the Rust stages, with this script's environment (node_modules
+# installed, CHROMEDRIVER set, Chromium at /usr/bin/chromium). A stage fails by exiting non-zero.
+# Name them NN-what.sh (e.g. 10-npm-package.sh, 20-node-tests.sh, 50-e2e.sh) to fix the order.
+#
+# The last line is `stages: N passed, M failed`.
+set -euo pipefail
+# shellcheck source=scripts/lib.sh
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
+cd "$REPO_ROOT"
+
+if [[ ${SKIP_SETUP:-0} == 1 ]]; then
+  log "SKIP_SETUP=1: not checking installs"
+else
+  ./scripts/setup.sh
+fi
+
+# wasm-bindgen-test-runner: drive Debian's Chromium through its ChromeDriver, with the extra
+# Chrome flags that enable WebGPU/WebGL on SwiftShader (no GPU here) and keep Chromium off the
+# network. SwiftShader is slow, hence the generous per-test-binary timeout (default 20 s).
+export CHROMEDRIVER=${CHROMEDRIVER:-/usr/bin/chromedriver}
+export WASM_BINDGEN_TEST_WEBDRIVER_JSON=${WASM_BINDGEN_TEST_WEBDRIVER_JSON:-$REPO_ROOT/webdriver.json}
+export WASM_BINDGEN_TEST_TIMEOUT=${WASM_BINDGEN_TEST_TIMEOUT:-120}
+
+passed=0
+summary() { printf 'stages: %d passed, %d failed\n' "$passed" "$1"; }
+
+# stage NAME CMD...: one announced stage; stops the whole run at the first failure.
+stage() {
+  local name=$1 start=$SECONDS rc=0
+  shift
+  header "stage $((passed + 1)): $name"
+  "$@" || rc=$?
+  if ((rc != 0)); then
+    log "stage '$name' FAILED (exit $rc) after $((SECONDS - start)) s"
+    summary 1
+    exit "$rc"
+  fi
+  passed=$((passed + 1))
+  log "stage '$name' passed in $((SECONDS - start)) s"
+}
+
+stage "rustfmt" cargo fmt --all -- --check
+stage "clippy native (all targets)" cargo clippy --all-targets -- -D warnings
+stage "clippy $WASM_TARGET (lib)" cargo clippy --lib --target "$WASM_TARGET" -- -D warnings
+stage "clippy $WASM_TARGET (lib, features render)" \
+  cargo clippy --lib --target "$WASM_TARGET" --features render -- -D warnings
+stage "native tests (all targets)" cargo test --all-targets
+stage "doc tests" cargo test --doc
+stage "wasm tests (node + headless Chromium)" cargo test --target "$WASM_TARGET" --tests --lib
+
+# Extra stages from other parts of the project (JS package, node tests, Playwright e2e).
+if [[ -d scripts/test.d ]]; then
+  mapfile -t hooks < <(LC_ALL=C find scripts/test.d -maxdepth 1 -type f -name '*.sh' | LC_ALL=C sort)
+  for hook in "${hooks[@]}"; do
+    if [[ -x $hook ]]; then
+      stage "${hook#scripts/}" "./$hook"
+    else
+      log "WARNING: $hook is not executable, so it is not run (chmod +x it)"
+    fi
+  done
+fi
+
+summary 0
