@@ -53,19 +53,7 @@ impl Polyscrew {
             });
         }
         for (i, p) in poses.iter_mut().enumerate() {
-            if !p.is_finite() {
-                return Err(Error::NonFinite {
-                    at: format!("poses[{i}]"),
-                });
-            }
-            let norm = p.rotation.length();
-            if (norm - 1.0).abs() > UNIT_QUATERNION_TOLERANCE {
-                return Err(Error::NonUnitQuaternion {
-                    at: format!("poses[{i}].rotation"),
-                    norm,
-                });
-            }
-            p.rotation /= norm;
+            *p = checked_pose(p).map_err(|e| e.within(&format!("poses[{i}]")))?;
         }
         let spans = span_screws(&poses, closed);
         Ok(Polyscrew {
@@ -74,6 +62,30 @@ impl Polyscrew {
             spans,
             span_length,
         })
+    }
+
+    /// Mutable access to the poses for in-crate local updates; call
+    /// [`Polyscrew::refresh_spans`] for the changed range afterwards.
+    pub(crate) fn poses_mut(&mut self) -> &mut [Pose] {
+        &mut self.poses
+    }
+
+    /// Recomputes the screws of every span touching poses `start .. start + count` (indices
+    /// read cyclically for a closed polyscrew).
+    pub(crate) fn refresh_spans(&mut self, start: usize, count: usize) {
+        let n = self.poses.len();
+        let spans = self.spans.len();
+        if count >= n {
+            self.spans = span_screws(&self.poses, self.closed);
+            return;
+        }
+        // Spans start−1 … start+count−1 have an end in the range.
+        for k in 0..=count {
+            let i = (start + n + k - 1) % n;
+            if i < spans {
+                self.spans[i] = Screw::between(&self.poses[i], &self.poses[(i + 1) % n]);
+            }
+        }
     }
 
     /// The poses at the span ends (the control poses of a plain polyscrew).
@@ -149,6 +161,29 @@ impl Polyscrew {
             angular_acceleration: DVec3::ZERO,
         }
     }
+}
+
+/// A pose checked for use in a motion: finite, rotation unit within
+/// [`UNIT_QUATERNION_TOLERANCE`] (then renormalised).
+pub(crate) fn checked_pose(p: &Pose) -> Result<Pose, Error> {
+    if !p.is_finite() {
+        return Err(Error::NonFinite { at: String::new() });
+    }
+    let norm = p.rotation.length();
+    if (norm - 1.0).abs() > UNIT_QUATERNION_TOLERANCE {
+        return Err(Error::NonUnitQuaternion {
+            at: "rotation".into(),
+            norm,
+        });
+    }
+    // Rotations already unit to rounding pass through untouched, so validating twice changes
+    // nothing (a rebuilt motion is bit-identical to an edited one).
+    let rotation = if (norm - 1.0).abs() <= 4.0 * f64::EPSILON {
+        p.rotation
+    } else {
+        p.rotation / norm
+    };
+    Ok(Pose::new(p.origin, rotation))
 }
 
 /// The screw of every span of a pose sequence.

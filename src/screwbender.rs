@@ -4,7 +4,7 @@ use glam::DVec3;
 
 use crate::error::Error;
 use crate::motion::{Kinematics, Motion};
-use crate::polyscrew::Polyscrew;
+use crate::polyscrew::{checked_pose, Polyscrew};
 use crate::pose::Pose;
 use crate::subdivision::Subdivision;
 
@@ -38,6 +38,39 @@ impl ScrewBender {
             subdivision,
             refined,
         })
+    }
+
+    /// Replaces control pose `i` and re-subdivides only the part of the motion it influences
+    /// (2 coarse spans on each side for the B-spline, 3 for the others; see
+    /// [`Subdivision::update_local`]): the cost of a drag step does not grow with the number of
+    /// control poses. The result equals a full rebuild bit for bit.
+    ///
+    /// Returns the rewritten refined index range `(start, count)`, read cyclically. On error
+    /// (index out of range, non-finite or non-unit pose) nothing changes.
+    pub fn set_control_pose(&mut self, i: usize, pose: Pose) -> Result<(usize, usize), Error> {
+        if i >= self.control.len() {
+            return Err(Error::OutOfRange {
+                at: "index".into(),
+                value: i.to_string(),
+                expected: format!("0 to {}", self.control.len() - 1),
+            });
+        }
+        let pose = checked_pose(&pose).map_err(|e| e.within("pose"))?;
+        let old = std::mem::replace(&mut self.control[i], pose);
+        let refined = self.refined.poses_mut();
+        match self
+            .subdivision
+            .update_local(&self.control, self.closed, i, refined)
+        {
+            Ok((start, count)) => {
+                self.refined.refresh_spans(start, count);
+                Ok((start, count))
+            }
+            Err(e) => {
+                self.control[i] = old;
+                Err(e)
+            }
+        }
     }
 
     /// The control poses.

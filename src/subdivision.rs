@@ -106,6 +106,93 @@ impl Subdivision {
         Ok(refined[start..start + len].to_vec())
     }
 
+    /// Re-subdivides only what moving one input changed (spec §8.4, locality), in place.
+    ///
+    /// `refined` must be the output of [`Subdivision::apply`] for the same options, closedness and
+    /// length, computed before input `moved` changed; `input` holds the new value. Refined poses
+    /// within 2 (B-spline) or 3 (other schemes) coarse spans of the moved pose are recomputed from
+    /// a window of `4` resp. `6` coarse poses on each side, which is exactly what the full
+    /// subdivision reads there, so the result is bit-identical to a full recompute at a cost
+    /// independent of the sequence length. Returns the refined index range that was rewritten as
+    /// `(start, count)`, to be read cyclically (indices mod `refined.len()`).
+    pub fn update_local<T: Blend>(
+        &self,
+        input: &[T],
+        closed: bool,
+        moved: usize,
+        refined: &mut [T],
+    ) -> Result<(usize, usize), Error> {
+        self.validate()?;
+        let len = self.output_len(input.len(), closed)?;
+        if refined.len() != len || moved >= input.len() {
+            return Err(Error::OutOfRange {
+                at: if moved >= input.len() {
+                    "moved"
+                } else {
+                    "refined"
+                }
+                .into(),
+                value: if moved >= input.len() {
+                    moved
+                } else {
+                    refined.len()
+                }
+                .to_string(),
+                expected: format!("{} refined poses and an input index", len),
+            });
+        }
+        // Influence radius r (2 or 3 coarse spans) and window half-width K = 2r: the kept outputs
+        // at distance < r from the moved pose read inputs at distance < 2r, all inside the window.
+        let r = self.scheme.half_width() + 1;
+        let k_ext = self.scheme.half_width();
+        let whole = |this: &Self, refined: &mut [T]| -> Result<(usize, usize), Error> {
+            let all = this.apply(input, closed)?;
+            refined.copy_from_slice(&all);
+            Ok((0, refined.len()))
+        };
+        // Open ends: moving one of the two end poses on each side also moves the dummy poses.
+        if !closed && (moved < 2 || moved + 2 >= input.len()) {
+            return whole(self, refined);
+        }
+        let working: Vec<T>;
+        let (cycle, centre): (&[T], usize) = if closed {
+            (input, moved)
+        } else {
+            working = extend_open(input, k_ext);
+            (&working, moved + k_ext)
+        };
+        let n = cycle.len();
+        let half = 2 * r;
+        if 2 * half + 1 >= n {
+            return whole(self, refined);
+        }
+        let window: Vec<T> = (0..=2 * half)
+            .map(|i| cycle[(centre + n - half + i) % n])
+            .collect();
+        let local = self.refine_cycle(window);
+        let f = 1usize << self.levels;
+        let total = n * f;
+        let offset = if closed { 0 } else { k_ext * f };
+        let first = (half - r) * f + 1;
+        let last = (half + r) * f - 1;
+        let mut start = None;
+        let mut count = 0;
+        for (q, value) in local.iter().enumerate().take(last + 1).skip(first) {
+            let global = ((centre + n - half) * f + q) % total;
+            if closed {
+                refined[global] = *value;
+            } else if global >= offset && global - offset < len {
+                refined[global - offset] = *value;
+            } else {
+                continue;
+            }
+            let index = if closed { global } else { global - offset };
+            start.get_or_insert(index);
+            count += 1;
+        }
+        Ok((start.unwrap_or(0), count))
+    }
+
     /// One step on a cycle (ignoring `levels`): `out` is cleared and receives `2·input.len()`
     /// elements. Fails for invalid options or fewer than 2 inputs.
     pub fn step_cyclic<T: Blend>(&self, input: &[T], out: &mut Vec<T>) -> Result<(), Error> {

@@ -356,3 +356,77 @@ fn bad_requests_are_errors() {
     let e = ScrewBender::new(bad, true, Subdivision::default()).unwrap_err();
     assert_eq!(e.path(), "poses[1].rotation");
 }
+
+/// `update_local` after moving one pose equals a full re-subdivision bit for bit, for every rule
+/// set, closed and open, at every position (including the open ends and short cycles).
+#[test]
+fn local_update_equals_full_recompute() {
+    let mut rng = Rng::new(20);
+    for (scheme, rules) in all_rule_sets() {
+        for closed in [true, false] {
+            for n in [3, 9, 16, 20] {
+                let mut p = rng.cycle(n, 0.8);
+                let sub = Subdivision::new(scheme, rules, 3);
+                let mut refined = sub.apply(&p, closed).unwrap();
+                for _ in 0..4 {
+                    let j = (rng.unit() * n as f64) as usize % n;
+                    p[j] = rng.pose_near(&p[j], 0.4, 1.0);
+                    let (start, count) = sub.update_local(&p, closed, j, &mut refined).unwrap();
+                    let full = sub.apply(&p, closed).unwrap();
+                    assert!(count > 0 && start < refined.len());
+                    assert!(
+                        refined == full,
+                        "{scheme} {rules} closed={closed} n={n} moved {j}: local update differs"
+                    );
+                }
+            }
+        }
+    }
+    let p = rng.cycle(5, 0.8);
+    let sub = Subdivision::new(Scheme::Jarek, Rules::Direct, 2);
+    let mut wrong = vec![p[0]; 7];
+    assert!(sub.update_local(&p, true, 1, &mut wrong).is_err());
+    let mut refined = sub.apply(&p, true).unwrap();
+    assert!(sub.update_local(&p, true, 5, &mut refined).is_err());
+}
+
+/// Dragging a control pose through `ScrewBender::set_control_pose` gives the same motion
+/// (refined poses and span screws) as building it anew; bad poses change nothing.
+#[test]
+fn set_control_pose_matches_a_rebuild() {
+    let mut rng = Rng::new(23);
+    for closed in [true, false] {
+        let p = rng.cycle(24, 0.8);
+        let sub = Subdivision::new(Scheme::FourPoint, Rules::Direct, 4);
+        let mut m = ScrewBender::new(p.clone(), closed, sub).unwrap();
+        for step in 0..10 {
+            let j = (step * 7) % 24;
+            let moved = rng.pose_near(&m.control()[j], 0.3, 0.5);
+            m.set_control_pose(j, moved).unwrap();
+            let fresh = ScrewBender::new(m.control().to_vec(), closed, sub).unwrap();
+            let (a, b) = (m.refined(), fresh.refined());
+            let bad_pose = a.poses().iter().zip(b.poses()).position(|(x, y)| x != y);
+            assert_eq!(
+                bad_pose, None,
+                "closed={closed} step {step}: first differing pose"
+            );
+            let bad_span = a.spans().iter().zip(b.spans()).position(|(x, y)| x != y);
+            assert_eq!(
+                bad_span, None,
+                "closed={closed} step {step}: first differing span"
+            );
+        }
+        let before = m.clone();
+        let mut nan = m.control()[3];
+        nan.origin.y = f64::NAN;
+        assert_eq!(m.set_control_pose(3, nan).unwrap_err().path(), "pose");
+        let mut far = m.control()[3];
+        far.rotation = far.rotation * 3.0;
+        assert_eq!(
+            m.set_control_pose(3, far).unwrap_err().path(),
+            "pose.rotation"
+        );
+        assert!(m.set_control_pose(24, m.control()[0]).is_err());
+        assert_eq!(m, before, "a rejected edit changes nothing");
+    }
+}
