@@ -80,6 +80,7 @@ mod scheme;
 mod screw;
 mod screwbender;
 mod subdivision;
+mod timing;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
 
@@ -103,3 +104,4 @@ pub use screw::{
 };
 pub use screwbender::ScrewBender;
 pub use subdivision::{Subdivision, MAX_REFINED_POSES};
+pub use timing::Timing;
