@@ -108,7 +108,8 @@ impl Pose {
         let m = basis_matrix(basis)?;
         let det = m.determinant();
         let scale = m.x_axis.length() * m.y_axis.length() * m.z_axis.length();
-        if !(scale > 0.0) || det.abs() <= 1e-9 * scale {
+        // `scale` is a product of lengths of finite vectors: zero for a zero column.
+        if scale == 0.0 || det.abs() <= 1e-9 * scale {
             return Err(Error::NotOrthonormal {
                 at: "basis".into(),
                 deviation: 1.0,

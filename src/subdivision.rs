@@ -241,7 +241,7 @@ fn direct_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>) {
     let spans: Vec<T::Span> = (0..n).map(|i| T::span(&p[i], &p[(i + 1) % n])).collect();
     let at = |i: usize, t: f64| T::span_at(&spans[i % n], t);
     out.reserve(2 * n);
-    for i in 0..n {
+    for (i, pi) in p.iter().enumerate() {
         let prev = (i + n - 1) % n; // span a → b
         let next = (i + 1) % n; // span c → d
         let (old, new) = match scheme {
@@ -249,7 +249,7 @@ fn direct_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>) {
             Scheme::BSpline => (T::midpoint(&at(prev, 0.75), &at(i, 0.25)), at(i, 0.5)),
             // old b; new s(s(a,9/8,b), ½, s(d,9/8,c))
             Scheme::FourPoint => (
-                p[i],
+                *pi,
                 T::midpoint(&at(prev, 9.0 / 8.0), &at(next, -1.0 / 8.0)),
             ),
             // old s(s(a,7/8,b), ½, s(c,7/8,b)); new s(s(a,17/16,b), ½, s(d,17/16,c))
@@ -260,7 +260,7 @@ fn direct_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>) {
             // old s(s(b,s/4,a), ½, s(b,s/4,c)); new s(s(a,w,b), ½, s(d,w,c)), w = 1 + (1−s)/8
             Scheme::J(s) => {
                 let old = if s == 0.0 {
-                    p[i]
+                    *pi
                 } else {
                     T::midpoint(&at(prev, 1.0 - s / 4.0), &at(i, s / 4.0))
                 };
@@ -287,24 +287,27 @@ fn split_tweak_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>) {
     let zz = |j: usize| &z[j % m];
     // (old-pose weight, new-pose weight): how far each tweak goes. The J_s family has no
     // split-tweak form (options are validated before a step runs); its named members map here.
-    let (old_w, new_w) = match scheme.j_parameter() {
-        s if s == 1.0 => (Some(0.5), None),
-        s if s == 0.0 => (None, Some(5.0 / 4.0)),
-        _ => (Some(0.25), Some(9.0 / 8.0)),
+    let s = scheme.j_parameter();
+    let (old_w, new_w) = if s == 1.0 {
+        (Some(0.5), None)
+    } else if s == 0.0 {
+        (None, Some(5.0 / 4.0))
+    } else {
+        (Some(0.25), Some(9.0 / 8.0))
     };
     out.reserve(m);
-    for j in 0..m {
+    for (j, zj) in z.iter().enumerate() {
         let q = if j % 2 == 0 {
             match old_w {
                 // Q_j = s(Z_j, w, s(Z_{j−1}, ½, Z_{j+1}))
-                Some(w) => T::blend(zz(j), w, &T::midpoint(zz(j + m - 1), zz(j + 1))),
-                None => z[j],
+                Some(w) => T::blend(zj, w, &T::midpoint(zz(j + m - 1), zz(j + 1))),
+                None => *zj,
             }
         } else {
             match new_w {
                 // Q_j = s(s(Z_{j−2}, ½, Z_{j+2}), w, Z_j)
-                Some(w) => T::blend(&T::midpoint(zz(j + m - 2), zz(j + 2)), w, zz(j)),
-                None => z[j],
+                Some(w) => T::blend(&T::midpoint(zz(j + m - 2), zz(j + 2)), w, zj),
+                None => *zj,
             }
         };
         out.push(q);

@@ -1,5 +1,8 @@
 //! Polyscrew evaluation and its closed-form kinematics (spec §3), natively and in the browser.
 
+// The spec prints values like 0.707107: comparing with them is the point.
+#![allow(clippy::approx_constant)]
+
 #[cfg(target_arch = "wasm32")]
 wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
 #[cfg(target_arch = "wasm32")]
