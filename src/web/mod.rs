@@ -1,1 +1,65 @@
-//! The WebAssembly / JavaScript API (compiled for `wasm32` only).
+//! The WebAssembly / JavaScript API (compiled for `wasm32` only; the npm package `screwbender`).
+//!
+//! * [`MotionHandle`] — the JS class `Motion`: an editable motion document with subdivision
+//!   options, and the smooth motion it defines (poses, samples, kinematics, span screws).
+//! * Free functions: `screw`, `screwPoses`, `screwPairs`, `screwInfo`, `posesToMatrices`,
+//!   `scenes`, `limits`, `version`.
+//!
+//! Bulk results are typed arrays with fixed layouts (see [`convert`]): 7 `f64` per pose
+//! (origin `x, y, z`, quaternion `w, x, y, z`), 16 `f32` per column-major 4×4 matrix, 16 `f64`
+//! per kinematics sample. Every call that takes input validates it completely before changing
+//! anything and throws a JS `Error` whose message names the bad element (the core [`Error`]'s
+//! `Display`, e.g. `poses[3].rotation: zero quaternion`).
+//!
+//! [`Error`]: crate::Error
+
+use wasm_bindgen::prelude::*;
+
+pub mod convert;
+mod motion_api;
+pub mod options;
+mod scenes_api;
+mod screw_api;
+mod types;
+
+pub use motion_api::MotionHandle;
+pub use scenes_api::scenes;
+pub use screw_api::{poses_to_matrices_js, screw, screw_info, screw_pairs, screw_poses};
+
+use convert::{to_js, KINEMATICS_STRIDE, MATRIX_STRIDE, POSE_STRIDE};
+
+/// Installs the panic hook (panics, which should not happen, are logged with their message to
+/// the console). Runs once when the module is instantiated.
+#[wasm_bindgen(start)]
+pub fn start() {
+    console_error_panic_hook::set_once();
+}
+
+/// The crate version (also the npm package version).
+#[wasm_bindgen]
+pub fn version() -> String {
+    env!("CARGO_PKG_VERSION").to_string()
+}
+
+/// The API's size limits and typed-array strides.
+#[wasm_bindgen(unchecked_return_type = "Limits")]
+pub fn limits() -> Result<JsValue, JsError> {
+    #[derive(serde::Serialize)]
+    #[serde(rename_all = "camelCase")]
+    struct Limits {
+        max_refined_poses: usize,
+        max_batch: usize,
+        max_document_bytes: usize,
+        pose_stride: usize,
+        matrix_stride: usize,
+        kinematics_stride: usize,
+    }
+    to_js(&Limits {
+        max_refined_poses: crate::MAX_REFINED_POSES,
+        max_batch: crate::MAX_REFINED_POSES,
+        max_document_bytes: crate::MAX_DOCUMENT_BYTES,
+        pose_stride: POSE_STRIDE,
+        matrix_stride: MATRIX_STRIDE,
+        kinematics_stride: KINEMATICS_STRIDE,
+    })
+}

@@ -1,0 +1,598 @@
+//! The one place where JavaScript values meet glam types: pose objects, typed-array layouts,
+//! scalar arguments, and the serde bridge with element paths in its errors.
+//!
+//! Every function here returns the core [`Error`] (with the path of the bad element), so the
+//! callers can validate everything before they mutate anything.
+//!
+//! ## Typed-array layouts
+//!
+//! * **Poses** ([`POSE_STRIDE`] = 7 `f64` per pose, `Float64Array`):
+//!   `[ox, oy, oz, qw, qx, qy, qz]` — the origin, then the unit quaternion scalar first.
+//! * **Matrices** ([`MATRIX_STRIDE`] = 16 `f32` per pose, `Float32Array`): the 4×4 homogeneous
+//!   local-to-world matrix in column-major order (`m[12..15]` is the origin), ready for WebGL /
+//!   WebGPU instance buffers and `DOMMatrix.fromFloat32Array`.
+//! * **Kinematics samples** ([`KINEMATICS_STRIDE`] = 16 `f64` per sample, `Float64Array`):
+//!   `[u, px, py, pz, vx, vy, vz, ax, ay, az, wx, wy, wz, αx, αy, αz]` — the parameter, the body
+//!   point's position, velocity and acceleration, the body's angular velocity and angular
+//!   acceleration (all world frame, per coarse parameter unit).
+
+use glam::DVec3;
+use js_sys::{Array, ArrayBuffer, Float64Array, Object, Reflect};
+use serde::de::DeserializeOwned;
+use serde::Serialize;
+use wasm_bindgen::prelude::wasm_bindgen;
+use wasm_bindgen::{JsCast, JsError, JsValue};
+
+use crate::{Error, Kinematics, MotionDocument, Pose, RawDocument, RawPose};
+
+/// Numbers per pose in a pose `Float64Array`: origin `x, y, z`, then quaternion `w, x, y, z`.
+pub const POSE_STRIDE: usize = 7;
+
+/// Numbers per pose in a matrix `Float32Array`: a column-major 4×4 matrix.
+pub const MATRIX_STRIDE: usize = 16;
+
+/// Numbers per sample in a kinematics `Float64Array` (see the module docs for the order).
+pub const KINEMATICS_STRIDE: usize = 16;
+
+/// The JavaScript type of a value, for messages: `typeof`, except `null` and `array`.
+pub(crate) fn type_name(value: &JsValue) -> String {
+    if value.is_null() {
+        "null".into()
+    } else if Array::is_array(value) {
+        "array".into()
+    } else {
+        value.js_typeof().as_string().unwrap_or_default()
+    }
+}
+
+fn expected(at: &str, what: &str, value: &JsValue) -> Error {
+    Error::Parse {
+        at: at.to_string(),
+        message: format!("expected {what}, got {}", type_name(value)),
+    }
+}
+
+/// A JavaScript number (any `f64`, NaN included), or a `Parse` error naming `at`.
+pub(crate) fn number(value: &JsValue, at: &str) -> Result<f64, Error> {
+    value
+        .as_f64()
+        .ok_or_else(|| expected(at, "a number", value))
+}
+
+/// A finite JavaScript number.
+pub(crate) fn finite(value: &JsValue, at: &str) -> Result<f64, Error> {
+    let v = number(value, at)?;
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(Error::NonFinite { at: at.to_string() })
+    }
+}
+
+/// A whole number in `0..=max`, as `usize`.
+pub(crate) fn count(value: &JsValue, at: &str, max: usize) -> Result<usize, Error> {
+    let v = number(value, at)?;
+    if v.fract() == 0.0 && v >= 0.0 && v <= max as f64 {
+        Ok(v as usize)
+    } else {
+        Err(Error::OutOfRange {
+            at: at.to_string(),
+            value: v.to_string(),
+            expected: format!("a whole number from 0 to {max}"),
+        })
+    }
+}
+
+/// Checks an index `v` (a number from [`number`]) into a sequence of `len` elements: a whole
+/// number in `0..len`. Pure Rust, so it may run while a motion's state is borrowed.
+pub(crate) fn check_index(v: f64, at: &str, len: usize) -> Result<usize, Error> {
+    if v.fract() == 0.0 && v >= 0.0 && v < len as f64 {
+        Ok(v as usize)
+    } else {
+        Err(Error::OutOfRange {
+            at: at.to_string(),
+            value: v.to_string(),
+            expected: match len {
+                0 => "no index (the sequence is empty)".to_string(),
+                _ => format!("an integer from 0 to {}", len - 1),
+            },
+        })
+    }
+}
+
+/// A JavaScript string.
+pub(crate) fn string(value: &JsValue, at: &str) -> Result<String, Error> {
+    value
+        .as_string()
+        .ok_or_else(|| expected(at, "a string", value))
+}
+
+/// A JavaScript boolean.
+pub(crate) fn boolean(value: &JsValue, at: &str) -> Result<bool, Error> {
+    value
+        .as_bool()
+        .ok_or_else(|| expected(at, "a boolean", value))
+}
+
+/// Whether an optional argument was left out (`undefined` or `null`).
+pub(crate) fn is_absent(value: &JsValue) -> bool {
+    value.is_undefined() || value.is_null()
+}
+
+/// A list of at most `max` numbers from a `Float64Array` or a plain array (non-numbers become
+/// NaN and are caught by the caller's finiteness checks). The length is checked before copying.
+pub(crate) fn f64_array(value: &JsValue, at: &str, max: usize) -> Result<Vec<f64>, Error> {
+    let too_long = |len: u32| Error::OutOfRange {
+        at: at.to_string(),
+        value: format!("length {len}"),
+        expected: format!("at most {max} numbers per call"),
+    };
+    // The fast path: `ArrayBuffer.isView` reads an internal slot (never user code, false for
+    // proxies), so `instanceof` on a view is safe too; the copy is a fresh array without own
+    // properties. This avoids `structuredClone`, which is slow on large arrays.
+    if ArrayBuffer::is_view(value) && value.is_instance_of::<Float64Array>() {
+        let copy: Float64Array = CopiedF64Array::new(value)
+            .map_err(|e| Error::Parse {
+                at: at.to_string(),
+                message: format!("cannot read the argument: {}", js_message(&e)),
+            })?
+            .unchecked_into();
+        if copy.length() as usize > max {
+            return Err(too_long(copy.length()));
+        }
+        return Ok(copy.to_vec());
+    }
+    let value = plain(value, at)?;
+    if let Some(a) = value.dyn_ref::<Array>() {
+        if a.length() as usize > max {
+            return Err(too_long(a.length()));
+        }
+        // Element by element: `new Float64Array(array)` would throw on a BigInt and turn
+        // strings into numbers.
+        Ok(a.iter().map(|v| v.as_f64().unwrap_or(f64::NAN)).collect())
+    } else {
+        Err(expected(
+            at,
+            "a Float64Array or an array of numbers",
+            &value,
+        ))
+    }
+}
+
+/// The message of a thrown JavaScript value (`Error.message`, or its string form).
+fn js_message(value: &JsValue) -> String {
+    match value.dyn_ref::<js_sys::Error>() {
+        Some(e) => e.message().into(),
+        None => value.as_string().unwrap_or_else(|| format!("{value:?}")),
+    }
+}
+
+#[wasm_bindgen]
+extern "C" {
+    /// The global `structuredClone`, with a thrown exception returned as `Err`.
+    #[wasm_bindgen(catch, js_name = structuredClone)]
+    fn structured_clone(value: &JsValue) -> Result<JsValue, JsValue>;
+
+    /// The global `Float64Array` class, for a constructor call whose exceptions are caught.
+    #[wasm_bindgen(js_name = Float64Array)]
+    type CopiedF64Array;
+
+    /// `new Float64Array(source)`, with a thrown exception returned as `Err`. For a typed-array
+    /// source it copies through internal slots (no user code, one memcpy).
+    #[wasm_bindgen(catch, constructor, js_class = "Float64Array")]
+    fn new(source: &JsValue) -> Result<CopiedF64Array, JsValue>;
+}
+
+/// A plain-data copy of an object argument (primitives are returned as they are).
+///
+/// Reading a user's object can run user code (getters, proxies) that throws, and an exception
+/// crossing the wasm frames would skip Rust's cleanup. `structuredClone` runs all of that code
+/// once, inside a caught call; the copy has no getters or proxies, so nothing that reads it
+/// afterwards can throw. (Functions, symbols and proxies are not cloneable: they are rejected
+/// here with the engine's message.)
+pub(crate) fn plain(value: &JsValue, at: &str) -> Result<JsValue, Error> {
+    if !value.is_object() {
+        return Ok(value.clone());
+    }
+    structured_clone(value).map_err(|e| Error::Parse {
+        at: at.to_string(),
+        message: format!("cannot read the argument: {}", js_message(&e)),
+    })
+}
+
+/// Deserialises a JavaScript value with serde-wasm-bindgen, naming the offending element:
+/// `at` prefixes the path found inside the value, `what` names the input in the message
+/// (`invalid motion document: missing field 'origin'`, as the JSON parser words it).
+pub(crate) fn from_js<T: DeserializeOwned>(
+    value: &JsValue,
+    at: &str,
+    what: &str,
+) -> Result<T, Error> {
+    let de = serde_wasm_bindgen::Deserializer::from(value.clone());
+    serde_path_to_error::deserialize(de).map_err(|e| {
+        let path = e.path().to_string();
+        let message = js_message(&JsValue::from(e.into_inner()));
+        Error::Parse {
+            at: if path == "." { String::new() } else { path },
+            message: format!("invalid {what}: {message}"),
+        }
+        .within(at)
+    })
+}
+
+/// Serialises a value to plain JavaScript objects and arrays.
+pub(crate) fn to_js<T: Serialize + ?Sized>(value: &T) -> Result<JsValue, JsError> {
+    value
+        .serialize(&serde_wasm_bindgen::Serializer::new())
+        .map_err(|e| JsError::new(&js_message(&JsValue::from(e))))
+}
+
+// ---- strictness that serde-wasm-bindgen lacks -------------------------------------------------
+//
+// serde-wasm-bindgen reads only the fields a struct names (so `#[serde(deny_unknown_fields)]`
+// never fires) and does not reject arrays longer than a fixed-size array. The JSON parser does
+// both; these checks make a JS object fail exactly where its JSON text would.
+
+/// A deserializer that answers every request with an error, except that a struct request
+/// reports the struct's field names: serde's own list, in declaration order.
+struct FieldsProbe;
+
+#[derive(Debug)]
+enum ProbeError {
+    Fields(&'static [&'static str]),
+    Other,
+}
+
+impl std::fmt::Display for ProbeError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("field probe")
+    }
+}
+
+impl std::error::Error for ProbeError {}
+
+impl serde::de::Error for ProbeError {
+    fn custom<T: std::fmt::Display>(_: T) -> Self {
+        ProbeError::Other
+    }
+}
+
+impl<'de> serde::Deserializer<'de> for FieldsProbe {
+    type Error = ProbeError;
+
+    fn deserialize_any<V: serde::de::Visitor<'de>>(self, _: V) -> Result<V::Value, ProbeError> {
+        Err(ProbeError::Other)
+    }
+
+    fn deserialize_struct<V: serde::de::Visitor<'de>>(
+        self,
+        _name: &'static str,
+        fields: &'static [&'static str],
+        _visitor: V,
+    ) -> Result<V::Value, ProbeError> {
+        Err(ProbeError::Fields(fields))
+    }
+
+    serde::forward_to_deserialize_any! {
+        bool i8 i16 i32 i64 i128 u8 u16 u32 u64 u128 f32 f64 char str string bytes byte_buf
+        option unit unit_struct newtype_struct seq tuple tuple_struct map enum identifier
+        ignored_any
+    }
+}
+
+/// The field names of a struct deriving `Deserialize` (empty for other types).
+pub(crate) fn fields_of<T: DeserializeOwned>() -> &'static [&'static str] {
+    match T::deserialize(FieldsProbe) {
+        Err(ProbeError::Fields(fields)) => fields,
+        _ => &[],
+    }
+}
+
+fn get(object: &JsValue, key: &str, at: &str) -> Result<JsValue, Error> {
+    Reflect::get(object, &JsValue::from_str(key)).map_err(|e| Error::Parse {
+        at: at.to_string(),
+        message: js_message(&e),
+    })
+}
+
+/// Rejects keys of `object` that are not in `allowed`, in serde's words.
+pub(crate) fn check_keys(
+    object: &JsValue,
+    allowed: &'static [&'static str],
+    at: &str,
+    what: &str,
+) -> Result<(), Error> {
+    let Some(obj) = object.dyn_ref::<Object>() else {
+        return Ok(());
+    };
+    for key in Object::keys(obj).iter() {
+        let key = key.as_string().unwrap_or_default();
+        if !allowed.contains(&key.as_str()) {
+            let message =
+                <serde::de::value::Error as serde::de::Error>::unknown_field(&key, allowed);
+            return Err(Error::Parse {
+                at: at.to_string(),
+                message: format!("invalid {what}: {message}"),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Rejects a value that is not a JavaScript object (before serde words it as
+/// `expected struct RawDocument`).
+pub(crate) fn check_object(
+    value: &JsValue,
+    at: &str,
+    what: &str,
+    shape: &str,
+) -> Result<(), Error> {
+    if value.is_object() && !Array::is_array(value) {
+        Ok(())
+    } else {
+        Err(Error::Parse {
+            at: at.to_string(),
+            message: format!(
+                "invalid {what}: expected an object {shape}, got {}",
+                type_name(value)
+            ),
+        })
+    }
+}
+
+/// Rejects an array-like `value` whose length is not exactly `len` (shorter ones were already
+/// rejected by serde).
+fn check_len(value: &JsValue, len: usize, at: &str, what: &str) -> Result<(), Error> {
+    if is_absent(value) || !value.is_object() {
+        return Ok(());
+    }
+    let found = get(value, "length", at)?.as_f64().unwrap_or(len as f64);
+    if found != len as f64 {
+        return Err(Error::Parse {
+            at: at.to_string(),
+            message: format!(
+                "invalid {what}: invalid length {found}, expected an array of length {len}"
+            ),
+        });
+    }
+    Ok(())
+}
+
+/// `parent.field`, or `field` at the top level.
+fn join(parent: &str, field: &str) -> String {
+    if parent.is_empty() {
+        field.to_string()
+    } else {
+        format!("{parent}.{field}")
+    }
+}
+
+fn check_pose_shape(value: &JsValue, at: &str, what: &str) -> Result<(), Error> {
+    let fields = fields_of::<RawPose>();
+    check_keys(value, fields, at, what)?;
+    check_len(&get(value, "origin", at)?, 3, &join(at, "origin"), what)?;
+    check_len(&get(value, "rotation", at)?, 4, &join(at, "rotation"), what)?;
+    let basis = get(value, "basis", at)?;
+    let basis_at = join(at, "basis");
+    check_len(&basis, 3, &basis_at, what)?;
+    if Array::is_array(&basis) {
+        for (k, v) in Array::from(&basis).iter().enumerate() {
+            check_len(&v, 3, &format!("{basis_at}[{k}]"), what)?;
+        }
+    }
+    Ok(())
+}
+
+// ---- poses and documents ----------------------------------------------------------------------
+
+const POSE_SHAPE: &str = "{origin, rotation} or {origin, basis}";
+
+/// A pose object `{origin, rotation}` or `{origin, basis}`, validated like a pose of a motion
+/// document; errors are prefixed with `at` (e.g. `pose.rotation: zero quaternion`).
+pub(crate) fn pose_from_js(value: &JsValue, at: &str) -> Result<Pose, Error> {
+    let value = &plain(value, at)?;
+    check_object(value, at, "pose", POSE_SHAPE)?;
+    let raw: RawPose = from_js(value, at, "pose")?;
+    check_pose_shape(value, at, "pose")?;
+    raw.to_pose().map_err(|e| e.within(at))
+}
+
+/// A motion document object, through the same [`RawDocument::validate`] as the JSON parser.
+pub(crate) fn document_from_js(value: &JsValue) -> Result<MotionDocument, Error> {
+    const WHAT: &str = "motion document";
+    let value = &plain(value, "")?;
+    check_object(value, "", WHAT, "{closed?, name?, poses: [...]}")?;
+    let poses = get(value, "poses", "")?;
+    let poses = if Array::is_array(&poses) {
+        Array::from(&poses).to_vec()
+    } else {
+        Vec::new()
+    };
+    for (i, p) in poses.iter().enumerate() {
+        check_object(p, &format!("poses[{i}]"), WHAT, POSE_SHAPE)?;
+    }
+    let raw: RawDocument = from_js(value, "", WHAT)?;
+    check_keys(value, fields_of::<RawDocument>(), "", WHAT)?;
+    for (i, p) in poses.iter().enumerate() {
+        check_pose_shape(p, &format!("poses[{i}]"), WHAT)?;
+    }
+    raw.validate()
+}
+
+/// A pose as the plain object `{origin: [x, y, z], rotation: [w, x, y, z]}`.
+pub(crate) fn pose_to_js(pose: &Pose) -> Result<JsValue, JsError> {
+    to_js(&RawPose::from_pose(pose))
+}
+
+/// A motion document as a plain object (every pose as `origin` + `rotation`).
+pub(crate) fn document_to_js(doc: &MotionDocument) -> Result<JsValue, JsError> {
+    to_js(&doc.to_raw())
+}
+
+/// An optional local point `[x, y, z]` (absent: the local origin).
+pub(crate) fn point_from_js(value: &JsValue, at: &str) -> Result<DVec3, Error> {
+    if is_absent(value) {
+        return Ok(DVec3::ZERO);
+    }
+    let value = &plain(value, at)?;
+    let p: [f64; 3] = from_js(value, at, "point")?;
+    check_len(value, 3, at, "point")?;
+    if !p.iter().all(|v| v.is_finite()) {
+        return Err(Error::NonFinite { at: at.to_string() });
+    }
+    Ok(DVec3::from_array(p))
+}
+
+// ---- typed arrays -----------------------------------------------------------------------------
+
+/// Writes one pose in the [`POSE_STRIDE`] layout into `out` (7 numbers).
+#[inline]
+pub(crate) fn write_pose(out: &mut [f64], p: &Pose) {
+    let q = p.rotation_wxyz();
+    out.copy_from_slice(&[p.origin.x, p.origin.y, p.origin.z, q[0], q[1], q[2], q[3]]);
+}
+
+/// `count` poses `pose(k)` in the [`POSE_STRIDE`] layout (the bulk functions' inner loop: one
+/// zeroed allocation, no capacity checks).
+#[inline]
+pub(crate) fn poses_from_fn(count: usize, mut pose: impl FnMut(usize) -> Pose) -> Vec<f64> {
+    let mut out = vec![0.0; count * POSE_STRIDE];
+    for (k, chunk) in out.chunks_exact_mut(POSE_STRIDE).enumerate() {
+        write_pose(chunk, &pose(k));
+    }
+    out
+}
+
+/// Poses in the [`POSE_STRIDE`] layout.
+pub(crate) fn poses_to_array(poses: &[Pose]) -> Vec<f64> {
+    poses_from_fn(poses.len(), |k| poses[k])
+}
+
+/// Poses as column-major 4×4 `f32` matrices ([`MATRIX_STRIDE`] layout) — the only place in the
+/// JS API where `f64` becomes `f32`.
+pub(crate) fn poses_to_matrices(poses: &[Pose]) -> Vec<f32> {
+    let mut out = Vec::with_capacity(poses.len() * MATRIX_STRIDE);
+    for p in poses {
+        out.extend(p.to_matrix().to_cols_array().iter().map(|v| *v as f32));
+    }
+    out
+}
+
+/// Poses from the [`POSE_STRIDE`] layout, each validated by [`Pose::from_wxyz`]; errors name
+/// `at[i]`.
+pub(crate) fn poses_from_array(data: &[f64], at: &str) -> Result<Vec<Pose>, Error> {
+    if data.len() % POSE_STRIDE != 0 {
+        return Err(Error::OutOfRange {
+            at: at.to_string(),
+            value: format!("length {}", data.len()),
+            expected: format!(
+                "a multiple of {POSE_STRIDE} (origin x, y, z and quaternion w, x, y, z per pose)"
+            ),
+        });
+    }
+    data.chunks_exact(POSE_STRIDE)
+        .enumerate()
+        .map(|(i, c)| {
+            Pose::from_wxyz([c[0], c[1], c[2]], [c[3], c[4], c[5], c[6]])
+                .map_err(|e| e.within(&format!("{at}[{i}]")))
+        })
+        .collect()
+}
+
+/// Appends one kinematics sample in the [`KINEMATICS_STRIDE`] layout.
+pub(crate) fn push_kinematics(out: &mut Vec<f64>, u: f64, k: &Kinematics) {
+    out.push(u);
+    for v in [
+        k.position,
+        k.velocity,
+        k.acceleration,
+        k.angular_velocity,
+        k.angular_acceleration,
+    ] {
+        out.extend_from_slice(&v.to_array());
+    }
+}
+
+/// The kinematics of one body point as a plain object.
+pub(crate) fn kinematics_to_js(k: &Kinematics) -> Result<JsValue, JsError> {
+    #[derive(Serialize)]
+    #[serde(rename_all = "camelCase")]
+    struct Out {
+        position: [f64; 3],
+        velocity: [f64; 3],
+        acceleration: [f64; 3],
+        angular_velocity: [f64; 3],
+        angular_acceleration: [f64; 3],
+    }
+    to_js(&Out {
+        position: k.position.to_array(),
+        velocity: k.velocity.to_array(),
+        acceleration: k.acceleration.to_array(),
+        angular_velocity: k.angular_velocity.to_array(),
+        angular_acceleration: k.angular_acceleration.to_array(),
+    })
+}
+
+/// The display parameters of a screw, as the `ScrewInfo` union of the TypeScript types.
+#[derive(Serialize)]
+#[serde(tag = "kind", rename_all = "camelCase")]
+pub(crate) enum ScrewInfo {
+    /// The two poses coincide.
+    Identity {
+        /// Always 0.
+        angle: f64,
+        /// Always 0.
+        slide: f64,
+    },
+    /// A pure translation.
+    Translation {
+        /// Unit direction.
+        direction: [f64; 3],
+        /// Always 0.
+        angle: f64,
+        /// Translation length.
+        slide: f64,
+    },
+    /// A general screw.
+    General {
+        /// The paper's axis point `P` (at the height of the origins' midpoint).
+        point: [f64; 3],
+        /// The axis point closest to the world origin.
+        foot: [f64; 3],
+        /// Unit axis direction.
+        direction: [f64; 3],
+        /// Rotation angle in `(0, π]`.
+        angle: f64,
+        /// Slide along the axis.
+        slide: f64,
+        /// `slide / angle`.
+        pitch: f64,
+    },
+}
+
+impl From<crate::ScrewKind> for ScrewInfo {
+    fn from(kind: crate::ScrewKind) -> Self {
+        match kind {
+            crate::ScrewKind::Identity => ScrewInfo::Identity {
+                angle: 0.0,
+                slide: 0.0,
+            },
+            crate::ScrewKind::Translation {
+                direction,
+                distance,
+            } => ScrewInfo::Translation {
+                direction: direction.to_array(),
+                angle: 0.0,
+                slide: distance,
+            },
+            crate::ScrewKind::General(p) => ScrewInfo::General {
+                point: p.point.to_array(),
+                foot: p.foot.to_array(),
+                direction: p.axis.to_array(),
+                angle: p.angle,
+                slide: p.slide,
+                pitch: p.pitch,
+            },
+        }
+    }
+}

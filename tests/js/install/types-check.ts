@@ -1,0 +1,63 @@
+// Type-checked (tsc --strict --noEmit) against the installed package's .d.ts by
+// scripts/test.d/20-npm-package.sh: the types are real, and wrong uses fail to compile.
+import init, {
+  Motion,
+  limits,
+  posesToMatrices,
+  scenes,
+  screw,
+  screwInfo,
+  screwPoses,
+  type Kinematics,
+  type MotionDocument,
+  type Pose,
+  type PoseInput,
+  type SceneInfo,
+  type SchemeName,
+  type ScrewInfo,
+  type SubdivisionOptions,
+} from 'screwbender';
+
+await init();
+
+const m: Motion = Motion.fromScene('circle4');
+const p: Pose = m.poseAt(0.5);
+const x: number = p.origin[0];
+const w: number = p.rotation[0];
+const options: SubdivisionOptions = m.options();
+const scheme: SchemeName = options.scheme;
+const doc: MotionDocument = m.toDocument();
+const again = new Motion(doc, { scheme: 'jarek', levels: 3 });
+const basisPose: PoseInput = { origin: [0, 0, 0], basis: [[1, 0, 0], [0, 1, 0], [0, 0, 1]] };
+again.setPose(0, basisPose);
+again.setScheme('bspline');
+again.setRules('split');
+const refined: Float64Array = again.subdivide();
+const matrices: Float32Array = again.refinedMatrices();
+const k: Kinematics = again.kinematicsAt(0.25, [1, 0, 0]);
+const speed: number = Math.hypot(...k.velocity);
+const info: ScrewInfo = screwInfo(p, again.poseAt(1));
+const pitch: number = info.kind === 'general' ? info.pitch : 0;
+const list: SceneInfo[] = scenes();
+const firstShape: string = list[0].shape.kind;
+const ts = new Float64Array([0, 0.5, 1]);
+const batch: Float64Array = screwPoses(p, screw(p, 0.5, again.poseAt(2)), ts);
+const mats: Float32Array = posesToMatrices(batch);
+const stride: 7 = limits().poseStride;
+const [start, end]: [number, number] = again.domain();
+const closed: boolean = again.closed;
+
+// @ts-expect-error: not a scheme name
+m.setScheme('cubic');
+// @ts-expect-error: not a rule set
+m.setRules('v3');
+// @ts-expect-error: a quaternion has four components
+m.setPose(0, { origin: [0, 0, 0], rotation: [1, 0, 0] });
+// @ts-expect-error: the index is a number
+m.removePose('1');
+// @ts-expect-error: unknown scene id
+Motion.fromScene('nope');
+// @ts-expect-error: levels is a number
+m.setOptions({ levels: '3' });
+
+console.log(x, w, scheme, refined.length, matrices.length, speed, pitch, firstShape, mats.length, stride, start, end, closed);
