@@ -318,11 +318,18 @@ impl MotionHandle {
     ) -> Result<(), JsError> {
         let i = convert::number(&i, "index")?;
         let pose = pose_from_js(&pose, "pose")?;
-        self.update(|s| {
-            let i = check_index(i, "index", s.doc.poses.len())?;
-            s.doc.poses[i] = pose;
-            Ok(())
-        })
+        let mut inner = self.inner.try_borrow_mut().map_err(|_| busy())?;
+        let i = check_index(i, "index", inner.state.doc.poses.len())?;
+        let mut next = inner.state.clone();
+        next.doc.poses[i] = pose;
+        next.check()?;
+        // A drag calls this every frame: keep the refined motion and re-subdivide only the window
+        // the moved pose influences (bit-identical to a rebuild, independent of the pose count).
+        if let Some(motion) = inner.refined.as_mut() {
+            motion.set_control_pose(i, pose)?;
+        }
+        inner.state = next;
+        Ok(())
     }
 
     /// Inserts a pose between control poses `i` and `i + 1` (the new pose gets index `i + 1`,

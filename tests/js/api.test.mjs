@@ -288,6 +288,22 @@ describe('Motion: editing', () => {
     near(m.pose(1).rotation, [H, 0, 0, H], 1e-15);
   });
 
+  it('setPose during a drag updates the refined motion locally, identical to a rebuild', () => {
+    for (const closed of [true, false]) {
+      const m = Motion.fromScene('l_cycle_rotated');
+      m.setClosed(closed);
+      m.setLevels(4);
+      m.subdivide(); // the refined motion exists: setPose takes the local path
+      for (let step = 0; step < 6; step += 1) {
+        const i = (step * 5) % m.poseCount;
+        const p = m.pose(i);
+        m.setPose(i, { origin: [p.origin[0] + 0.3, p.origin[1] - 0.2, p.origin[2] + 0.1], rotation: p.rotation });
+        const fresh = new Motion(m.toDocument(), m.options());
+        assert.deepEqual(Array.from(m.subdivide()), Array.from(fresh.subdivide()), `closed=${closed} step ${step}`);
+      }
+    }
+  });
+
   it('insertPose: default screw midpoint, explicit pose, cyclic wrap', () => {
     const m = new Motion(doc2());
     const p0 = m.pose(0);
