@@ -72,6 +72,7 @@
 mod blend;
 mod document;
 mod error;
+pub mod methods;
 mod motion;
 mod polyscrew;
 mod pose;

@@ -288,3 +288,74 @@ fn bad_input_exits_2_with_one_line() {
         );
     }
 }
+
+#[test]
+fn compare_prints_the_metrics_table() {
+    let out = run(
+        &[
+            "compare",
+            "--methods",
+            "polyscrew,fourpoint",
+            "--methods",
+            "slerp",
+        ],
+        &preset("l_cycle_rotated"),
+    );
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    let rows: Vec<&str> = out.stdout.lines().collect();
+    assert!(rows[1].starts_with("method"), "{}", out.stdout);
+    for (row, name) in rows[2..].iter().zip(["polyscrew", "fourpoint", "slerp"]) {
+        assert!(row.starts_with(name), "{row}");
+    }
+    let out = run(
+        &["compare", "--json", "--methods", "jarek,decoupled"],
+        &preset("circle4"),
+    );
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    let v: serde_json::Value = serde_json::from_str(&out.stdout).unwrap();
+    assert_eq!(v["rows"].as_array().unwrap().len(), 2);
+    // The paper's Fig. 9 claim: screws keep the circle frame-independently, decoupled does not.
+    let frame = |i: usize| v["rows"][i]["frame_dependence"].as_f64().unwrap();
+    assert!(frame(0) < 1e-12 && frame(1) > 1e-3, "{}", out.stdout);
+    for (args, want) in [
+        (
+            &["compare", "--methods", "nope"][..],
+            "methods: unknown value 'nope'",
+        ),
+        (&["compare", "--methods", "cc1"][..], "cc1"),
+        (
+            &["compare", "--levels", "3"][..],
+            "unknown option '--levels'",
+        ),
+    ] {
+        let out = run(args, &preset("circle4"));
+        assert_eq!(out.code, 2, "{args:?}");
+        assert!(out.stderr.contains(want), "{args:?}: {}", out.stderr);
+    }
+}
+
+/// A reader that closes the pipe early is not an error (no panic message, exit 0).
+#[test]
+fn closed_stdout_is_quiet() {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_screwbender"))
+        .args(["subdivide", "--levels", "8"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(preset("cylinder5").as_bytes())
+        .unwrap();
+    drop(child.stdout.take()); // close our end before the binary writes
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    assert!(
+        out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}

@@ -4,7 +4,9 @@
 //! output. Exit status 0 on success, 2 with a one-line message on standard error for bad usage
 //! or bad input.
 
-use std::io::Read;
+mod compare;
+
+use std::io::{Read, Write};
 use std::process::ExitCode;
 
 use screwbender::{
@@ -22,6 +24,10 @@ USAGE:
                                                  poses of the motion at coarse parameters U
   screwbender screw --t T [--t T ...] [FILE]     screw(p0, T, p1) for a document of two poses
   screwbender preset [ID]                        list presets, or print preset ID as a document
+  screwbender compare [--methods a,b,c] [--json] [--open] [FILE]
+                                                 metrics of the comparison methods on the poses
+                                                 (polyscrew bspline fourpoint jarek slerp
+                                                 decoupled kks rb cc0 cc1; default: all that apply)
   screwbender help | --help | --version
 
 OPTIONS (subdivide, eval):
@@ -55,8 +61,20 @@ fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     match run(&args) {
         Ok(out) => {
-            print!("{out}");
-            ExitCode::SUCCESS
+            // A reader that stops early (`screwbender preset x | head`) is not an error, and
+            // `print!` would panic on the broken pipe: write explicitly and stop quietly.
+            let mut stdout = std::io::stdout().lock();
+            match stdout
+                .write_all(out.as_bytes())
+                .and_then(|()| stdout.flush())
+            {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+                Err(e) => {
+                    eprintln!("screwbender: standard output: {e}");
+                    ExitCode::from(2)
+                }
+            }
         }
         Err(Failure(msg)) => {
             eprintln!("screwbender: {msg}");
@@ -78,8 +96,9 @@ fn run(args: &[String]) -> Result<String, Failure> {
         "eval" => eval(rest),
         "screw" => screw_command(rest),
         "preset" => preset(rest),
+        "compare" => compare_command(rest),
         other => Err(Failure(format!(
-            "unknown command '{other}' (expected subdivide, eval, screw, preset; try --help)"
+            "unknown command '{other}' (expected subdivide, eval, screw, preset, compare; try --help)"
         ))),
     }
 }
@@ -94,14 +113,18 @@ struct Options {
     open: bool,
     us: Vec<f64>,
     ts: Vec<f64>,
+    methods: Vec<String>,
+    json: bool,
     file: Option<String>,
 }
 
 /// Which options a command accepts.
+#[derive(Default)]
 struct Accepts {
     subdivision: bool,
     u: bool,
     t: bool,
+    compare: bool,
 }
 
 fn parse_options(args: &[String], accepts: Accepts) -> Result<Options, Failure> {
@@ -123,6 +146,9 @@ fn parse_options(args: &[String], accepts: Accepts) -> Result<Options, Failure> 
             "--open" if accepts.subdivision => o.open = true,
             "--u" if accepts.u => o.us.push(number("--u", &value("--u")?)?),
             "--t" if accepts.t => o.ts.push(number("--t", &value("--t")?)?),
+            "--methods" if accepts.compare => o.methods.push(value("--methods")?),
+            "--json" if accepts.compare => o.json = true,
+            "--open" if accepts.compare => o.open = true,
             a if a.starts_with("--") => {
                 return Err(Failure(format!("unknown option '{a}' (try --help)")))
             }
@@ -200,6 +226,7 @@ fn subdivide(args: &[String]) -> Result<String, Failure> {
             subdivision: true,
             u: false,
             t: false,
+            compare: false,
         },
     )?;
     let doc = read_document(o.file.as_deref())?;
@@ -221,6 +248,7 @@ fn eval(args: &[String]) -> Result<String, Failure> {
             subdivision: true,
             u: true,
             t: false,
+            compare: false,
         },
     )?;
     if o.us.is_empty() {
@@ -255,6 +283,7 @@ fn screw_command(args: &[String]) -> Result<String, Failure> {
             subdivision: false,
             u: false,
             t: true,
+            compare: false,
         },
     )?;
     if o.ts.is_empty() {
@@ -288,6 +317,19 @@ fn screw_command(args: &[String]) -> Result<String, Failure> {
             })
             .collect();
     Ok(with_pose_lines(&[("screw", params)], &poses))
+}
+
+fn compare_command(args: &[String]) -> Result<String, Failure> {
+    let o = parse_options(
+        args,
+        Accepts {
+            compare: true,
+            ..Accepts::default()
+        },
+    )?;
+    let doc = read_document(o.file.as_deref())?;
+    let closed = doc.closed && !o.open;
+    Ok(compare::compare(&doc.poses, closed, &o.methods, o.json)?)
 }
 
 fn preset(args: &[String]) -> Result<String, Failure> {
