@@ -82,6 +82,7 @@ mod screw;
 mod screwbender;
 mod subdivision;
 mod timing;
+mod trig;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
 

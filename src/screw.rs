@@ -9,6 +9,7 @@
 use glam::{DQuat, DVec3};
 
 use crate::pose::{renormalize, Pose};
+use crate::trig;
 
 /// Rotation angles at or below this (radians) are reported as "no rotation" by
 /// [`Screw::parameters`] (identity or pure translation). Evaluation does not use it: the closed
@@ -215,7 +216,7 @@ impl Screw {
                 self.start.rotation,
             );
         }
-        let (sa, ca) = (t * self.half_angle).sin_cos();
+        let (sa, ca) = trig::sin_cos(t * self.half_angle);
         self.evaluate(t, sa, ca)
     }
 
@@ -300,16 +301,15 @@ fn rotate(q: DQuat, v: DVec3) -> DVec3 {
     v + q.w * t + u.cross(t)
 }
 
-/// `atan2(s, c)` for `s ≥ 0` (the half angle, in `[0, π]`), through the single-argument
-/// `atan` of the smaller ratio: the same accuracy as `atan2` and, without `atan2`'s special
-/// cases, about half its cost (it is a third of a screw's instructions otherwise).
+/// `atan2(s, c)` for `s ≥ 0` (the half angle, in `[0, π]`), through the `atan` of the smaller
+/// ratio, which lies in `[0, 1]` where [`trig::atan_unit`] is fast.
 #[inline]
 fn half_angle(s: f64, c: f64) -> f64 {
     use std::f64::consts::FRAC_PI_2;
     if c >= s {
-        (s / c).atan()
+        trig::atan_unit(s / c)
     } else {
-        FRAC_PI_2 - (c / s).atan()
+        FRAC_PI_2 - trig::atan_unit(c / s)
     }
 }
 
