@@ -70,12 +70,17 @@
 //! deterministic tie-break, see [`Screw`]).
 
 mod blend;
+mod csv;
 mod document;
 mod error;
+mod gltf_export;
+mod gltf_import;
+pub mod mesh;
 pub mod methods;
 mod motion;
 mod polyscrew;
 mod pose;
+mod sampling;
 pub mod scenes;
 mod scheme;
 mod screw;
@@ -92,12 +97,25 @@ pub mod web;
 struct ReadmeDoctests;
 
 pub use blend::Blend;
+pub use csv::{parse_csv_poses, poses_csv, trajectory_csv, MAX_CSV_BYTES, POSE_COLUMNS};
 pub use document::{MotionDocument, RawDocument, RawPose, MAX_DOCUMENT_BYTES};
 pub use error::Error;
+pub use gltf_export::{
+    consistent_rotations, GltfAsset, GltfMotion, CONTROL_NODE_NAME, EXTRAS_KEY, GENERATOR,
+    OBJECT_NODE_NAME, PLACEHOLDER_HALF_EXTENTS,
+};
+pub use gltf_import::{
+    import_glb, import_gltf, is_glb, split_glb, NodeSelection, MAX_GLTF_BYTES, REPEAT_TOLERANCE,
+};
 pub use motion::{Kinematics, Motion};
 pub use polyscrew::Polyscrew;
 pub use pose::{
     quat_from_wxyz, quat_to_wxyz, Pose, ORTHONORMAL_TOLERANCE, UNIT_QUATERNION_TOLERANCE,
+};
+pub use sampling::{
+    check_timing, check_tolerance, interpolate_linear, linear_deviation, sample_fixed_rate,
+    sample_motion, sample_polyscrew, sample_screwbender, trajectory, Sample, DEFAULT_TOLERANCE,
+    MAX_SAMPLES, MAX_SAMPLE_ANGLE, MIN_TOLERANCE,
 };
 pub use scheme::{Rules, Scheme};
 pub use screw::{

@@ -5,6 +5,8 @@
 //! or bad input.
 
 mod compare;
+mod export;
+mod import;
 
 use std::io::{Read, Write};
 use std::process::ExitCode;
@@ -28,6 +30,12 @@ USAGE:
                                                  metrics of the comparison methods on the poses
                                                  (polyscrew bspline fourpoint jarek slerp
                                                  decoupled kks rb cc0 cc1; default: all that apply)
+  screwbender export --format glb|gltf|csv [EXPORT OPTIONS] [FILE] -o OUT
+                                                 the motion as a glTF 2.0 asset (OUT.glb, or
+                                                 OUT.gltf + OUT.bin) or CSV samples (stdout
+                                                 without -o)
+  screwbender import FILE.glb|.gltf|.csv|.json [--node NAME | --nodes A,B,...] [-o OUT]
+                                                 control poses as a motion document
   screwbender help | --help | --version
 
 OPTIONS (subdivide, eval):
@@ -38,6 +46,26 @@ OPTIONS (subdivide, eval):
                                      first version's split-then-tweak rules
   --levels N                         subdivision steps (default 5; eval: 0 = plain polyscrew)
   --open                             treat the poses as an open sequence (overrides 'closed')
+
+EXPORT OPTIONS (also --scheme, --s, --rules, --levels, --open as above):
+  --tolerance T      adaptive keyframes: linear interpolation stays within T of the motion
+                     (default 1e-4 scene units); the keyframe count adapts per screw span
+  --fps F            fixed-rate keyframes instead (F per second)
+  --times T0,T1,...  time of each control pose (a cycle also gives the time pose 0 returns);
+                     default 1 s per control span
+  --point x,y,z      csv: trajectory t,u,x,y,z of this body point (default: poses
+                     t,u,x,y,z,qw,qx,qy,qz)
+  --control-nodes    glb/gltf: also one empty node per control pose
+  --verbose          one summary line (sample count) on standard error
+The glTF asset animates the object (the preset's shape, else a box) and an empty node
+'control poses' whose keyframes are the control poses; 'import' reads that node back.
+
+IMPORT OPTIONS:
+  --node NAME        the animated node whose keyframes are the poses (default: 'control poses'
+                     if present, else the first animated node)
+  --nodes A,B,...    the static transforms of these nodes instead
+  --open             an open sequence (default: a cycle when the last pose repeats the first)
+CSV input: x,y,z,qw,qx,qy,qz per line; optional header (any column order), '#' comments.
 
 FILE is a JSON motion document (default: standard input, also '-'):
   {\"closed\": true, \"poses\": [{\"origin\": [x,y,z], \"rotation\": [w,x,y,z]}, ...]}
@@ -97,8 +125,10 @@ fn run(args: &[String]) -> Result<String, Failure> {
         "screw" => screw_command(rest),
         "preset" => preset(rest),
         "compare" => compare_command(rest),
+        "export" => export::export(rest),
+        "import" => import::import(rest),
         other => Err(Failure(format!(
-            "unknown command '{other}' (expected subdivide, eval, screw, preset, compare; try --help)"
+            "unknown command '{other}' (expected subdivide, eval, screw, preset, compare, export, import; try --help)"
         ))),
     }
 }

@@ -1,0 +1,147 @@
+//! `screwbender import FILE.glb|.gltf|.csv|.json [--node NAME | --nodes A,B,…] [-o motion.json]`:
+//! control poses from a glTF asset, a CSV file or a motion document, as a JSON motion document.
+
+use std::path::Path;
+
+use screwbender::{
+    import_glb, import_gltf, is_glb, parse_csv_poses, Error, MotionDocument, NodeSelection,
+    MAX_GLTF_BYTES,
+};
+
+use crate::Failure;
+
+/// Reads a file of at most [`MAX_GLTF_BYTES`] (checked before reading).
+fn read_limited(path: &Path) -> Result<Vec<u8>, Failure> {
+    let shown = path.display();
+    let meta = std::fs::metadata(path).map_err(|e| Failure(format!("{shown}: {e}")))?;
+    if meta.len() > MAX_GLTF_BYTES as u64 {
+        return Err(Failure(format!(
+            "{shown}: {} bytes is larger than the limit of {MAX_GLTF_BYTES} bytes",
+            meta.len()
+        )));
+    }
+    std::fs::read(path).map_err(|e| Failure(format!("{shown}: {e}")))
+}
+
+/// Decodes `%XX` escapes of a relative URI into a file name.
+fn uri_to_path(uri: &str) -> Result<String, Error> {
+    let bytes = uri.as_bytes();
+    let mut out = Vec::with_capacity(bytes.len());
+    let mut i = 0;
+    while i < bytes.len() {
+        if bytes[i] == b'%' {
+            let hex = uri
+                .get(i + 1..i + 3)
+                .and_then(|h| u8::from_str_radix(h, 16).ok())
+                .ok_or_else(|| Error::Parse {
+                    at: "uri".into(),
+                    message: format!("bad percent escape in '{uri}'"),
+                })?;
+            out.push(hex);
+            i += 3;
+        } else {
+            out.push(bytes[i]);
+            i += 1;
+        }
+    }
+    String::from_utf8(out).map_err(|_| Error::Parse {
+        at: "uri".into(),
+        message: format!("'{uri}' is not UTF-8"),
+    })
+}
+
+/// Runs `screwbender import`; returns the document for standard output (empty with `-o`).
+pub fn import(args: &[String]) -> Result<String, Failure> {
+    let mut file = None;
+    let mut output = None;
+    let mut selection = NodeSelection::Auto;
+    let mut open = false;
+    let mut verbose = false;
+    let mut it = args.iter();
+    while let Some(arg) = it.next() {
+        let mut value = |name: &str| {
+            it.next()
+                .cloned()
+                .ok_or_else(|| Failure(format!("{name} needs a value")))
+        };
+        match arg.as_str() {
+            "--node" => selection = NodeSelection::Animated(value("--node")?),
+            "--nodes" => {
+                selection = NodeSelection::Transforms(
+                    value("--nodes")?
+                        .split(',')
+                        .map(|s| s.trim().to_string())
+                        .collect(),
+                )
+            }
+            "--open" => open = true,
+            "--verbose" | "-v" => verbose = true,
+            "-o" | "--output" => output = Some(value("-o")?),
+            a if a.starts_with("--") => {
+                return Err(Failure(format!("unknown option '{a}' (try --help)")))
+            }
+            f => {
+                if file.replace(f.to_string()).is_some() {
+                    return Err(Failure("more than one input FILE given".into()));
+                }
+            }
+        }
+    }
+    let file = file.ok_or_else(|| Failure("import needs a FILE (.glb, .gltf or .csv)".into()))?;
+    let path = Path::new(&file);
+    let bytes = read_limited(path)?;
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    let result: Result<MotionDocument, Error> = if is_glb(&bytes) || ext.as_deref() == Some("glb") {
+        import_glb(&bytes, &selection)
+    } else if ext.as_deref() == Some("gltf") {
+        let dir = path.parent().unwrap_or(Path::new("."));
+        let mut resolve = |uri: &str| -> Result<Vec<u8>, Error> {
+            let name = uri_to_path(uri)?;
+            let p = dir.join(name);
+            read_limited(&p).map_err(|Failure(message)| Error::Parse {
+                at: String::new(),
+                message,
+            })
+        };
+        import_gltf(&bytes, &mut resolve, &selection)
+    } else if matches!(ext.as_deref(), Some("csv") | Some("json")) {
+        if selection != NodeSelection::Auto {
+            return Err(Failure("--node/--nodes apply to glTF files only".into()));
+        }
+        let text = std::str::from_utf8(&bytes).map_err(|e| Error::Parse {
+            at: String::new(),
+            message: format!("not UTF-8 text: {e}"),
+        });
+        if ext.as_deref() == Some("csv") {
+            text.and_then(parse_csv_poses)
+        } else {
+            text.and_then(MotionDocument::from_json)
+        }
+    } else {
+        return Err(Failure(format!(
+            "{file}: unknown file type (expected .glb, .gltf, .csv or .json)"
+        )));
+    };
+    let mut doc = result.map_err(|e| Failure(format!("{file}: {e}")))?;
+    if open {
+        doc.closed = false;
+    }
+    if verbose {
+        eprintln!(
+            "screwbender: import: {} control poses ({}) from {file}",
+            doc.poses.len(),
+            if doc.closed { "cycle" } else { "open" }
+        );
+    }
+    let text = doc.to_json();
+    match output {
+        Some(out) => {
+            std::fs::write(&out, text).map_err(|e| Failure(format!("{out}: {e}")))?;
+            Ok(String::new())
+        }
+        None => Ok(text),
+    }
+}
