@@ -5,6 +5,7 @@
 #   PORT=9000 ./scripts/serve.sh      # exactly this port
 #   SKIP_BUILD=1 ./scripts/serve.sh   # serve what is already built
 #   SERVE_FEATURES= ./scripts/serve.sh  # build the wasm without the wgpu renderer
+#   BUILD_ONLY=1 ./scripts/serve.sh   # build www/ and exit (used by scripts/test.d/40-e2e.sh)
 #
 # Build: release wasm32 cdylib -> wasm-bindgen --target web -> www/pkg/, then every executable
 # scripts/serve.d/*.sh in sorted order (hook for later build steps, e.g. vendoring uplot and
@@ -52,6 +53,11 @@ if [[ ${SKIP_BUILD:-0} == 1 ]]; then
   log "SKIP_BUILD=1: serving $WWW_DIR/ as it is"
 else
   build
+fi
+
+if [[ ${BUILD_ONLY:-0} == 1 ]]; then
+  log "BUILD_ONLY=1: $WWW_DIR/ is built; not serving"
+  exit 0
 fi
 
 header "serve"

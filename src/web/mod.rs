@@ -63,3 +63,5 @@ pub fn limits() -> Result<JsValue, JsError> {
         kinematics_stride: KINEMATICS_STRIDE,
     })
 }
+#[cfg(feature = "render")]
+pub mod render;

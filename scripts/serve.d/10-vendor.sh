@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Vendor the page's npm dependencies into www/vendor/ so www/ is a self-contained static folder
+# (the copies are committed too, so the folder works even without this step).
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/../.."
+mkdir -p www/vendor
+cp node_modules/lil-gui/dist/lil-gui.esm.min.js www/vendor/lil-gui.esm.min.js
+cp node_modules/lil-gui/LICENSE* www/vendor/ 2>/dev/null || true

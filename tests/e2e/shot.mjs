@@ -1,0 +1,13 @@
+// Ad-hoc screenshot: node tests/e2e/shot.mjs URL BACKEND OUT.png [preset]
+import { launch, openPage, waitFrames } from './lib.mjs';
+const [url, backend, out, preset] = process.argv.slice(2);
+const browser = await launch(backend);
+const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
+const { page, problems } = await openPage(context, url, backend);
+if (preset) {
+  await page.evaluate((id) => window.screwbender.app.loadPreset(id), preset);
+  await waitFrames(page, 2);
+}
+await page.screenshot({ path: out });
+console.log(JSON.stringify({ backend: await page.evaluate(() => window.screwbender.backend()), problems, errors: await page.evaluate(() => window.screwbender.errors()) }));
+await browser.close();

@@ -1,0 +1,231 @@
+// The translate / rotate gizmo: drawing (segments + cone instances), screen-space hit testing,
+// and the drag maths. World axes; size constant on screen.
+import {
+  add, sub, scale, dot, cross, normalize, length, qaxis, qmul, qnormalize, rayPlane, lineRayParam,
+  segmentDistance2, poseMatrix,
+} from './math.js';
+import { COLORS, Segments, circle, INSTANCE } from './scene.js';
+
+const AXES = [[1, 0, 0], [0, 1, 0], [0, 0, 1]];
+const AXIS_COLORS = [COLORS.x, COLORS.y, COLORS.z];
+const NAMES = ['x', 'y', 'z'];
+/** Snapping steps (Shift held): translation in scene units, rotation in radians. */
+export const SNAP_TRANSLATE = 0.25;
+export const SNAP_ROTATE = (15 * Math.PI) / 180;
+/** Hit tolerance in CSS pixels. */
+const HIT_PX = 9;
+
+/** Gizmo size in world units at centre c: a constant fraction of the view height. */
+export function gizmoSize(camera, c) {
+  const d = length(sub(camera.eye, c));
+  return d * Math.tan(camera.fovy / 2) * 0.32;
+}
+
+/** Parts of the gizmo as {part, kind, axis, points} for drawing and hit testing. */
+function parts(mode, c, s, camera) {
+  const out = [];
+  if (mode === 'translate') {
+    AXES.forEach((a, i) => out.push({ part: 'axis-' + NAMES[i], kind: 'axis', i, points: [add(c, scale(a, s * 0.18)), add(c, scale(a, s))] }));
+    AXES.forEach((n, i) => {
+      const u = AXES[(i + 1) % 3];
+      const v = AXES[(i + 2) % 3];
+      const p = (a, b) => add(c, add(scale(u, a * s), scale(v, b * s)));
+      out.push({ part: 'plane-' + NAMES[i], kind: 'plane', i, points: [p(0.28, 0.28), p(0.5, 0.28), p(0.5, 0.5), p(0.28, 0.5)] });
+    });
+  } else {
+    AXES.forEach((a, i) => out.push({ part: 'ring-' + NAMES[i], kind: 'ring', i, points: circle(c, a, s * 0.85, 72) }));
+    out.push({ part: 'trackball', kind: 'trackball', i: -1, points: circle(c, camera.forward, s * 1.0, 72) });
+  }
+  return out;
+}
+
+/** Segments and arrow-head instances of the gizmo at pose centre c. */
+export function gizmoGeometry(mode, c, camera, hover, dpr) {
+  const s = gizmoSize(camera, c);
+  const seg = new Segments();
+  const cones = [];
+  for (const p of parts(mode, c, s, camera)) {
+    const hot = p.part === hover;
+    const col = hot ? COLORS.hover : p.i >= 0 ? AXIS_COLORS[p.i] : [0.35, 0.37, 0.42];
+    if (p.kind === 'axis') {
+      seg.push(p.points[0], p.points[1], col, (hot ? 5 : 3.5) * dpr);
+      cones.push({ at: p.points[1], axis: AXES[p.i], col, r: s * 0.065, h: s * 0.2 });
+    } else if (p.kind === 'plane') {
+      seg.polyline(p.points, true, col, (hot ? 3.5 : 2.2) * dpr, 0.95);
+      // Hatch the square so it reads as a surface.
+      seg.push(p.points[0], p.points[2], col, 1.2 * dpr, 0.5);
+    } else {
+      seg.polyline(p.points, true, col, (hot ? 4.5 : p.kind === 'trackball' ? 1.6 : 3) * dpr, p.kind === 'trackball' ? 0.7 : 1);
+    }
+  }
+  const inst = new Float32Array(cones.length * INSTANCE);
+  cones.forEach((k, j) => {
+    // Cone mesh: apex at +z, base at z = 0, radius 1: scale non-uniformly via basis.
+    const z = k.axis;
+    const x = Math.abs(z[2]) < 0.9 ? normalize(cross(z, [0, 0, 1])) : normalize(cross(z, [1, 0, 0]));
+    const y = cross(z, x);
+    const m = inst.subarray(j * INSTANCE, j * INSTANCE + 16);
+    m.set([...scale(x, k.r), 0, ...scale(y, k.r), 0, ...scale(z, k.h), 0, ...k.at, 1]);
+    inst.set([...k.col, 1], j * INSTANCE + 16);
+  });
+  return { segments: seg.array(), cones: inst };
+}
+
+/** Projects world p to CSS pixels. */
+function project(vp, p, w, h) {
+  const x = vp[0] * p[0] + vp[4] * p[1] + vp[8] * p[2] + vp[12];
+  const y = vp[1] * p[0] + vp[5] * p[1] + vp[9] * p[2] + vp[13];
+  const ww = vp[3] * p[0] + vp[7] * p[1] + vp[11] * p[2] + vp[15];
+  if (ww <= 1e-6) return null;
+  return [((x / ww + 1) * w) / 2, ((1 - y / ww) * h) / 2];
+}
+
+function inPolygon(pt, poly) {
+  let inside = false;
+  for (let i = 0, j = poly.length - 1; i < poly.length; j = i++) {
+    const [xi, yi] = poly[i];
+    const [xj, yj] = poly[j];
+    if (yi > pt[1] !== yj > pt[1] && pt[0] < ((xj - xi) * (pt[1] - yi)) / (yj - yi) + xi) inside = !inside;
+  }
+  return inside;
+}
+
+/** The gizmo part under CSS pixel `pt`, or null. */
+export function hitGizmo(mode, c, camera, vp, w, h, pt) {
+  const s = gizmoSize(camera, c);
+  let best = null;
+  let bestD = HIT_PX;
+  let inside = null;
+  for (const p of parts(mode, c, s, camera)) {
+    const sp = p.points.map((q) => project(vp, q, w, h));
+    if (sp.some((q) => q === null)) continue;
+    if (p.kind === 'plane') {
+      if (inPolygon(pt, sp) && !best) inside = inside ?? p.part;
+      continue;
+    }
+    const closed = p.kind !== 'axis';
+    for (let k = 0; k + 1 < sp.length + (closed ? 1 : 0); k++) {
+      const d = segmentDistance2(pt, sp[k], sp[(k + 1) % sp.length]);
+      if (d < bestD) {
+        bestD = d;
+        best = p.part;
+      }
+    }
+    if (p.kind === 'trackball' && !best && inPolygon(pt, sp)) inside = inside ?? 'trackball';
+  }
+  return best ?? inside;
+}
+
+/** A CSS-pixel point on a gizmo part (for tests): the tip region of an axis, a point of a ring. */
+export function gizmoPoint(mode, part, c, camera, vp, w, h) {
+  const s = gizmoSize(camera, c);
+  const p = parts(mode, c, s, camera).find((q) => q.part === part);
+  if (!p) return null;
+  let world;
+  if (p.kind === 'axis') world = add(p.points[0], scale(sub(p.points[1], p.points[0]), 0.7));
+  else if (p.kind === 'plane') world = scale(add(p.points[0], p.points[2]), 0.5);
+  else {
+    // The ring point that is most visible (largest screen distance from the centre).
+    const cs = project(vp, c, w, h);
+    let bestP = null;
+    let bestD = -1;
+    for (const q of p.points) {
+      const sq = project(vp, q, w, h);
+      const d = Math.hypot(sq[0] - cs[0], sq[1] - cs[1]);
+      if (d > bestD) {
+        bestD = d;
+        bestP = sq;
+      }
+    }
+    return bestP;
+  }
+  return project(vp, world, w, h);
+}
+
+const snap = (x, step) => Math.round(x / step) * step;
+
+/**
+ * Starts a drag of `part` for the pose {origin, rotation}; returns an object whose
+ * `move(ray, pt, snapOn)` gives the new pose, or null when the drag cannot start.
+ */
+export function startDrag(part, pose, camera, ray, pt) {
+  const c0 = pose.origin;
+  const q0 = pose.rotation;
+  const translate = (delta, snapOn) => ({
+    origin: add(c0, snapOn ? delta.map((x) => snap(x, SNAP_TRANSLATE)) : delta),
+    rotation: q0,
+  });
+  const rotate = (axis, angle, snapOn) => ({
+    origin: c0,
+    rotation: qnormalize(qmul(qaxis(axis, snapOn ? snap(angle, SNAP_ROTATE) : angle), q0)),
+  });
+  const [kind, name] = part.split('-');
+  const i = NAMES.indexOf(name);
+  if (kind === 'axis') {
+    const a = AXES[i];
+    const t0 = lineRayParam(c0, a, ray.o, ray.d);
+    if (t0 === null) return null;
+    return {
+      move(r, _pt, snapOn) {
+        const t = lineRayParam(c0, a, r.o, r.d);
+        return t === null ? null : translate(scale(a, t - t0), snapOn);
+      },
+    };
+  }
+  if (kind === 'plane' || kind === 'view') {
+    const n = kind === 'plane' ? AXES[i] : camera.forward;
+    const h0 = rayPlane(ray.o, ray.d, c0, n);
+    if (!h0) return null;
+    return {
+      move(r, _pt, snapOn) {
+        const h = rayPlane(r.o, r.d, c0, n);
+        return h ? translate(sub(h, h0), snapOn) : null;
+      },
+    };
+  }
+  if (kind === 'ring') {
+    const a = AXES[i];
+    const edgeOn = Math.abs(dot(ray.d, a)) < 0.2;
+    if (!edgeOn) {
+      const h0 = rayPlane(ray.o, ray.d, c0, a);
+      if (h0) {
+        const v0 = sub(h0, c0);
+        return {
+          move(r, _pt, snapOn) {
+            const h = rayPlane(r.o, r.d, c0, a);
+            if (!h) return null;
+            const v = sub(h, c0);
+            const angle = Math.atan2(dot(a, cross(v0, v)), dot(v0, v));
+            return rotate(a, angle, snapOn);
+          },
+        };
+      }
+    }
+    // Ring seen edge-on: the screen displacement along the view's right/up turns it.
+    return {
+      move(_r, p, snapOn) {
+        const { right, up } = camera.basis();
+        const tangent = normalize(cross(a, camera.forward));
+        const d = [p[0] - pt[0], p[1] - pt[1]];
+        const along = d[0] * dot(tangent, right) - d[1] * dot(tangent, up);
+        return rotate(a, along * 0.012, snapOn);
+      },
+    };
+  }
+  if (kind === 'trackball') {
+    return {
+      move(_r, p, snapOn) {
+        const { right, up } = camera.basis();
+        const d = [p[0] - pt[0], p[1] - pt[1]];
+        const mag = Math.hypot(d[0], d[1]);
+        if (mag < 1e-9) return { origin: c0, rotation: q0 };
+        // Rotate about the screen axis perpendicular to the mouse motion.
+        const axis = normalize(add(scale(up, d[0]), scale(right, d[1])));
+        return rotate(axis, mag * 0.012, snapOn);
+      },
+    };
+  }
+  return null;
+}
+
+export { project, poseMatrix };

@@ -1,0 +1,54 @@
+// Entry point: starts the app and exposes the inspection API `window.screwbender`.
+//
+// window.screwbender (documented for tests and curious users; all read-only views):
+//   ready: Promise<void>            resolves when the first frame can be drawn (rejects on a fatal error)
+//   backend(): 'WebGPU' | 'WebGL2'
+//   errors(): string[]              every message shown in the banner
+//   poses(): Float64Array           control poses, 7 per pose (origin xyz, quaternion wxyz), live during a drag
+//   refined(): Float64Array         refined poses of the smoothed motion, 7 per pose, live during a drag
+//   options(): {scheme, j, rules, levels}   session(): the autosaved session object
+//   selected(): number              selected control pose or -1
+//   handleOnPage(i): {x, y}         page coordinates (CSS px) of control pose i's handle
+//   gizmoOnPage(part): {x, y}       a grabbable point of a gizmo part: 'axis-x|y|z', 'plane-x|y|z',
+//                                   'ring-x|y|z', 'trackball' (of the current mode)
+//   frames(): number                frames drawn so far; stats(): {updateMs, frameMs, renderMs}
+//   app                             the App object itself (for benchmarks / debugging)
+import { App } from './app.js';
+
+const app = new App();
+
+function fatal(e) {
+  const msg = e?.message ?? String(e);
+  const b = document.getElementById('banner');
+  b.querySelector('.msg').textContent = msg;
+  b.className = 'banner fatal';
+  b.hidden = false;
+  document.getElementById('backend').textContent = 'no graphics';
+  app.errors.push(msg);
+}
+
+window.addEventListener('error', (e) => app.showError(`Unexpected error: ${e.message}`));
+window.addEventListener('unhandledrejection', (e) => app.showError(`Unexpected error: ${e.reason?.message ?? e.reason}`));
+
+const ready = app.start().catch((e) => {
+  fatal(e);
+  throw e;
+});
+ready.catch(() => {});
+
+window.screwbender = {
+  ready,
+  app,
+  backend: () => app.backend,
+  errors: () => [...app.errors],
+  // During a drag the live state is the drag session's (the Motion gets the pose on release).
+  poses: () => Float64Array.from(app.drag?.session ? app.drag.session.poses() : app.motion.poses()),
+  refined: () => Float64Array.from(app.drag?.session ? app.drag.session.refined() : app.motion.subdivide()),
+  options: () => app.motion.options(),
+  session: () => app.session(),
+  selected: () => app.selected,
+  handleOnPage: (i) => app.screenOfPose(i),
+  gizmoOnPage: (part) => app.screenOfGizmo(part),
+  frames: () => app.frames,
+  stats: () => ({ ...app.stats }),
+};

@@ -1,0 +1,207 @@
+// The controls: lil-gui panel, toolbar, timeline, help overlay, paste dialog.
+import GUI from '../vendor/lil-gui.esm.min.js';
+
+const SCHEMES = { 'Cubic B-spline': 'bspline', '4-point': 'fourpoint', Jarek: 'jarek', 'J_s (slider)': 'j' };
+const RULES = { 'Direct (V2)': 'direct', 'Split & tweak (V1)': 'split' };
+const OBJECTS = {
+  "Preset's object": 'scene',
+  Bar: 'bar',
+  Block: 'block',
+  Cylinder: 'cylinder',
+  Cone: 'cone',
+  Sphere: 'sphere',
+  'Star prism': 'star',
+  Pendulum: 'pendulum',
+  Wedge: 'wedge',
+  'Imported mesh': 'obj',
+};
+
+export function buildUi(app) {
+  const $ = (id) => document.getElementById(id);
+  const gui = new GUI({ title: 'ScrewBender', container: $('panel') });
+  const presetNames = {};
+  for (const s of app.scenes) presetNames[`${s.label} · ${s.id.replace(/_/g, ' ')}`] = s.id;
+
+  // Proxy object: lil-gui reads/writes these; setters route to the app as undoable edits.
+  const p = {
+    get preset() { return app.view.scene; },
+    set preset(id) { app.loadPreset(id); },
+    get scheme() { return app.motion.scheme; },
+    set scheme(v) { v === 'j' ? app.setJ(0.25) : app.setScheme(v); },
+    get j() { return app.motion.j; },
+    set j(v) { app.setJ(v); },
+    get rules() { return app.motion.rules; },
+    set rules(v) { app.setOption('rules', v); },
+    get levels() { return app.motion.levels; },
+    set levels(v) { app.setOption('levels', v); },
+    get closed() { return app.motion.closed; },
+    set closed(v) { app.setClosed(v); },
+    get strobe() { return app.view.strobe; },
+    set strobe(v) { app.setView('strobe', Math.round(v)); },
+    get object() { return app.view.object; },
+    set object(v) {
+      if (v === 'obj' && !app.imported) return $('obj-file').click();
+      app.setView('object', v);
+    },
+  };
+  const viewFlag = (key) => ({
+    get [key]() { return app.view[key]; },
+    set [key](v) { app.setView(key, v); },
+  });
+
+  const fMotion = gui.addFolder('Motion');
+  fMotion.add(p, 'preset', presetNames).name('Preset');
+  fMotion.add(p, 'scheme', SCHEMES).name('Scheme');
+  fMotion.add(p, 'j', 0, 1, 0.01).name('J_s').onFinishChange(() => {});
+  fMotion.add(p, 'rules', RULES).name('Rules');
+  fMotion.add(p, 'levels', 0, 8, 1).name('Levels');
+  fMotion.add(p, 'closed').name('Closed cycle');
+
+  const fView = gui.addFolder('Display');
+  fView.add(p, 'object', OBJECTS).name('Object');
+  fView.add(p, 'strobe', 1, 10000, 1).name('Strobe count');
+  const flags = [
+    ['showStrobe', 'Strobe'],
+    ['showControl', 'Control poses'],
+    ['showTriads', 'Pose axes'],
+    ['showTrajectories', 'Trajectories'],
+    ['showPolyscrew', 'Polyscrew (unsmoothed)'],
+    ['showPolygon', 'Control polygon'],
+    ['showGrid', 'Grid & axes'],
+    ['snap', 'Snap (or hold Shift)'],
+  ];
+  for (const [key, label] of flags) fView.add(viewFlag(key), key).name(label);
+
+  const actions = {
+    importJson: () => $('json-file').click(),
+    pasteJson: () => openPaste(),
+    exportJson: () => app.exportJson(),
+    importObj: () => $('obj-file').click(),
+    share: async () => {
+      const link = app.shareLink();
+      try {
+        await navigator.clipboard.writeText(link);
+        toast('Share link copied to the clipboard.');
+      } catch {
+        openPaste(link, 'Share link (copy it):');
+      }
+    },
+    reset: () => app.loadPreset(app.view.scene),
+  };
+  const fFile = gui.addFolder('File');
+  fFile.add(actions, 'importJson').name('Import JSON…');
+  fFile.add(actions, 'pasteJson').name('Paste JSON…');
+  fFile.add(actions, 'exportJson').name('Export JSON');
+  fFile.add(actions, 'importObj').name('Import mesh (OBJ, glTF)…');
+  fFile.add(actions, 'share').name('Copy share link');
+  fFile.add(actions, 'reset').name('Reset preset');
+  fFile.close();
+
+  // File inputs.
+  const readFile = (input, f) =>
+    input.addEventListener('change', async () => {
+      const file = input.files[0];
+      input.value = '';
+      if (!file) return;
+      if (file.size > 64 << 20) return app.showError(`${file.name} is too large (${file.size} bytes). Nothing was changed.`);
+      f(file);
+    });
+  readFile($('json-file'), async (file) => app.importJson(await file.text()));
+  readFile($('obj-file'), async (file) => {
+    const name = file.name.toLowerCase();
+    if (name.endsWith('.glb')) app.importMesh('gltf', new Uint8Array(await file.arrayBuffer()));
+    else if (name.endsWith('.gltf')) app.importMesh('gltf', await file.text());
+    else app.importMesh('obj', await file.text());
+  });
+
+  // Paste dialog.
+  const dlg = $('paste');
+  function openPaste(text = '', title = 'Paste a motion document (JSON):') {
+    dlg.querySelector('h2').textContent = title;
+    const ta = dlg.querySelector('textarea');
+    ta.value = text;
+    dlg.hidden = false;
+    ta.focus();
+    ta.select();
+  }
+  dlg.querySelector('[data-act=load]').onclick = () => {
+    if (app.importJson(dlg.querySelector('textarea').value)) dlg.hidden = true;
+  };
+  dlg.querySelector('[data-act=cancel]').onclick = () => (dlg.hidden = true);
+
+  // Toolbar.
+  const tool = (id, f) => ($(id).onclick = f);
+  tool('t-translate', () => app.setMode('translate'));
+  tool('t-rotate', () => app.setMode('rotate'));
+  tool('t-insert', () => app.insertAfterSelected());
+  tool('t-delete', () => app.deleteSelected());
+  tool('t-undo', () => app.undo());
+  tool('t-redo', () => app.redo());
+  tool('t-frame', () => app.frameAll());
+  tool('t-help', () => toggleHelp());
+  tool('play', () => app.setPlaying(!app.anim.playing));
+  $('banner').querySelector('.close').onclick = () => ($('banner').hidden = true);
+
+  // Timeline.
+  const scrub = $('scrub');
+  scrub.addEventListener('input', () => {
+    const [a, b] = app.motion.domain();
+    app.anim.u = a + (b - a) * (scrub.value / 1000);
+    app.anim.visible = true;
+    app.updateAnim();
+    app.requestDraw();
+  });
+  const speed = $('speed');
+  speed.addEventListener('input', () => (app.anim.speed = Number(speed.value)));
+  const loop = $('loop');
+  loop.addEventListener('change', () => (app.anim.loop = loop.checked));
+
+  function toggleHelp(show) {
+    const h = $('help');
+    h.hidden = show === undefined ? !h.hidden : !show;
+  }
+  $('help').onclick = (e) => {
+    if (e.target === $('help')) toggleHelp(false);
+  };
+
+  function toast(msg) {
+    const t = $('toast');
+    t.textContent = msg;
+    t.hidden = false;
+    clearTimeout(toast.timer);
+    toast.timer = setTimeout(() => (t.hidden = true), 2500);
+  }
+
+  function refresh() {
+    for (const c of gui.controllersRecursive()) c.updateDisplay();
+    const info = app.sceneInfo;
+    $('scene-title').textContent = `${info.label} · ${info.figure}`;
+    $('scene-desc').textContent = info.description;
+    const m = app.motion;
+    $('stats').textContent =
+      `${m.poseCount} control poses · ${m.refinedCount.toLocaleString()} refined · ${app.view.strobe.toLocaleString()} strobe` +
+      (app.selected >= 0 ? ` · pose ${app.selected} selected` : '');
+    $('t-translate').classList.toggle('on', app.mode === 'translate');
+    $('t-rotate').classList.toggle('on', app.mode === 'rotate');
+    $('t-undo').disabled = !app.history.canUndo;
+    $('t-redo').disabled = !app.history.canRedo;
+    $('t-delete').disabled = app.selected < 0;
+    $('play').textContent = app.anim.playing ? '❚❚' : '▶';
+    $('play').title = app.anim.playing ? 'Pause (Space)' : 'Play (Space)';
+    speed.value = app.anim.speed;
+    loop.checked = app.anim.loop;
+    loop.disabled = m.closed;
+    const [a, b] = m.domain();
+    setTime(app.anim.u, a, b);
+  }
+
+  function setTime(u, a, b) {
+    scrub.value = String(Math.round(((u - a) / (b - a)) * 1000));
+    $('time').textContent = `u = ${u.toFixed(2)} / ${b}`;
+  }
+
+  // Small screens: start with the panel folded so the view stays visible.
+  if (window.innerWidth < 760) gui.close();
+  refresh();
+  return { gui, refresh, setTime, toggleHelp, toast };
+}
