@@ -8,10 +8,11 @@ use glam::DVec3;
 use screwbender::mesh::Mesh;
 use screwbender::{
     poses_csv, sample_fixed_rate, sample_polyscrew, scenes, trajectory_csv, GltfAsset, GltfMotion,
-    Motion, Polyscrew, Rules, Scheme, ScrewBender, Subdivision, Timing, DEFAULT_TOLERANCE,
+    Motion, Polyscrew, ScrewBender, Timing, DEFAULT_TOLERANCE,
 };
 
-use crate::{levels, number, read_document, Failure};
+use crate::args::{number, numbers, ArgReader, SubdivisionArgs};
+use crate::{read_document, Failure};
 
 /// The output formats.
 #[derive(Clone, Copy, PartialEq)]
@@ -29,34 +30,23 @@ struct ExportOptions {
     fps: Option<f64>,
     times: Option<Vec<f64>>,
     point: Option<DVec3>,
-    scheme: Option<Scheme>,
-    s: Option<f64>,
-    rules: Rules,
-    levels: Option<u32>,
-    open: bool,
+    sub: SubdivisionArgs,
     control_nodes: bool,
     verbose: bool,
     file: Option<String>,
     output: Option<String>,
 }
 
-/// A comma-separated list of finite numbers.
-fn numbers(name: &str, text: &str) -> Result<Vec<f64>, Failure> {
-    text.split(',').map(|t| number(name, t.trim())).collect()
-}
-
 fn parse(args: &[String]) -> Result<ExportOptions, Failure> {
     let mut o = ExportOptions::default();
-    let mut it = args.iter();
-    while let Some(arg) = it.next() {
-        let mut value = |name: &str| {
-            it.next()
-                .cloned()
-                .ok_or_else(|| Failure(format!("{name} needs a value")))
-        };
-        match arg.as_str() {
+    let mut r = ArgReader::new(args);
+    while let Some(arg) = r.next_arg() {
+        if o.sub.take(arg, &mut r)? {
+            continue;
+        }
+        match arg {
             "--format" => {
-                o.format = Some(match value("--format")?.as_str() {
+                o.format = Some(match r.value(arg)?.as_str() {
                     "glb" => Format::Glb,
                     "gltf" => Format::Gltf,
                     "csv" => Format::Csv,
@@ -67,11 +57,11 @@ fn parse(args: &[String]) -> Result<ExportOptions, Failure> {
                     }
                 })
             }
-            "--tolerance" => o.tolerance = Some(number("--tolerance", &value("--tolerance")?)?),
-            "--fps" => o.fps = Some(number("--fps", &value("--fps")?)?),
-            "--times" => o.times = Some(numbers("--times", &value("--times")?)?),
+            "--tolerance" => o.tolerance = Some(number(arg, &r.value(arg)?)?),
+            "--fps" => o.fps = Some(number(arg, &r.value(arg)?)?),
+            "--times" => o.times = Some(numbers(arg, &r.value(arg)?)?),
             "--point" => {
-                let v = numbers("--point", &value("--point")?)?;
+                let v = numbers(arg, &r.value(arg)?)?;
                 let [x, y, z] = v[..] else {
                     return Err(Failure(format!(
                         "--point: {} number(s) given, expected x,y,z",
@@ -80,29 +70,14 @@ fn parse(args: &[String]) -> Result<ExportOptions, Failure> {
                 };
                 o.point = Some(DVec3::new(x, y, z));
             }
-            "--scheme" => o.scheme = Some(value("--scheme")?.parse::<Scheme>()?),
-            "--s" => o.s = Some(number("--s", &value("--s")?)?),
-            "--rules" => o.rules = value("--rules")?.parse::<Rules>()?,
-            "--levels" => o.levels = Some(levels(&value("--levels")?)?),
-            "--open" => o.open = true,
             "--control-nodes" => o.control_nodes = true,
             "--verbose" | "-v" => o.verbose = true,
-            "-o" | "--output" => o.output = Some(value("-o")?),
-            a if a.starts_with("--") => {
-                return Err(Failure(format!("unknown option '{a}' (try --help)")))
-            }
-            f => {
-                if o.file.replace(f.to_string()).is_some() {
-                    return Err(Failure("more than one input FILE given".into()));
-                }
-            }
+            "-o" | "--output" => o.output = Some(r.value("-o")?),
+            other => r.positional(other)?,
         }
     }
-    if o.scheme.is_some() && o.s.is_some() {
-        return Err(Failure(
-            "give either --scheme or --s (the J_s family), not both".into(),
-        ));
-    }
+    o.sub.subdivision(5)?;
+    o.file = r.file;
     if o.tolerance.is_some() && o.fps.is_some() {
         return Err(Failure(
             "give either --tolerance (adaptive sampling) or --fps (fixed rate), not both".into(),
@@ -143,7 +118,7 @@ pub fn export(args: &[String]) -> Result<String, Failure> {
         ));
     }
     let doc = read_document(o.file.as_deref())?;
-    let closed = doc.closed && !o.open;
+    let closed = doc.closed && !o.sub.open;
     let n = doc.poses.len();
     let coarse_spans = if closed { n } else { n - 1 };
     let timing = match &o.times {
@@ -163,12 +138,7 @@ pub fn export(args: &[String]) -> Result<String, Failure> {
             }
         )));
     }
-    let scheme = match (o.scheme, o.s) {
-        (_, Some(s)) => Scheme::J(s),
-        (Some(scheme), None) => scheme,
-        (None, None) => Scheme::default(),
-    };
-    let sub = Subdivision::new(scheme, o.rules, o.levels.unwrap_or(5));
+    let sub = o.sub.subdivision(5)?;
     let (motion, polyscrew): (Box<dyn Motion>, Polyscrew) = if sub.levels == 0 {
         let p = Polyscrew::new(doc.poses.clone(), closed)?;
         (Box::new(p.clone()), p)

@@ -8,6 +8,7 @@ use screwbender::{
     MAX_GLTF_BYTES,
 };
 
+use crate::args::ArgReader;
 use crate::Failure;
 
 /// Reads a file of at most [`MAX_GLTF_BYTES`] (checked before reading).
@@ -52,23 +53,17 @@ fn uri_to_path(uri: &str) -> Result<String, Error> {
 
 /// Runs `screwbender import`; returns the document for standard output (empty with `-o`).
 pub fn import(args: &[String]) -> Result<String, Failure> {
-    let mut file = None;
     let mut output = None;
     let mut selection = NodeSelection::Auto;
     let mut open = false;
     let mut verbose = false;
-    let mut it = args.iter();
-    while let Some(arg) = it.next() {
-        let mut value = |name: &str| {
-            it.next()
-                .cloned()
-                .ok_or_else(|| Failure(format!("{name} needs a value")))
-        };
-        match arg.as_str() {
-            "--node" => selection = NodeSelection::Animated(value("--node")?),
+    let mut r = ArgReader::new(args);
+    while let Some(arg) = r.next_arg() {
+        match arg {
+            "--node" => selection = NodeSelection::Animated(r.value(arg)?),
             "--nodes" => {
                 selection = NodeSelection::Transforms(
-                    value("--nodes")?
+                    r.value(arg)?
                         .split(',')
                         .map(|s| s.trim().to_string())
                         .collect(),
@@ -76,17 +71,11 @@ pub fn import(args: &[String]) -> Result<String, Failure> {
             }
             "--open" => open = true,
             "--verbose" | "-v" => verbose = true,
-            "-o" | "--output" => output = Some(value("-o")?),
-            a if a.starts_with("--") => {
-                return Err(Failure(format!("unknown option '{a}' (try --help)")))
-            }
-            f => {
-                if file.replace(f.to_string()).is_some() {
-                    return Err(Failure("more than one input FILE given".into()));
-                }
-            }
+            "-o" | "--output" => output = Some(r.value("-o")?),
+            other => r.positional(other)?,
         }
     }
+    let file = r.file;
     let file = file.ok_or_else(|| Failure("import needs a FILE (.glb, .gltf or .csv)".into()))?;
     let path = Path::new(&file);
     let bytes = read_limited(path)?;

@@ -4,6 +4,7 @@
 //! output. Exit status 0 on success, 2 with a one-line message on standard error for bad usage
 //! or bad input.
 
+mod args;
 mod compare;
 mod export;
 mod import;
@@ -12,10 +13,11 @@ use std::io::{Read, Write};
 use std::process::ExitCode;
 
 use screwbender::{
-    scenes, Error, Motion, MotionDocument, Polyscrew, Pose, Rules, Scheme, Screw, ScrewBender,
-    ScrewKind, Subdivision,
+    scenes, Error, Motion, MotionDocument, Polyscrew, Pose, Screw, ScrewBender, ScrewKind,
 };
 use serde_json::{json, Value};
+
+use args::{number, ArgReader, SubdivisionArgs};
 
 const HELP: &str = "\
 screwbender — smooth rigid motions by screw subdivision (Powell & Rossignac)
@@ -136,11 +138,7 @@ fn run(args: &[String]) -> Result<String, Failure> {
 /// Parsed options shared by the commands.
 #[derive(Default)]
 struct Options {
-    scheme: Option<Scheme>,
-    s: Option<f64>,
-    rules: Rules,
-    levels: Option<u32>,
-    open: bool,
+    sub: SubdivisionArgs,
     us: Vec<f64>,
     ts: Vec<f64>,
     methods: Vec<String>,
@@ -159,57 +157,24 @@ struct Accepts {
 
 fn parse_options(args: &[String], accepts: Accepts) -> Result<Options, Failure> {
     let mut o = Options::default();
-    let mut it = args.iter();
-    while let Some(arg) = it.next() {
-        let mut value = |name: &str| {
-            it.next()
-                .cloned()
-                .ok_or_else(|| Failure(format!("{name} needs a value")))
-        };
-        match arg.as_str() {
-            "--scheme" if accepts.subdivision => {
-                o.scheme = Some(value("--scheme")?.parse::<Scheme>()?)
-            }
-            "--s" if accepts.subdivision => o.s = Some(number("--s", &value("--s")?)?),
-            "--rules" if accepts.subdivision => o.rules = value("--rules")?.parse::<Rules>()?,
-            "--levels" if accepts.subdivision => o.levels = Some(levels(&value("--levels")?)?),
-            "--open" if accepts.subdivision => o.open = true,
-            "--u" if accepts.u => o.us.push(number("--u", &value("--u")?)?),
-            "--t" if accepts.t => o.ts.push(number("--t", &value("--t")?)?),
-            "--methods" if accepts.compare => o.methods.push(value("--methods")?),
+    let mut r = ArgReader::new(args);
+    while let Some(arg) = r.next_arg() {
+        if accepts.subdivision && o.sub.take(arg, &mut r)? {
+            continue;
+        }
+        match arg {
+            "--u" if accepts.u => o.us.push(number(arg, &r.value(arg)?)?),
+            "--t" if accepts.t => o.ts.push(number(arg, &r.value(arg)?)?),
+            "--methods" if accepts.compare => o.methods.push(r.value(arg)?),
             "--json" if accepts.compare => o.json = true,
-            "--open" if accepts.compare => o.open = true,
-            a if a.starts_with("--") => {
-                return Err(Failure(format!("unknown option '{a}' (try --help)")))
-            }
-            f => {
-                if o.file.replace(f.to_string()).is_some() {
-                    return Err(Failure("more than one input FILE given".into()));
-                }
-            }
+            "--open" if accepts.compare => o.sub.open = true,
+            other => r.positional(other)?,
         }
     }
-    if o.scheme.is_some() && o.s.is_some() {
-        return Err(Failure(
-            "give either --scheme or --s (the J_s family), not both".into(),
-        ));
-    }
+    // Validate the subdivision options now, so a conflict is reported before reading input.
+    o.sub.subdivision(0)?;
+    o.file = r.file;
     Ok(o)
-}
-
-fn number(name: &str, text: &str) -> Result<f64, Failure> {
-    match text.parse::<f64>() {
-        Ok(v) if v.is_finite() => Ok(v),
-        _ => Err(Failure(format!("{name}: '{text}' is not a finite number"))),
-    }
-}
-
-fn levels(text: &str) -> Result<u32, Failure> {
-    text.parse::<u32>().map_err(|_| {
-        Failure(format!(
-            "--levels: '{text}' is not a level count (expected a whole number ≥ 0)"
-        ))
-    })
 }
 
 fn read_document(file: Option<&str>) -> Result<MotionDocument, Failure> {
@@ -238,17 +203,6 @@ fn read_document(file: Option<&str>) -> Result<MotionDocument, Failure> {
     MotionDocument::from_json(&text).map_err(|e| Failure(format!("{name}: {e}")))
 }
 
-impl Options {
-    fn subdivision(&self, default_levels: u32) -> Subdivision {
-        let scheme = match (self.scheme, self.s) {
-            (_, Some(s)) => Scheme::J(s),
-            (Some(scheme), None) => scheme,
-            (None, None) => Scheme::default(),
-        };
-        Subdivision::new(scheme, self.rules, self.levels.unwrap_or(default_levels))
-    }
-}
-
 fn subdivide(args: &[String]) -> Result<String, Failure> {
     let o = parse_options(
         args,
@@ -260,8 +214,8 @@ fn subdivide(args: &[String]) -> Result<String, Failure> {
         },
     )?;
     let doc = read_document(o.file.as_deref())?;
-    let closed = doc.closed && !o.open;
-    let motion = ScrewBender::new(doc.poses, closed, o.subdivision(5))?;
+    let closed = doc.closed && !o.sub.open;
+    let motion = ScrewBender::new(doc.poses, closed, o.sub.subdivision(5)?)?;
     let mut out = MotionDocument::new(motion.refined().poses().to_vec(), closed);
     out.name = doc.name;
     Ok(out.to_json())
@@ -285,8 +239,8 @@ fn eval(args: &[String]) -> Result<String, Failure> {
         return Err(Failure("eval needs at least one --u U".into()));
     }
     let doc = read_document(o.file.as_deref())?;
-    let closed = doc.closed && !o.open;
-    let sub = o.subdivision(5);
+    let closed = doc.closed && !o.sub.open;
+    let sub = o.sub.subdivision(5)?;
     let motion: Box<dyn Motion> = if sub.levels == 0 {
         Box::new(Polyscrew::new(doc.poses, closed)?)
     } else {
@@ -358,7 +312,7 @@ fn compare_command(args: &[String]) -> Result<String, Failure> {
         },
     )?;
     let doc = read_document(o.file.as_deref())?;
-    let closed = doc.closed && !o.open;
+    let closed = doc.closed && !o.sub.open;
     Ok(compare::compare(&doc.poses, closed, &o.methods, o.json)?)
 }
 
