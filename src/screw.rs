@@ -302,14 +302,14 @@ fn rotate(q: DQuat, v: DVec3) -> DVec3 {
 }
 
 /// `atan2(s, c)` for `s ≥ 0` (the half angle, in `[0, π]`), through the `atan` of the smaller
-/// ratio, which lies in `[0, 1]` where [`trig::atan_unit`] is fast.
+/// ratio, which lies in `[0, 1]` where [`trig::atan_ratio`] is fast.
 #[inline]
 fn half_angle(s: f64, c: f64) -> f64 {
     use std::f64::consts::FRAC_PI_2;
     if c >= s {
-        trig::atan_unit(s / c)
+        trig::atan_ratio(s, c)
     } else {
-        FRAC_PI_2 - trig::atan_unit(c / s)
+        FRAC_PI_2 - trig::atan_ratio(c, s)
     }
 }
 
