@@ -39,20 +39,7 @@ impl Timing {
                 min: 2,
             });
         }
-        for (i, t) in knots.iter().enumerate() {
-            if !t.is_finite() {
-                return Err(Error::NonFinite {
-                    at: format!("times[{i}]"),
-                });
-            }
-            if i > 0 && *t <= knots[i - 1] {
-                return Err(Error::OutOfRange {
-                    at: format!("times[{i}]"),
-                    value: t.to_string(),
-                    expected: format!("a time after times[{}] = {}", i - 1, knots[i - 1]),
-                });
-            }
-        }
+        check_increasing_times(&knots, "")?;
         let slopes = monotone_slopes(&knots, closed);
         Ok(Timing {
             knots,
@@ -114,6 +101,26 @@ impl Timing {
         };
         (u, du)
     }
+}
+
+/// Checks that `times` are finite and strictly increasing, naming the first bad `times[i]`;
+/// `note` is appended to the out-of-order message (e.g. why equal times are not allowed).
+pub(crate) fn check_increasing_times(times: &[f64], note: &str) -> Result<(), Error> {
+    for (i, &t) in times.iter().enumerate() {
+        if !t.is_finite() {
+            return Err(Error::NonFinite {
+                at: format!("times[{i}]"),
+            });
+        }
+        if i > 0 && t <= times[i - 1] {
+            return Err(Error::OutOfRange {
+                at: format!("times[{i}]"),
+                value: t.to_string(),
+                expected: format!("a time after times[{}] = {}{note}", i - 1, times[i - 1]),
+            });
+        }
+    }
+    Ok(())
 }
 
 /// Slopes `v_k = (p_{k+1} − p_{k−1}) / (T_{k+1} − T_{k−1})` (one-sided at open ends, wrapped for

@@ -4,6 +4,7 @@
 use glam::DVec3;
 
 use crate::error::{check_finite, Error};
+use crate::timing::check_increasing_times;
 
 /// A C¹ cubic Hermite interpolant of points `p_i` at times `t_i` with Catmull–Rom tangents
 /// `m_i = (p_{i+1} − p_{i−1}) / (t_{i+1} − t_{i−1})` (the central difference; for uniform times
@@ -49,16 +50,7 @@ impl CatmullRom {
         for (i, p) in points.iter().enumerate() {
             check_finite(&p.to_array(), &format!("points[{i}]"))?;
         }
-        for (i, &t) in times.iter().enumerate() {
-            check_finite(&[t], &format!("times[{i}]"))?;
-            if i > 0 && t <= times[i - 1] {
-                return Err(Error::OutOfRange {
-                    at: format!("times[{i}]"),
-                    value: t.to_string(),
-                    expected: format!("a time after times[{}] = {}", i - 1, times[i - 1]),
-                });
-            }
-        }
+        check_increasing_times(times, "")?;
         let tangents = (0..n)
             .map(|i| {
                 if closed {

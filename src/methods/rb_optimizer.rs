@@ -14,6 +14,7 @@ use super::quaternion_spline::{Frame, HermiteQuatSpline, FRAME_TIME_TOLERANCE};
 use crate::error::{check_finite, Error};
 use crate::motion::{Kinematics, Motion};
 use crate::pose::{Pose, UNIT_QUATERNION_TOLERANCE};
+use crate::timing::check_increasing_times;
 
 /// Default penalty weight `α` for keyframe spacing 1 (spec §6: `α ≈ 1000`).
 pub const DEFAULT_ALPHA: f64 = 1000.0;
@@ -190,20 +191,7 @@ fn validate_keys(times: &[f64], keys: &[DQuat], closed: bool) -> Result<Vec<DQua
             },
         });
     }
-    for (i, &t) in times.iter().enumerate() {
-        check_finite(&[t], &format!("times[{i}]"))?;
-        if i > 0 && t <= times[i - 1] {
-            return Err(Error::OutOfRange {
-                at: format!("times[{i}]"),
-                value: t.to_string(),
-                expected: format!(
-                    "a time after times[{}] = {} (duplicate keyframes are not allowed)",
-                    i - 1,
-                    times[i - 1]
-                ),
-            });
-        }
-    }
+    check_increasing_times(times, " (duplicate keyframes are not allowed)")?;
     let mut unit = Vec::with_capacity(keys.len());
     for (i, q) in keys.iter().enumerate() {
         check_finite(&q.to_array(), &format!("keys[{i}]"))?;

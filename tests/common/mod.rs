@@ -1,6 +1,9 @@
 //! Helpers shared by the integration tests (native and wasm32 alike: no clocks, files or threads).
 #![allow(dead_code)]
 
+#[cfg(not(target_arch = "wasm32"))]
+pub mod cli;
+
 use glam::{DQuat, DVec3};
 use screwbender::Pose;
 
