@@ -58,24 +58,9 @@ mod native {
     }
 
     fn l_cycle_rotated() -> Vec<Pose> {
-        let o = [
-            [0., 0., 0.],
-            [6., 0., 0.],
-            [6., 2., 0.],
-            [2., 2., 0.],
-            [2., 6., 0.],
-            [0., 6., 0.],
-        ];
-        let deg = [-60.0f64, 0.0, 0.0, 45.0, 90.0, 45.0];
-        o.iter()
-            .zip(deg)
-            .map(|(o, d)| {
-                Pose::new(
-                    DVec3::from_array(*o),
-                    DQuat::from_rotation_z(d.to_radians()),
-                )
-            })
-            .collect()
+        screwbender::scenes::scene("l_cycle_rotated")
+            .expect("preset A2 exists")
+            .poses
     }
 
     /// Evaluates 1000 poses `step` apart and sums their origins (so none is optimised away).

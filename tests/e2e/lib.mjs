@@ -2,7 +2,7 @@
 // backend (see /work/shared/TOOLCHAIN.md), and opening the playground.
 import { chromium } from 'playwright-core';
 
-const BASE_FLAGS = [
+export const BASE_FLAGS = [
   '--headless=new',
   '--no-sandbox',
   '--disable-background-networking',

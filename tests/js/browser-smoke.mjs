@@ -10,6 +10,7 @@ import http from 'node:http';
 import path from 'node:path';
 import { parseArgs } from 'node:util';
 import { chromium } from 'playwright-core';
+import { BASE_FLAGS } from '../e2e/lib.mjs';
 
 const { values: args } = parseArgs({
   options: {
@@ -63,14 +64,7 @@ const url = server ? `http://127.0.0.1:${server.address().port}/` : args.url;
 
 const browser = await chromium.launch({
   executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
-  args: [
-    '--headless=new',
-    '--no-sandbox',
-    '--disable-background-networking',
-    '--disable-component-update',
-    '--disable-sync',
-    '--no-first-run',
-  ],
+  args: BASE_FLAGS,
 });
 let ok = false;
 try {

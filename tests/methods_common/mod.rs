@@ -77,24 +77,9 @@ pub fn assert_rel(got: f64, want: f64, tol: f64, what: &str) {
     );
 }
 
-/// The poses of scene A2 `l_cycle_rotated` (scenes.md), cyclic.
+/// The poses of scene A2 `l_cycle_rotated` (scenes.md), cyclic: the library's preset.
 pub fn l_cycle_rotated() -> Vec<Pose> {
-    let o = [
-        [0., 0., 0.],
-        [6., 0., 0.],
-        [6., 2., 0.],
-        [2., 2., 0.],
-        [2., 6., 0.],
-        [0., 6., 0.],
-    ];
-    let deg = [-60.0f64, 0.0, 0.0, 45.0, 90.0, 45.0];
-    o.iter()
-        .zip(deg)
-        .map(|(o, d)| {
-            Pose::new(
-                DVec3::from_array(*o),
-                DQuat::from_rotation_z(d.to_radians()),
-            )
-        })
-        .collect()
+    screwbender::scenes::scene("l_cycle_rotated")
+        .expect("preset A2 exists")
+        .poses
 }
