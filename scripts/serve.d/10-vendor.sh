@@ -6,3 +6,6 @@ cd "$(dirname "${BASH_SOURCE[0]}")/../.."
 mkdir -p www/vendor
 cp node_modules/lil-gui/dist/lil-gui.esm.min.js www/vendor/lil-gui.esm.min.js
 cp node_modules/lil-gui/LICENSE* www/vendor/ 2>/dev/null || true
+cp node_modules/uplot/dist/uPlot.esm.js www/vendor/uPlot.esm.js
+cp node_modules/uplot/dist/uPlot.min.css www/vendor/uPlot.min.css
+cp node_modules/uplot/LICENSE www/vendor/uPlot.LICENSE 2>/dev/null || true

@@ -8,6 +8,7 @@ import {
 import { gizmoGeometry, hitGizmo, startDrag, gizmoPoint, project } from './gizmo.js';
 import { History, encodeHash, decodeHash, loadSaved, save, SESSION_VERSION } from './state.js';
 import { buildUi } from './ui.js';
+import { Dock } from './dock.js';
 
 /** The largest strobe count (instances of the object along the motion). */
 export const MAX_STROBE = 20000;
@@ -81,6 +82,8 @@ export class App {
       showTriads: true,
       showGrid: true,
       snap: false,
+      /** The open analysis view ('' = dock closed). */
+      dock: '',
     };
     this.anim = { playing: false, u: 0, speed: 1, loop: true, visible: false };
     /** The imported mesh: {kind: 'obj', data: text} or {kind: 'gltf', data: base64}. */
@@ -123,6 +126,8 @@ export class App {
 
     this.restoreInitial();
     this.ui = buildUi(this);
+    this.dock = new Dock(this);
+    if (this.view.dock) this.openView(this.view.dock);
     this.bindInput();
     new ResizeObserver(() => {
       this.sizeCache = null;
@@ -212,7 +217,11 @@ export class App {
     this.motion?.free();
     this.motion = motion;
     const v = s.view ?? {};
-    for (const k of Object.keys(this.view)) if (k in v && typeof v[k] === typeof this.view[k]) this.view[k] = v[k];
+    for (const k of Object.keys(this.view)) {
+      // Undo and imports do not switch the open analysis view (only the initial restore does).
+      if (k === 'dock' && this.dock) continue;
+      if (k in v && typeof v[k] === typeof this.view[k]) this.view[k] = v[k];
+    }
     this.view.strobe = Math.max(1, Math.min(MAX_STROBE, Math.round(this.view.strobe)));
     if (this.view.object === 'obj' && !this.imported) this.view.object = 'scene';
     this.selected = Number.isInteger(s.selected) && s.selected < motion.poseCount ? s.selected : -1;
@@ -281,6 +290,22 @@ export class App {
     this.rebuildControls();
     if (save) this.autosave();
     this.ui?.refresh();
+    this.dock?.changed('edit');
+  }
+
+  /** Opens analysis view `id` in the dock ('' or null closes it); returns its instance. */
+  openView(id) {
+    let inst = null;
+    try {
+      inst = this.dock.open(id || null);
+      this.view.dock = id || '';
+    } catch (e) {
+      this.view.dock = '';
+      this.showError(e.message);
+    }
+    this.autosave();
+    this.ui?.refresh();
+    return inst;
   }
 
   autosave() {
@@ -862,7 +887,8 @@ export class App {
     const fast = d.session && !this.view.showPolyscrew;
     try {
       if (fast) d.session.setPose(index, Float64Array.from([...pose.origin, ...pose.rotation]));
-      else this.motion.setPose(index, pose);
+      // Views that follow drags read the Motion: give it the pose now, not only on release.
+      if (!fast || this.dock?.wantsLive) this.motion.setPose(index, pose);
     } catch (err) {
       this.showError(err.message);
       return;
@@ -888,6 +914,7 @@ export class App {
       this.rebuildMotion();
       this.rebuildControls();
     }
+    this.dock?.changed('drag');
     this.stats.dragMs = performance.now() - t0;
   }
 

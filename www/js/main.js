@@ -12,6 +12,8 @@
 //   gizmoOnPage(part): {x, y}       a grabbable point of a gizmo part: 'axis-x|y|z', 'plane-x|y|z',
 //                                   'ring-x|y|z', 'trackball' (of the current mode)
 //   frames(): number                frames drawn so far; stats(): {updateMs, frameMs, renderMs}
+//   openView(id): instance          opens an analysis view of the dock ('' closes it)
+//   flushViews()                    runs the open view's pending update now
 //   app                             the App object itself (for benchmarks / debugging)
 import { App } from './app.js';
 
@@ -51,4 +53,6 @@ window.screwbender = {
   gizmoOnPage: (part) => app.screenOfGizmo(part),
   frames: () => app.frames,
   stats: () => ({ ...app.stats }),
+  openView: (id) => app.openView(id),
+  flushViews: () => app.dock.flush(),
 };

@@ -6,8 +6,18 @@ export const INSTANCE = 20;
 export const SEGMENT = 12;
 
 /** Mesh slots and line layers of the page. */
-export const SLOT = { strobe: 0, control: 1, anim: 2, handle: 3, arrow: 4, morph: 10 };
-export const LAYER = { grid: 0, axes: 1, trajectories: 2, polyscrew: 3, polygon: 4, triads: 5, gizmo: 6 };
+export const SLOT = {
+  strobe: 0, control: 1, anim: 2, handle: 3, arrow: 4, morph: 10,
+  // Analysis views (www/js/views/): split/tweak ghosts, method overlays, morphing strobe.
+  steps: 5, stepsGhost: 6, methods: 7, morphStrobe: 32,
+};
+/** Morphing strobe instances get one slot each (a different mesh per instance). */
+export const MAX_MORPH_STROBE = 48;
+export const LAYER = {
+  grid: 0, axes: 1, trajectories: 2, polyscrew: 3, polygon: 4, triads: 5, gizmo: 6,
+  // Analysis views: screw axes, split/tweak arrows, method overlays, frame-independence traces.
+  screwAxes: 7, steps: 8, methods: 9, frame: 10,
+};
 
 export const COLORS = {
   strobeA: hexLinear('#46678c'),

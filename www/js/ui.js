@@ -139,6 +139,7 @@ export function buildUi(app) {
   tool('t-redo', () => app.redo());
   tool('t-frame', () => app.frameAll());
   tool('t-help', () => toggleHelp());
+  tool('t-dock', () => app.openView(app.view.dock ? '' : app.lastView ?? firstView()));
   tool('play', () => app.setPlaying(!app.anim.playing));
   $('banner').querySelector('.close').onclick = () => ($('banner').hidden = true);
 
@@ -155,6 +156,10 @@ export function buildUi(app) {
   speed.addEventListener('input', () => (app.anim.speed = Number(speed.value)));
   const loop = $('loop');
   loop.addEventListener('change', () => (app.anim.loop = loop.checked));
+
+  function firstView() {
+    return document.querySelector('#dock .tabs button')?.dataset.view ?? '';
+  }
 
   function toggleHelp(show) {
     const h = $('help');
@@ -186,6 +191,8 @@ export function buildUi(app) {
     $('t-undo').disabled = !app.history.canUndo;
     $('t-redo').disabled = !app.history.canRedo;
     $('t-delete').disabled = app.selected < 0;
+    $('t-dock').classList.toggle('on', !!app.view.dock);
+    if (app.view.dock) app.lastView = app.view.dock;
     $('play').textContent = app.anim.playing ? '❚❚' : '▶';
     $('play').title = app.anim.playing ? 'Pause (Space)' : 'Play (Space)';
     speed.value = app.anim.speed;
