@@ -75,6 +75,7 @@ mod document;
 mod error;
 mod gltf_export;
 mod gltf_import;
+mod interop;
 pub mod mesh;
 pub mod methods;
 mod motion;
@@ -106,6 +107,10 @@ pub use gltf_export::{
 };
 pub use gltf_import::{
     import_glb, import_gltf, is_glb, split_glb, NodeSelection, MAX_GLTF_BYTES, REPEAT_TOLERANCE,
+};
+pub use interop::{
+    export_motion, import_motion_file, ExportFormat, ExportSettings, ExportedMotion, ImportKind,
+    SamplingMode,
 };
 pub use motion::{Kinematics, Motion};
 pub use polyscrew::Polyscrew;

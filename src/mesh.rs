@@ -8,7 +8,7 @@
 
 use glam::DVec3;
 
-use crate::scenes::Shape;
+use crate::scenes::{self, Shape};
 use crate::Error;
 
 /// Segments around the circumference of cylinders, cones and spheres.
@@ -597,4 +597,43 @@ fn base64_decode(text: &str) -> Option<Vec<u8>> {
         }
     }
     Some(out)
+}
+
+impl Mesh {
+    /// The mesh for a name: a named object ([`crate::scenes::object_shape`]), a scene's own
+    /// object (`scene:<id>`), the `k`-th morph shape of a scene (`morph:<id>:<k>`), or the
+    /// gizmo parts `unit-sphere` / `unit-cone` (radius 1, cone apex at `z = +1`, base at
+    /// `z = 0`). Unknown names are an [`Error::UnknownValue`] at `mesh`.
+    pub fn named(name: &str) -> Result<Mesh, Error> {
+        if let Some(shape) = scenes::object_shape(name) {
+            return Ok(Mesh::from_shape(&shape));
+        }
+        let unknown = || Error::UnknownValue {
+            at: "mesh".into(),
+            value: name.into(),
+            expected: "an object name, scene:<id>, morph:<id>:<k>, unit-sphere or unit-cone",
+        };
+        match name {
+            "unit-sphere" => return Ok(Mesh::sphere(1.0, ROUND_SEGMENTS)),
+            "unit-cone" => return Ok(Mesh::frustum(1.0, 0.0, 0.0, 1.0, ROUND_SEGMENTS)),
+            _ => {}
+        }
+        let mut parts = name.split(':');
+        let scene = |id: Option<&str>| id.and_then(scenes::scene).ok_or_else(unknown);
+        match parts.next() {
+            Some("scene") => Ok(Mesh::from_shape(&scene(parts.next())?.shape)),
+            Some("morph") => {
+                let s = scene(parts.next())?;
+                let k: usize = parts
+                    .next()
+                    .and_then(|k| k.parse().ok())
+                    .ok_or_else(unknown)?;
+                s.morph_shapes
+                    .get(k)
+                    .map(Mesh::from_shape)
+                    .ok_or_else(unknown)
+            }
+            _ => Err(unknown()),
+        }
+    }
 }

@@ -371,6 +371,40 @@ pub fn polygon_scenes() -> Vec<PolygonScene> {
     ]
 }
 
+/// The named objects of the playground's object menu (`bar`, `block`, `cylinder`, `cone`,
+/// `sphere`, `star`, `pendulum`, `wedge`) with their default dimensions.
+pub fn object_shape(kind: &str) -> Option<Shape> {
+    Some(match kind {
+        "bar" => Shape::Bar {
+            length: 2.0,
+            section: 0.3,
+        },
+        "block" => Shape::Block {
+            size: [1.2, 0.6, 0.4],
+            base: false,
+        },
+        "cylinder" => Shape::Cylinder {
+            radius: 0.4,
+            height: 1.6,
+        },
+        "cone" => Shape::Cone {
+            radius: 0.5,
+            height: 1.4,
+        },
+        "sphere" => Shape::Sphere { radius: 0.5 },
+        "star" => Shape::StarPrism {
+            outer: 0.8,
+            inner: 0.35,
+            thickness: 0.3,
+        },
+        "pendulum" => Shape::Pendulum { rod: 4.0, bob: 0.5 },
+        "wedge" => Shape::Wedge {
+            size: [1.2, 0.6, 0.8],
+        },
+        _ => return None,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -17,6 +17,8 @@
 //!   acceleration (all world frame, per coarse parameter unit).
 
 use glam::DVec3;
+#[cfg(feature = "files")]
+use js_sys::Uint8Array;
 use js_sys::{Array, ArrayBuffer, Float64Array, Object, Reflect};
 use serde::de::DeserializeOwned;
 use serde::Serialize;
@@ -112,6 +114,35 @@ pub(crate) fn boolean(value: &JsValue, at: &str) -> Result<bool, Error> {
     value
         .as_bool()
         .ok_or_else(|| expected(at, "a boolean", value))
+}
+
+/// File contents: the bytes of a `Uint8Array` (or `ArrayBuffer`), or the UTF-8 bytes of a
+/// string, at most `max` bytes (checked before copying).
+#[cfg(feature = "files")]
+pub(crate) fn bytes(value: &JsValue, at: &str, max: usize) -> Result<Vec<u8>, Error> {
+    let too_long = |len: usize| Error::OutOfRange {
+        at: at.to_string(),
+        value: format!("{len} bytes"),
+        expected: format!("at most {max} bytes"),
+    };
+    if let Some(text) = value.as_string() {
+        if text.len() > max {
+            return Err(too_long(text.len()));
+        }
+        return Ok(text.into_bytes());
+    }
+    // `ArrayBuffer.isView` / `instanceof` read internal slots: no user code runs.
+    let view = if value.is_instance_of::<ArrayBuffer>() {
+        Uint8Array::new(value)
+    } else if ArrayBuffer::is_view(value) && value.is_instance_of::<Uint8Array>() {
+        value.clone().unchecked_into::<Uint8Array>()
+    } else {
+        return Err(expected(at, "a Uint8Array or a string", value));
+    };
+    if view.length() as usize > max {
+        return Err(too_long(view.length() as usize));
+    }
+    Ok(view.to_vec())
 }
 
 /// Whether an optional argument was left out (`undefined` or `null`).

@@ -3,7 +3,8 @@
 //! * [`MotionHandle`] — the JS class `Motion`: an editable motion document with subdivision
 //!   options, and the smooth motion it defines (poses, samples, kinematics, span screws).
 //! * Free functions: `screw`, `screwPoses`, `screwPairs`, `screwInfo`, `posesToMatrices`,
-//!   `scenes`, `limits`, `version`.
+//!   `scenes`, `limits`, `version`, `importMotionFile` (feature `files`; so is
+//!   `Motion.exportFile`).
 //!
 //! Bulk results are typed arrays with fixed layouts (see [`convert`]): 7 `f64` per pose
 //! (origin `x, y, z`, quaternion `w, x, y, z`), 16 `f32` per column-major 4×4 matrix, 16 `f64`
@@ -16,12 +17,16 @@
 use wasm_bindgen::prelude::*;
 
 pub mod convert;
+#[cfg(feature = "files")]
+mod interop_api;
 mod motion_api;
 pub mod options;
 mod scenes_api;
 mod screw_api;
 mod types;
 
+#[cfg(feature = "files")]
+pub use interop_api::import_motion_file_js;
 pub use motion_api::MotionHandle;
 pub use scenes_api::scenes;
 pub use screw_api::{poses_to_matrices_js, screw, screw_info, screw_pairs, screw_poses};

@@ -93,6 +93,12 @@ impl MotionHandle {
         Ok(self.inner.try_borrow().map_err(|_| busy())?.state.clone())
     }
 
+    /// The document and subdivision options (for the other API modules: export, analysis).
+    #[cfg(feature = "files")]
+    pub(crate) fn snapshot(&self) -> Result<(MotionDocument, Subdivision), JsError> {
+        self.read(|s| (s.doc.clone(), s.subdivision))
+    }
+
     /// Reads the state without copying.
     fn read<R>(&self, f: impl FnOnce(&State) -> R) -> Result<R, JsError> {
         Ok(f(&self.inner.try_borrow().map_err(|_| busy())?.state))

@@ -1,6 +1,61 @@
 // Shared helpers of the end-to-end tests: launching Debian's Chromium with the flags of each
 // backend (see /work/shared/TOOLCHAIN.md), and opening the playground.
+import { spawn } from 'node:child_process';
+import fs from 'node:fs';
+import net from 'node:net';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
+
+/** The repository root. */
+export const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
+/** The backend of this run (scripts/test.d/40-e2e.sh sets it) and the name the page reports. */
+export const BACKEND = process.env.E2E_BACKEND ?? 'webgpu';
+export const EXPECTED_BACKEND = BACKEND === 'webgpu' ? 'WebGPU' : 'WebGL2';
+
+async function freePort() {
+  return new Promise((resolve) => {
+    const s = net.createServer();
+    s.listen(0, '127.0.0.1', () => {
+      const { port } = s.address();
+      s.close(() => resolve(port));
+    });
+  });
+}
+
+/** Serves www/ with scripts/serve.mjs on a free port; returns {url, stop()}. */
+export async function serveWww() {
+  if (!fs.existsSync(path.join(ROOT, 'www/pkg/screwbender_bg.wasm'))) throw new Error('build the wasm first (scripts/serve.sh)');
+  const port = await freePort();
+  const server = spawn(process.execPath, [path.join(ROOT, 'scripts/serve.mjs'), path.join(ROOT, 'www')], {
+    env: { ...process.env, PORT: String(port), SERVE_QUIET: '1' },
+    stdio: ['ignore', 'pipe', 'inherit'],
+  });
+  await new Promise((resolve, reject) => {
+    server.stdout.on('data', (d) => d.toString().includes('http://') && resolve());
+    server.on('exit', (c) => reject(new Error(`server exited ${c}`)));
+  });
+  return { url: `http://127.0.0.1:${port}/`, stop: () => server.kill() };
+}
+
+/**
+ * Serves www/ and launches Chromium for BACKEND with one browser context.
+ * Returns {url, browser, context, close()}.
+ */
+export async function startPlayground({ viewport = { width: 1280, height: 800 }, acceptDownloads = false } = {}) {
+  const { url, stop } = await serveWww();
+  const browser = await launch(BACKEND);
+  const context = await browser.newContext({ viewport, acceptDownloads });
+  return {
+    url,
+    browser,
+    context,
+    async close() {
+      await browser.close();
+      stop();
+    },
+  };
+}
 
 export const BASE_FLAGS = [
   '--headless=new',

@@ -7,57 +7,28 @@
 // Screenshots of every preset go to artifacts/e2e-<backend>/.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawn } from 'node:child_process';
 import fs from 'node:fs';
-import net from 'node:net';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { launch, openPage, waitFrames, canvasStats } from './lib.mjs';
+import { openPage, waitFrames, canvasStats, startPlayground, ROOT, BACKEND, EXPECTED_BACKEND as EXPECTED } from './lib.mjs';
 
-const BACKEND = process.env.E2E_BACKEND ?? 'webgpu';
-const EXPECTED = BACKEND === 'webgpu' ? 'WebGPU' : 'WebGL2';
-const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 const ARTIFACTS = path.join(ROOT, 'artifacts', `e2e-${BACKEND}`);
 const VIEWPORT = { width: 1280, height: 800 };
 
-let server;
+let play;
 let url;
-let browser;
 let context;
 let page;
 let problems;
 
-async function freePort() {
-  return new Promise((resolve) => {
-    const s = net.createServer();
-    s.listen(0, '127.0.0.1', () => {
-      const { port } = s.address();
-      s.close(() => resolve(port));
-    });
-  });
-}
-
 before(async () => {
-  assert.ok(fs.existsSync(path.join(ROOT, 'www/pkg/screwbender_bg.wasm')), 'build the wasm first (scripts/serve.sh)');
   fs.mkdirSync(ARTIFACTS, { recursive: true });
-  const port = await freePort();
-  server = spawn(process.execPath, [path.join(ROOT, 'scripts/serve.mjs'), path.join(ROOT, 'www')], {
-    env: { ...process.env, PORT: String(port), SERVE_QUIET: '1' },
-    stdio: ['ignore', 'pipe', 'inherit'],
-  });
-  await new Promise((resolve, reject) => {
-    server.stdout.on('data', (d) => d.toString().includes('http://') && resolve());
-    server.on('exit', (c) => reject(new Error(`server exited ${c}`)));
-  });
-  url = `http://127.0.0.1:${port}/`;
-  browser = await launch(BACKEND);
-  context = await browser.newContext({ viewport: VIEWPORT });
+  play = await startPlayground({ viewport: VIEWPORT });
+  ({ url, context } = play);
   ({ page, problems } = await openPage(context, url, BACKEND));
 });
 
 after(async () => {
-  await browser?.close();
-  server?.kill();
+  await play?.close();
 });
 
 const sb = (f, arg) => page.evaluate(f, arg);
@@ -248,7 +219,7 @@ test(`${BACKEND}: a share link reproduces the session in a fresh browser context
   await page.keyboard.press('2');
   const link = await sb(() => window.screwbender.app.shareLink());
   const session = await sb(() => window.screwbender.session());
-  const other = await browser.newContext({ viewport: VIEWPORT });
+  const other = await play.browser.newContext({ viewport: VIEWPORT });
   const p2 = await other.newPage();
   await p2.goto(BACKEND === 'webgl2' ? link.replace('/#', '/?backend=webgl2#') : link);
   await p2.evaluate(() => window.screwbender.ready);

@@ -9,6 +9,7 @@ import { gizmoGeometry, hitGizmo, startDrag, gizmoPoint, project } from './gizmo
 import { History, encodeHash, decodeHash, loadSaved, save, SESSION_VERSION } from './state.js';
 import { buildUi } from './ui.js';
 import { Dock } from './dock.js';
+import { bindDrop, download, IMPORT_SIZE } from './files.js';
 
 /** The largest strobe count (instances of the object along the motion). */
 export const MAX_STROBE = 20000;
@@ -16,8 +17,6 @@ export const MAX_STROBE = 20000;
 export const MAX_MESH_BYTES = 32 << 20;
 /** Imported meshes up to this size are kept in the autosave and share links. */
 const MAX_SAVED_MESH = 1 << 20;
-/** Size of the cube an imported mesh is scaled to fit (scene units). */
-const IMPORT_SIZE = 1.6;
 /** Scale of the control-pose and animated objects relative to the strobe (avoids z-fighting). */
 const CONTROL_SCALE = 1.01;
 /** Strobe count when a preset loads: fewer copies where the object is bulky (readable, as in the paper). */
@@ -129,6 +128,7 @@ export class App {
     this.dock = new Dock(this);
     if (this.view.dock) this.openView(this.view.dock);
     this.bindInput();
+    bindDrop(this);
     new ResizeObserver(() => {
       this.sizeCache = null;
       this.requestDraw();
@@ -697,9 +697,9 @@ export class App {
 
   // ---------------------------------------------------------------- import / export
 
-  importJson(text) {
+  importJson(text, fileName = 'JSON') {
     if (text.length > this.limits.maxDocumentBytes) {
-      return this.showError(`The JSON is ${text.length} bytes; the limit is ${this.limits.maxDocumentBytes} bytes. Nothing was changed.`);
+      return this.showError(`${fileName} is ${text.length} bytes; the limit is ${this.limits.maxDocumentBytes} bytes. Nothing was changed.`);
     }
     let motion;
     try {
@@ -713,9 +713,28 @@ export class App {
       }
       motion = Motion.fromJson(trimmed, this.motion.options());
     } catch (e) {
-      this.showError(`Import failed, nothing was changed: ${e.message}`);
+      this.showError(`Import failed, nothing was changed: ${fileName}: ${e.message}`);
       return false;
     }
+    return this.replaceMotion(motion);
+  }
+
+  /** Imports a motion document (from importMotionFile); the subdivision options are kept. */
+  importDocument(doc, fileName) {
+    let motion;
+    try {
+      motion = new Motion(doc, this.motion.options());
+    } catch (e) {
+      this.showError(`Import failed, nothing was changed: ${fileName}: ${e.message}`);
+      return false;
+    }
+    const ok = this.replaceMotion(motion);
+    if (ok) this.ui?.toast(`${fileName}: ${motion.poseCount} control poses (${motion.closed ? 'cycle' : 'open'})`);
+    return ok;
+  }
+
+  /** Replaces the motion by `motion` as one undoable edit (the view frames the new poses). */
+  replaceMotion(motion) {
     this.edit(() => {
       this.motion.free();
       this.motion = motion;
@@ -725,13 +744,13 @@ export class App {
     return true;
   }
 
+  /** Control-pose times in seconds for export and plots (null: one second per span). */
+  times() {
+    return null;
+  }
+
   exportJson() {
-    const blob = new Blob([this.motion.toJson()], { type: 'application/json' });
-    const a = document.createElement('a');
-    a.href = URL.createObjectURL(blob);
-    a.download = `${this.motion.name ?? this.view.scene ?? 'motion'}.json`;
-    a.click();
-    setTimeout(() => URL.revokeObjectURL(a.href), 1000);
+    download(`${this.motion.name ?? this.view.scene ?? 'motion'}.json`, this.motion.toJson(), 'application/json');
   }
 
   /** Puts an imported mesh ({kind, data}) into a renderer slot; throws on bad data. */
@@ -743,7 +762,7 @@ export class App {
   }
 
   /** Imports a mesh file: OBJ text or glTF (`.gltf` text / `.glb` bytes as a Uint8Array). */
-  importMesh(kind, data) {
+  importMesh(kind, data, fileName = 'mesh', failure = null) {
     const size = typeof data === 'string' ? data.length : data.byteLength;
     if (size > MAX_MESH_BYTES) {
       this.showError(`The mesh file is over ${MAX_MESH_BYTES >> 20} MiB. Nothing was changed.`);
@@ -761,7 +780,7 @@ export class App {
       this.setImportedMesh(SLOT.anim, mesh);
     } catch (e) {
       this.meshesChanged();
-      this.showError(`Mesh import failed, nothing was changed: ${e.message}`);
+      this.showError(failure ? `${failure}; read as a mesh: ${e.message}` : `Mesh import failed, nothing was changed: ${fileName}: ${e.message}`);
       return false;
     }
     this.edit(() => {

@@ -1,5 +1,6 @@
 // The controls: lil-gui panel, toolbar, timeline, help overlay, paste dialog.
 import GUI from '../vendor/lil-gui.esm.min.js';
+import { exportMotion, importFiles } from './files.js';
 
 const SCHEMES = { 'Cubic B-spline': 'bspline', '4-point': 'fourpoint', Jarek: 'jarek', 'J_s (slider)': 'j' };
 const RULES = { 'Direct (V2)': 'direct', 'Split & tweak (V1)': 'split' };
@@ -72,7 +73,16 @@ export function buildUi(app) {
   ];
   for (const [key, label] of flags) fView.add(viewFlag(key), key).name(label);
 
+  const exportOpts = { tolerance: 1e-4 };
   const actions = {
+    importFile: () => $('any-file').click(),
+    exportGlb: () => exportMotion(app, 'glb', { tolerance: exportOpts.tolerance }),
+    exportGltf: () => exportMotion(app, 'gltf', { tolerance: exportOpts.tolerance }),
+    exportCsv: () => exportMotion(app, 'csv', { tolerance: exportOpts.tolerance }),
+    exportTrajectory: () => {
+      const pts = app.bodyPoints();
+      exportMotion(app, 'csv', { tolerance: exportOpts.tolerance, point: pts[pts.length - 1] });
+    },
     importJson: () => $('json-file').click(),
     pasteJson: () => openPaste(),
     exportJson: () => app.exportJson(),
@@ -89,9 +99,15 @@ export function buildUi(app) {
     reset: () => app.loadPreset(app.view.scene),
   };
   const fFile = gui.addFolder('File');
+  fFile.add(actions, 'importFile').name('Import file (JSON, CSV, glTF, OBJ)…');
   fFile.add(actions, 'importJson').name('Import JSON…');
   fFile.add(actions, 'pasteJson').name('Paste JSON…');
   fFile.add(actions, 'exportJson').name('Export JSON');
+  fFile.add(actions, 'exportGlb').name('Export glTF (.glb)');
+  fFile.add(actions, 'exportGltf').name('Export glTF (.gltf + .bin)');
+  fFile.add(actions, 'exportCsv').name('Export CSV (poses)');
+  fFile.add(actions, 'exportTrajectory').name('Export CSV (body-point path)');
+  fFile.add(exportOpts, 'tolerance', { '1 µm': 1e-6, '10 µm': 1e-5, '0.1 mm': 1e-4, '1 mm': 1e-3, '1 cm': 1e-2 }).name('Export tolerance (1 unit = 1 m)');
   fFile.add(actions, 'importObj').name('Import mesh (OBJ, glTF)…');
   fFile.add(actions, 'share').name('Copy share link');
   fFile.add(actions, 'reset').name('Reset preset');
@@ -106,7 +122,13 @@ export function buildUi(app) {
       if (file.size > 64 << 20) return app.showError(`${file.name} is too large (${file.size} bytes). Nothing was changed.`);
       f(file);
     });
-  readFile($('json-file'), async (file) => app.importJson(await file.text()));
+  readFile($('json-file'), async (file) => app.importJson(await file.text(), file.name));
+  const any = $('any-file');
+  any.addEventListener('change', async () => {
+    const files = [...any.files];
+    any.value = '';
+    await importFiles(app, files);
+  });
   readFile($('obj-file'), async (file) => {
     const name = file.name.toLowerCase();
     if (name.endsWith('.glb')) app.importMesh('gltf', new Uint8Array(await file.arrayBuffer()));

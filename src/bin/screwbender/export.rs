@@ -7,25 +7,16 @@ use std::path::{Path, PathBuf};
 use glam::DVec3;
 use screwbender::mesh::Mesh;
 use screwbender::{
-    poses_csv, sample_fixed_rate, sample_polyscrew, scenes, trajectory_csv, GltfAsset, GltfMotion,
-    Motion, Polyscrew, ScrewBender, Timing, DEFAULT_TOLERANCE,
+    export_motion, scenes, ExportFormat, ExportSettings, SamplingMode, DEFAULT_TOLERANCE,
 };
 
 use crate::args::{number, numbers, ArgReader, SubdivisionArgs};
 use crate::{read_document, Failure};
 
-/// The output formats.
-#[derive(Clone, Copy, PartialEq)]
-enum Format {
-    Glb,
-    Gltf,
-    Csv,
-}
-
 /// Parsed `export` options.
 #[derive(Default)]
 struct ExportOptions {
-    format: Option<Format>,
+    format: Option<ExportFormat>,
     tolerance: Option<f64>,
     fps: Option<f64>,
     times: Option<Vec<f64>>,
@@ -45,18 +36,7 @@ fn parse(args: &[String]) -> Result<ExportOptions, Failure> {
             continue;
         }
         match arg {
-            "--format" => {
-                o.format = Some(match r.value(arg)?.as_str() {
-                    "glb" => Format::Glb,
-                    "gltf" => Format::Gltf,
-                    "csv" => Format::Csv,
-                    other => {
-                        return Err(Failure(format!(
-                            "--format: unknown value '{other}' (expected glb, gltf, csv)"
-                        )))
-                    }
-                })
-            }
+            "--format" => o.format = Some(ExportFormat::parse(&r.value(arg)?, "--format")?),
             "--tolerance" => o.tolerance = Some(number(arg, &r.value(arg)?)?),
             "--fps" => o.fps = Some(number(arg, &r.value(arg)?)?),
             "--times" => o.times = Some(numbers(arg, &r.value(arg)?)?),
@@ -109,108 +89,65 @@ pub fn export(args: &[String]) -> Result<String, Failure> {
     let format = o
         .format
         .ok_or_else(|| Failure("export needs --format glb|gltf|csv".into()))?;
-    if format != Format::Csv && o.output.is_none() {
+    if format != ExportFormat::Csv && o.output.is_none() {
         return Err(Failure("export --format glb|gltf needs -o OUT".into()));
     }
-    if o.point.is_some() && format != Format::Csv {
-        return Err(Failure(
-            "--point (a body-point trajectory) needs --format csv".into(),
-        ));
-    }
-    let doc = read_document(o.file.as_deref())?;
-    let closed = doc.closed && !o.sub.open;
-    let n = doc.poses.len();
-    let coarse_spans = if closed { n } else { n - 1 };
-    let timing = match &o.times {
-        Some(t) => Timing::new(t.clone(), closed)?,
-        None => Timing::uniform(n, closed),
-    };
-    if timing.knots().len() != coarse_spans + 1 {
-        return Err(Failure(format!(
-            "times: {} times given, expected {} ({} control poses{})",
-            timing.knots().len(),
-            coarse_spans + 1,
-            n,
-            if closed {
-                ", plus the time pose 0 is reached again"
-            } else {
-                ""
-            }
-        )));
-    }
+    let mut doc = read_document(o.file.as_deref())?;
+    doc.closed = doc.closed && !o.sub.open;
     let sub = o.sub.subdivision(5)?;
-    let (motion, polyscrew): (Box<dyn Motion>, Polyscrew) = if sub.levels == 0 {
-        let p = Polyscrew::new(doc.poses.clone(), closed)?;
-        (Box::new(p.clone()), p)
-    } else {
-        let sb = ScrewBender::new(doc.poses.clone(), closed, sub)?;
-        let p = sb.refined().clone();
-        (Box::new(sb), p)
-    };
-    let tolerance = o.tolerance.unwrap_or(DEFAULT_TOLERANCE);
-    let samples = match o.fps {
-        Some(fps) => sample_fixed_rate(motion.as_ref(), &timing, fps)?,
-        None => sample_polyscrew(&polyscrew, coarse_spans, &timing, tolerance)?,
-    };
+    let mesh = doc
+        .name
+        .as_deref()
+        .and_then(scenes::scene)
+        .map(|sc| Mesh::from_shape(&sc.shape));
+    let out = o.output.as_deref();
+    let (gltf_path, bin_path) = gltf_paths(out.unwrap_or("motion"));
+    let bin_name = bin_path
+        .file_name()
+        .and_then(|f| f.to_str())
+        .ok_or_else(|| Failure(format!("{}: not a valid file name", bin_path.display())))?
+        .to_string();
     let sampling = match o.fps {
-        Some(fps) => format!("{fps} fps"),
-        None => format!("tolerance {tolerance:e}"),
+        Some(fps) => SamplingMode::FixedRate(fps),
+        None => SamplingMode::Adaptive(o.tolerance.unwrap_or(DEFAULT_TOLERANCE)),
     };
+    let exported = export_motion(
+        &doc,
+        sub,
+        &ExportSettings {
+            format,
+            sampling,
+            times: o.times.clone(),
+            point: o.point,
+            control_nodes: o.control_nodes,
+            mesh: mesh.as_ref(),
+            bin_name: &bin_name,
+        },
+    )?;
     let mut stdout = String::new();
-    let written = match format {
-        Format::Csv => {
-            let text = match o.point {
-                Some(p) => trajectory_csv(&samples, p),
-                None => poses_csv(&samples),
-            };
-            match &o.output {
-                Some(out) => {
-                    write(Path::new(out), text.as_bytes())?;
-                    out.clone()
-                }
-                None => {
-                    stdout = text;
-                    "standard output".into()
-                }
-            }
+    let written = match (format, out) {
+        (ExportFormat::Gltf, _) => {
+            write(&gltf_path, &exported.data)?;
+            write(&bin_path, exported.bin.as_deref().unwrap_or_default())?;
+            format!("{} + {}", gltf_path.display(), bin_path.display())
         }
-        Format::Glb | Format::Gltf => {
-            let mesh = doc
-                .name
-                .as_deref()
-                .and_then(scenes::scene)
-                .map(|sc| Mesh::from_shape(&sc.shape));
-            let asset = GltfAsset::new(&GltfMotion {
-                name: doc.name.as_deref(),
-                samples: &samples,
-                control: &doc.poses,
-                control_times: timing.knots(),
-                closed,
-                mesh: mesh.as_ref(),
-                tolerance: o.fps.is_none().then_some(tolerance),
-                control_nodes: o.control_nodes,
-            })?;
-            let out = o.output.as_deref().expect("checked above");
-            if format == Format::Glb {
-                write(Path::new(out), &asset.to_glb())?;
-                out.to_string()
-            } else {
-                let (gltf, bin) = gltf_paths(out);
-                let bin_name = bin
-                    .file_name()
-                    .and_then(|f| f.to_str())
-                    .ok_or_else(|| Failure(format!("{out}: not a valid file name")))?;
-                write(&gltf, asset.to_gltf(bin_name).as_bytes())?;
-                write(&bin, asset.bin())?;
-                format!("{} + {}", gltf.display(), bin.display())
-            }
+        (_, Some(out)) => {
+            write(Path::new(out), &exported.data)?;
+            out.to_string()
+        }
+        (_, None) => {
+            stdout = String::from_utf8(exported.data).expect("CSV is UTF-8");
+            "standard output".into()
         }
     };
     if o.verbose {
+        let sampling = match sampling {
+            SamplingMode::FixedRate(fps) => format!("{fps} fps"),
+            SamplingMode::Adaptive(t) => format!("tolerance {t:e}"),
+        };
         eprintln!(
             "screwbender: export: {} samples ({sampling}, {}) -> {written}",
-            samples.len(),
-            motion.name()
+            exported.sample_count, exported.motion_name
         );
     }
     Ok(stdout)

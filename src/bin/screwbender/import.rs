@@ -3,10 +3,7 @@
 
 use std::path::Path;
 
-use screwbender::{
-    import_glb, import_gltf, is_glb, parse_csv_poses, Error, MotionDocument, NodeSelection,
-    MAX_GLTF_BYTES,
-};
+use screwbender::{import_motion_file, Error, NodeSelection, MAX_GLTF_BYTES};
 
 use crate::args::ArgReader;
 use crate::Failure;
@@ -79,41 +76,16 @@ pub fn import(args: &[String]) -> Result<String, Failure> {
     let file = file.ok_or_else(|| Failure("import needs a FILE (.glb, .gltf or .csv)".into()))?;
     let path = Path::new(&file);
     let bytes = read_limited(path)?;
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    let result: Result<MotionDocument, Error> = if is_glb(&bytes) || ext.as_deref() == Some("glb") {
-        import_glb(&bytes, &selection)
-    } else if ext.as_deref() == Some("gltf") {
-        let dir = path.parent().unwrap_or(Path::new("."));
-        let mut resolve = |uri: &str| -> Result<Vec<u8>, Error> {
-            let name = uri_to_path(uri)?;
-            let p = dir.join(name);
-            read_limited(&p).map_err(|Failure(message)| Error::Parse {
-                at: String::new(),
-                message,
-            })
-        };
-        import_gltf(&bytes, &mut resolve, &selection)
-    } else if matches!(ext.as_deref(), Some("csv") | Some("json")) {
-        if selection != NodeSelection::Auto {
-            return Err(Failure("--node/--nodes apply to glTF files only".into()));
-        }
-        let text = std::str::from_utf8(&bytes).map_err(|e| Error::Parse {
+    let dir = path.parent().unwrap_or(Path::new("."));
+    let mut resolve = |uri: &str| -> Result<Vec<u8>, Error> {
+        let name = uri_to_path(uri)?;
+        read_limited(&dir.join(name)).map_err(|Failure(message)| Error::Parse {
             at: String::new(),
-            message: format!("not UTF-8 text: {e}"),
-        });
-        if ext.as_deref() == Some("csv") {
-            text.and_then(parse_csv_poses)
-        } else {
-            text.and_then(MotionDocument::from_json)
-        }
-    } else {
-        return Err(Failure(format!(
-            "{file}: unknown file type (expected .glb, .gltf, .csv or .json)"
-        )));
+            message,
+        })
     };
+    let name = path.file_name().and_then(|f| f.to_str()).unwrap_or(&file);
+    let result = import_motion_file(name, &bytes, &mut resolve, &selection);
     let mut doc = result.map_err(|e| Failure(format!("{file}: {e}")))?;
     if open {
         doc.closed = false;

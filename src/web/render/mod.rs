@@ -17,8 +17,7 @@ pub use gpu::{INSTANCE_FLOATS, SEGMENT_FLOATS};
 pub use local_update::DragSession;
 use renderer::Renderer;
 
-use crate::mesh::{Mesh, ROUND_SEGMENTS};
-use crate::scenes::{self, Shape};
+use crate::mesh::Mesh;
 
 /// The WebGPU/WebGL2 renderer of the playground (JS class `Renderer`).
 #[wasm_bindgen(js_name = Renderer)]
@@ -26,70 +25,9 @@ pub struct RendererHandle {
     inner: Renderer,
 }
 
-/// The named objects of the page's object menu, with their default dimensions.
-fn named_shape(kind: &str) -> Option<Shape> {
-    Some(match kind {
-        "bar" => Shape::Bar {
-            length: 2.0,
-            section: 0.3,
-        },
-        "block" => Shape::Block {
-            size: [1.2, 0.6, 0.4],
-            base: false,
-        },
-        "cylinder" => Shape::Cylinder {
-            radius: 0.4,
-            height: 1.6,
-        },
-        "cone" => Shape::Cone {
-            radius: 0.5,
-            height: 1.4,
-        },
-        "sphere" => Shape::Sphere { radius: 0.5 },
-        "star" => Shape::StarPrism {
-            outer: 0.8,
-            inner: 0.35,
-            thickness: 0.3,
-        },
-        "pendulum" => Shape::Pendulum { rod: 4.0, bob: 0.5 },
-        "wedge" => Shape::Wedge {
-            size: [1.2, 0.6, 0.8],
-        },
-        _ => return None,
-    })
-}
-
-/// The mesh for a mesh name: a named object (`bar`, `block`, `cylinder`, `cone`, `sphere`,
-/// `star`, `pendulum`, `wedge`), a scene's own object (`scene:<id>`), the `k`-th morph shape
-/// of a scene (`morph:<id>:<k>`), or the gizmo parts `unit-sphere` / `unit-cone` (radius 1,
-/// cone apex at `z = +1`, base at `z = 0`).
+/// The mesh for a mesh name (see [`Mesh::named`]), as a JS error when unknown.
 fn mesh_by_name(name: &str) -> Result<Mesh, JsError> {
-    if let Some(shape) = named_shape(name) {
-        return Ok(Mesh::from_shape(&shape));
-    }
-    let unknown = || JsError::new(&format!("unknown mesh name {name:?}"));
-    match name {
-        "unit-sphere" => return Ok(Mesh::sphere(1.0, ROUND_SEGMENTS)),
-        "unit-cone" => return Ok(Mesh::frustum(1.0, 0.0, 0.0, 1.0, ROUND_SEGMENTS)),
-        _ => {}
-    }
-    let mut parts = name.split(':');
-    let scene = |id: Option<&str>| id.and_then(scenes::scene).ok_or_else(unknown);
-    match parts.next() {
-        Some("scene") => Ok(Mesh::from_shape(&scene(parts.next())?.shape)),
-        Some("morph") => {
-            let s = scene(parts.next())?;
-            let k: usize = parts
-                .next()
-                .and_then(|k| k.parse().ok())
-                .ok_or_else(unknown)?;
-            s.morph_shapes
-                .get(k)
-                .map(Mesh::from_shape)
-                .ok_or_else(unknown)
-        }
-        _ => Err(unknown()),
-    }
+    Mesh::named(name).map_err(|e| JsError::new(&e.to_string()))
 }
 
 #[wasm_bindgen(js_class = Renderer)]

@@ -1,0 +1,138 @@
+// File export (glTF .glb / .gltf + .bin, CSV) and drag-and-drop import of the playground.
+//
+// Export and import go through the same core functions as `screwbender export` / `import`
+// (Motion.exportFile, importMotionFile), so a file written here equals the CLI's.
+import { importMotionFile } from '../pkg/screwbender.js';
+
+/** Largest file the page reads (the core refuses more than 64 MiB as well). */
+export const MAX_IMPORT_BYTES = 64 << 20;
+/** Size of the cube an imported mesh is scaled to fit (scene units; the page shows it so). */
+export const IMPORT_SIZE = 1.6;
+
+/** Saves bytes as a download. */
+export function download(name, data, type) {
+  const url = URL.createObjectURL(new Blob([data], { type }));
+  const a = document.createElement('a');
+  a.href = url;
+  a.download = name;
+  a.click();
+  setTimeout(() => URL.revokeObjectURL(url), 1000);
+}
+
+/** base64 → bytes (imported glTF meshes are kept as base64 in the session). */
+function fromBase64(text) {
+  const bin = atob(text);
+  return Uint8Array.from(bin, (c) => c.charCodeAt(0));
+}
+
+/** The export settings of the current view: the object as drawn, the timing of the session. */
+export function exportSettings(app, format, extra = {}) {
+  const s = { format, ...extra };
+  if (format !== 'csv') {
+    const v = app.view;
+    if (v.object === 'obj' && app.imported) {
+      const m = app.imported;
+      s.mesh = { kind: m.kind, data: m.kind === 'gltf' ? fromBase64(m.data) : m.data, size: IMPORT_SIZE };
+    } else s.object = v.object === 'scene' ? `scene:${v.scene}` : v.object;
+  }
+  const times = app.times?.();
+  if (times) s.times = times;
+  s.name = app.motion.name ?? app.view.scene ?? 'motion';
+  return s;
+}
+
+/**
+ * Exports the motion; returns the ExportedFile (tests read it) or null after showing the
+ * error. `download: false` only builds the file.
+ */
+export function exportMotion(app, format, extra = {}, { save = true } = {}) {
+  let file;
+  try {
+    file = app.motion.exportFile(exportSettings(app, format, extra));
+  } catch (e) {
+    app.showError(`Export failed: ${e.message}`);
+    return null;
+  }
+  if (save) {
+    download(file.fileName, file.data, file.mimeType);
+    if (file.bin) download(file.binName, file.bin, 'application/octet-stream');
+  }
+  const what = format === 'csv' ? 'rows' : 'keyframes';
+  const how = extra.fps ? `${extra.fps} fps` : `tolerance ${extra.tolerance ?? 1e-4}`;
+  app.ui?.toast(`${file.fileName}${file.bin ? ` + ${file.binName}` : ''}: ${file.sampleCount} ${what} (${how})`);
+  return file;
+}
+
+const ext = (name) => (name.toLowerCase().match(/\.([a-z0-9]+)$/) ?? [])[1] ?? '';
+
+/**
+ * Imports dropped or chosen files. A .json is a motion document or a saved session; a .csv, or a
+ * .glb / .gltf with an animation (or a .gltf with its .bin dropped along), sets the control
+ * poses; a .glb / .gltf without animation or an .obj becomes the object's mesh. Every failure
+ * shows one message naming the file, and nothing changes. Returns true when something was
+ * imported.
+ */
+export async function importFiles(app, fileList) {
+  const files = [...fileList];
+  if (files.length === 0) return false;
+  for (const f of files) {
+    if (f.size > MAX_IMPORT_BYTES) {
+      app.showError(`${f.name} is ${f.size} bytes; the limit is ${MAX_IMPORT_BYTES} bytes. Nothing was changed.`);
+      return false;
+    }
+  }
+  // Buffers (.bin and others) go along with a .gltf; the main file is the first other one.
+  const main = files.find((f) => ['json', 'csv', 'glb', 'gltf', 'obj'].includes(ext(f.name)));
+  if (!main) {
+    app.showError(`${files.map((f) => f.name).join(', ')}: unknown file type (expected .json, .csv, .glb, .gltf or .obj). Nothing was changed.`);
+    return false;
+  }
+  const kind = ext(main.name);
+  if (kind === 'json') return app.importJson(await main.text(), main.name);
+  if (kind === 'obj') return app.importMesh('obj', await main.text(), main.name);
+  const bytes = new Uint8Array(await main.arrayBuffer());
+  const buffers = {};
+  for (const f of files) if (f !== main) buffers[f.name] = new Uint8Array(await f.arrayBuffer());
+  let doc;
+  try {
+    doc = importMotionFile(main.name, bytes, buffers);
+  } catch (e) {
+    // A glTF without animation may be a mesh for the object.
+    if (kind !== 'csv' && /anim/i.test(e.message)) {
+      const data = kind === 'gltf' ? new TextDecoder().decode(bytes) : bytes;
+      return app.importMesh('gltf', data, main.name, `Import failed, nothing was changed: ${e.message}`);
+    }
+    app.showError(`Import failed, nothing was changed: ${e.message}`);
+    return false;
+  }
+  return app.importDocument(doc, main.name);
+}
+
+/** Drop target: the whole window, with a highlight while files hover. */
+export function bindDrop(app) {
+  const overlay = document.getElementById('drop');
+  let depth = 0;
+  const hasFiles = (e) => [...(e.dataTransfer?.types ?? [])].includes('Files');
+  window.addEventListener('dragenter', (e) => {
+    if (!hasFiles(e)) return;
+    e.preventDefault();
+    depth++;
+    overlay.hidden = false;
+  });
+  window.addEventListener('dragover', (e) => {
+    if (!hasFiles(e)) return;
+    e.preventDefault();
+    e.dataTransfer.dropEffect = 'copy';
+  });
+  window.addEventListener('dragleave', () => {
+    depth = Math.max(0, depth - 1);
+    if (depth === 0) overlay.hidden = true;
+  });
+  window.addEventListener('drop', (e) => {
+    if (!hasFiles(e)) return;
+    e.preventDefault();
+    depth = 0;
+    overlay.hidden = true;
+    importFiles(app, e.dataTransfer.files);
+  });
+}
