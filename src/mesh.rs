@@ -293,6 +293,43 @@ impl Mesh {
                 m.flat_polygon(&[b(y0), b(y1), c(y1), c(y0)]);
                 m
             }
+            Shape::Triangle { x, y, thickness } => {
+                let (x, y) = (DVec3::from_array(x), DVec3::from_array(y));
+                // Extrude along the plate normal (local z for the B1 triangle).
+                let n = x.cross(y).normalize_or_zero() * (thickness / 2.0);
+                let mut m = Mesh::default();
+                let (a0, b0, c0) = (-n, x - n, y - n);
+                let (a1, b1, c1) = (n, x + n, y + n);
+                m.flat_polygon(&[a1, b1, c1]);
+                m.flat_polygon(&[a0, c0, b0]);
+                m.flat_polygon(&[a0, b0, b1, a1]);
+                m.flat_polygon(&[b0, c0, c1, b1]);
+                m.flat_polygon(&[c0, a0, a1, c1]);
+                m
+            }
+            Shape::IBeam {
+                flange,
+                web,
+                web_section,
+            } => {
+                let f = DVec3::from_array(flange) / 2.0;
+                let offset = DVec3::new(0.0, 0.0, (web + flange[2]) / 2.0);
+                let mut m = Mesh::cuboid(DVec3::new(web_section[0], web_section[1], web) / 2.0);
+                m.append(&Mesh::cuboid(f).translated(offset));
+                m.append(&Mesh::cuboid(f).translated(-offset));
+                m
+            }
+            Shape::Molecule { ring, atom } => {
+                let mut m = Mesh::default();
+                for k in 0..6 {
+                    let a = std::f64::consts::TAU * k as f64 / 6.0;
+                    let c = DVec3::new(ring * a.cos(), ring * a.sin(), 0.0);
+                    m.append(&Mesh::sphere(atom, 16).translated(c));
+                }
+                let heavy = DVec3::new(ring * 1.9, 0.0, 0.0);
+                m.append(&Mesh::sphere(atom * 2.0, 20).translated(heavy));
+                m
+            }
         }
     }
 

@@ -69,6 +69,35 @@ pub enum Shape {
         /// Side lengths along local x, y, z.
         size: [f64; 3],
     },
+    /// A flat triangle plate with vertices `(0,0,0)`, `x` and `y` (Chaudhry–Cameron's rigid
+    /// triangle, scene B1), of the given thickness along local z.
+    Triangle {
+        /// Second vertex (local).
+        x: [f64; 3],
+        /// Third vertex (local).
+        y: [f64; 3],
+        /// Plate thickness.
+        thickness: f64,
+    },
+    /// An I-beam (scene C2): two flanges `flange` (x, y, z sizes) at `z = ±web/2`, joined by a
+    /// web of height `web` along local z and section `web_section` (x, y), centred.
+    IBeam {
+        /// Flange size along local x, y, z.
+        flange: [f64; 3],
+        /// Web height along local z.
+        web: f64,
+        /// Web section along local x, y.
+        #[serde(rename = "webSection")]
+        web_section: [f64; 2],
+    },
+    /// A benzene-like molecule (scene C3): six atoms on a ring in the local xy plane and one
+    /// heavy atom bonded to the first, along +x.
+    Molecule {
+        /// Ring radius.
+        ring: f64,
+        /// Radius of the ring atoms (the heavy atom is twice as large).
+        atom: f64,
+    },
 }
 
 /// A preset: control poses, default options and the object to draw.
@@ -151,7 +180,8 @@ fn cylinder5() -> Vec<Pose> {
     ]
 }
 
-/// All pose scenes A1–A11 (A4, the polygons, are in [`polygon_scenes`]), in `scenes.md` order.
+/// All pose scenes A1–A11 (A4, the polygons, are in [`polygon_scenes`]), then B1 and C1–C3 (the
+/// comparison papers' scenes), in `scenes.md` order.
 pub fn scenes() -> Vec<Scene> {
     let base = |id, label, figure, description, poses, scheme, shape| Scene {
         id,
@@ -327,7 +357,133 @@ pub fn scenes() -> Vec<Scene> {
                 BAR,
             )
         },
+        Scene {
+            closed: false,
+            levels: 5,
+            ..base(
+                "triangle7",
+                "B1",
+                "Chaudhry–Cameron Figs. 4–8",
+                "A rigid triangle sampled at 7 times of a tumbling motion: compare the rational C⁰ and C¹ motions (Methods view) with the screw schemes.",
+                triangle7(),
+                Scheme::FourPoint,
+                Shape::Triangle {
+                    x: [1.0, 0.0, 0.0],
+                    y: [0.3, 0.8, 0.0],
+                    thickness: 0.04,
+                },
+            )
+        },
+        Scene {
+            closed: false,
+            levels: 5,
+            ..base(
+                "rb_sphere7",
+                "C1",
+                "Ramamoorthi–Barr Figs. 1, 3–5",
+                "Seven orientations about a fixed centre: Ramamoorthi–Barr's quaternion spline (Methods view) against the screw schemes.",
+                quaternion_keys(&RB_SPHERE7).into_iter().map(|q| Pose::new(DVec3::ZERO, q)).collect(),
+                Scheme::Jarek,
+                Shape::Block {
+                    size: [1.6, 0.5, 0.25],
+                    base: false,
+                },
+            )
+        },
+        Scene {
+            closed: false,
+            levels: 5,
+            ..base(
+                "rb_ibeam7",
+                "C2",
+                "Ramamoorthi–Barr Fig. 6",
+                "An I-beam flips smoothly along a parabola: keyframe rotations use all four quaternion components.",
+                rb_ibeam7(),
+                Scheme::Jarek,
+                Shape::IBeam {
+                    flange: [1.2, 0.4, 0.15],
+                    web: 1.0,
+                    web_section: [0.15, 0.4],
+                },
+            )
+        },
+        Scene {
+            closed: false,
+            levels: 5,
+            ..base(
+                "rb_molecule4",
+                "C3",
+                "Ramamoorthi–Barr Fig. 7 (stand-in)",
+                "A molecule tumbles through four keyframes 95°–110° apart (synthetic stand-in for the paper's molecular-dynamics data).",
+                quaternion_keys(&RB_MOLECULE4).into_iter().map(|q| Pose::new(DVec3::ZERO, q)).collect(),
+                Scheme::Jarek,
+                Shape::Molecule {
+                    ring: 0.7,
+                    atom: 0.16,
+                },
+            )
+        },
     ]
+}
+
+/// Scene B1: the rigid motion `R(t) = Rot(axis (sin 2t, 0.5, cos t), 2.2t)`, `a(t) = (2t,
+/// 0.8 sin 3t, 0.5t²)` sampled at `t = 0, 0.2, …, 1.2` (the pose's origin is vertex `a`).
+fn triangle7() -> Vec<Pose> {
+    (0..7)
+        .map(|i| {
+            let t = 0.2 * i as f64;
+            let axis = DVec3::new((2.0 * t).sin(), 0.5, t.cos()).normalize();
+            let a = DVec3::new(2.0 * t, 0.8 * (3.0 * t).sin(), 0.5 * t * t);
+            Pose::new(a, DQuat::from_axis_angle(axis, 2.2 * t))
+        })
+        .collect()
+}
+
+/// Scene C1's keyframes `[w, x, y, z]` (quaternion-splines spec §8).
+const RB_SPHERE7: [[f64; 4]; 7] = [
+    [1.0, 0.0, 0.0, 0.0],
+    [0.8, 0.6, 0.0, 0.0],
+    [0.6, 0.48, 0.64, 0.0],
+    [0.0, 0.6, 0.8, 0.0],
+    [-0.6, 0.0, 0.8, 0.0],
+    [-0.8, -0.36, 0.48, 0.0],
+    [-0.6, -0.8, 0.0, 0.0],
+];
+
+/// Scene C3's keyframes `[w, x, y, z]` (100°, 110°, 95° steps).
+const RB_MOLECULE4: [[f64; 4]; 4] = [
+    [1.0, 0.0, 0.0, 0.0],
+    [0.642788, 0.541675, 0.541675, 0.0],
+    [0.054934, -0.003061, 0.996766, 0.058567],
+    [0.069242, 0.546219, 0.644468, 0.530576],
+];
+
+/// Unit quaternions from six-decimal `[w, x, y, z]` tables (normalised).
+fn quaternion_keys(keys: &[[f64; 4]]) -> Vec<DQuat> {
+    keys.iter()
+        .map(|&[w, x, y, z]| DQuat::from_xyzw(x, y, z, w).normalize())
+        .collect()
+}
+
+/// Scene C2: origin `(2t, 0, 4 − 0.45 (t−3)²)` and the spec's keyframe rotations, `t = 0..6`.
+fn rb_ibeam7() -> Vec<Pose> {
+    const Q: [[f64; 4]; 7] = [
+        [1.0, 0.0, 0.0, 0.0],
+        [0.887011, 0.442275, 0.132682, 0.0],
+        [0.667239, 0.439770, 0.600518, -0.027812],
+        [0.484342, 0.057554, 0.835811, 0.252034],
+        [0.515119, 0.025519, 0.533823, 0.670100],
+        [0.279926, 0.427214, 0.607723, 0.608114],
+        [-0.172827, 0.217600, 0.605166, 0.746026],
+    ];
+    quaternion_keys(&Q)
+        .into_iter()
+        .enumerate()
+        .map(|(i, q)| {
+            let t = i as f64;
+            Pose::new(DVec3::new(2.0 * t, 0.0, 4.0 - 0.45 * (t - 3.0).powi(2)), q)
+        })
+        .collect()
 }
 
 /// The scene with this id, if any.
@@ -486,6 +642,32 @@ mod tests {
         for (i, a) in all.iter().enumerate() {
             assert!(all[i + 1..].iter().all(|b| b.id != a.id));
         }
-        assert_eq!(all.len(), 10);
+        assert_eq!(all.len(), 14);
+    }
+
+    #[test]
+    fn comparison_scenes_match_the_spec_tables() {
+        // B1 (scenes.md): vertex a and q at t = 0.2 and t = 1.2, six decimals.
+        let b1 = scene("triangle7").unwrap();
+        assert!(close(
+            &b1.poses[1],
+            [0.4, 0.451714, 0.02],
+            [0.975897, 0.072814, 0.093490, 0.183254]
+        ));
+        assert!(close(
+            &b1.poses[6],
+            [2.4, -0.354016, 0.72],
+            [0.248175, 0.714976, 0.529249, 0.383555]
+        ));
+        // C2 keeps the negative w of its last key; its origin follows the parabola.
+        let c2 = scene("rb_ibeam7").unwrap();
+        assert!(close(
+            &c2.poses[6],
+            [12.0, 0.0, -0.05],
+            [-0.172827, 0.217600, 0.605166, 0.746026]
+        ));
+        for id in ["triangle7", "rb_sphere7", "rb_ibeam7", "rb_molecule4"] {
+            assert!(!scene(id).unwrap().closed, "{id} is an open sequence");
+        }
     }
 }

@@ -4,7 +4,8 @@
 //!   options, and the smooth motion it defines (poses, samples, kinematics, span screws).
 //! * Free functions: `screw`, `screwPoses`, `screwPairs`, `screwInfo`, `posesToMatrices`,
 //!   `scenes`, `limits`, `version`, `importMotionFile` (feature `files`; so is
-//!   `Motion.exportFile`).
+//!   `Motion.exportFile`), `methods` (feature `methods`: the comparison methods; see `Motion.methodSample`,
+//!   `compareMethods`, `quaternionSpline`).
 //!
 //! Bulk results are typed arrays with fixed layouts (see [`convert`]): 7 `f64` per pose
 //! (origin `x, y, z`, quaternion `w, x, y, z`), 16 `f32` per column-major 4×4 matrix, 16 `f64`
@@ -19,6 +20,8 @@ use wasm_bindgen::prelude::*;
 pub mod convert;
 #[cfg(feature = "files")]
 mod interop_api;
+#[cfg(feature = "methods")]
+mod methods_api;
 mod motion_api;
 pub mod options;
 mod scenes_api;
@@ -27,6 +30,8 @@ mod types;
 
 #[cfg(feature = "files")]
 pub use interop_api::import_motion_file_js;
+#[cfg(feature = "methods")]
+pub use methods_api::methods;
 pub use motion_api::MotionHandle;
 pub use scenes_api::scenes;
 pub use screw_api::{poses_to_matrices_js, screw, screw_info, screw_pairs, screw_poses};

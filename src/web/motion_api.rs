@@ -94,7 +94,7 @@ impl MotionHandle {
     }
 
     /// The document and subdivision options (for the other API modules: export, analysis).
-    #[cfg(feature = "files")]
+    #[cfg(any(feature = "files", feature = "methods"))]
     pub(crate) fn snapshot(&self) -> Result<(MotionDocument, Subdivision), JsError> {
         self.read(|s| (s.doc.clone(), s.subdivision))
     }

@@ -104,7 +104,11 @@ export type SceneId =
   | 'pip_morph5'
   | 'circle4'
   | 'bunny6'
-  | 'helix_open';
+  | 'helix_open'
+  | 'triangle7'
+  | 'rb_sphere7'
+  | 'rb_ibeam7'
+  | 'rb_molecule4';
 
 /** The object drawn at each pose of a scene (scene units, local frame). */
 export type Shape =
@@ -115,7 +119,10 @@ export type Shape =
   | { kind: 'sphere'; radius: number }
   | { kind: 'starPrism'; outer: number; inner: number; thickness: number }
   | { kind: 'pendulum'; rod: number; bob: number }
-  | { kind: 'wedge'; size: Vec3 };
+  | { kind: 'wedge'; size: Vec3 }
+  | { kind: 'triangle'; x: Vec3; y: Vec3; thickness: number }
+  | { kind: 'iBeam'; flange: Vec3; web: number; webSection: [number, number] }
+  | { kind: 'molecule'; ring: number; atom: number };
 
 /** A scene preset as listed by `scenes()`. */
 export interface SceneInfo {

@@ -127,7 +127,7 @@ describe('module', () => {
     const union = dts.match(/export type SceneId =([^;]*);/)[1];
     const typed = [...union.matchAll(/'([^']+)'/g)].map((x) => x[1]);
     assert.deepEqual(list.map((s) => s.id), typed, 'SceneId in the .d.ts is out of date');
-    const kinds = ['bar', 'block', 'cylinder', 'cone', 'sphere', 'starPrism', 'pendulum', 'wedge'];
+    const kinds = ['bar', 'block', 'cylinder', 'cone', 'sphere', 'starPrism', 'pendulum', 'wedge', 'triangle', 'iBeam', 'molecule'];
     for (const s of list) {
       for (const key of ['id', 'label', 'figure', 'description']) assert.equal(typeof s[key], 'string');
       assert.equal(typeof s.closed, 'boolean');

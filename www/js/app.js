@@ -20,7 +20,10 @@ const MAX_SAVED_MESH = 1 << 20;
 /** Scale of the control-pose and animated objects relative to the strobe (avoids z-fighting). */
 const CONTROL_SCALE = 1.01;
 /** Strobe count when a preset loads: fewer copies where the object is bulky (readable, as in the paper). */
-const PRESET_STROBE = { spinning_block: 14, pendulum: 18, cylinder5: 36, pip_morph5: 36, circle4: 40 };
+const PRESET_STROBE = {
+  spinning_block: 14, pendulum: 18, cylinder5: 36, pip_morph5: 36, circle4: 40,
+  triangle7: 40, rb_sphere7: 20, rb_ibeam7: 30, rb_molecule4: 24,
+};
 const DEFAULT_STROBE = 64;
 /** Pose selected when a preset loads (scenes.md A3: "drag or rotate the top-left pose"). */
 const PRESELECT = { l_cycle_edit: 4 };
@@ -51,6 +54,9 @@ function shapePoints(shape) {
     case 'starPrism': return [[0, 0, 0], [0, shape.outer, 0]];
     case 'pendulum': return [[0, 0, 0], [0, 0, shape.rod]];
     case 'wedge': return [[0, 0, 0], [shape.size[0], 0, 0]];
+    case 'triangle': return [[0, 0, 0], shape.x, shape.y];
+    case 'iBeam': return [[0, 0, 0], [shape.flange[0] / 2, 0, (shape.web + shape.flange[2]) / 2]];
+    case 'molecule': return [[0, 0, 0], [shape.ring * 1.9, 0, 0]];
     default: return [[0, 0, 0]];
   }
 }
@@ -296,8 +302,14 @@ export class App {
   /** Opens analysis view `id` in the dock ('' or null closes it); returns its instance. */
   openView(id) {
     let inst = null;
+    const wasOpen = !!this.dock.active;
     try {
       inst = this.dock.open(id || null);
+      // The 3-D view changes size when the dock opens or closes (wide screens): re-frame.
+      if (wasOpen !== !!this.dock.active) {
+        this.sizeCache = null;
+        this.frameAll();
+      }
       this.view.dock = id || '';
     } catch (e) {
       this.view.dock = '';

@@ -1,2 +1,4 @@
 // The analysis views of the dock, in tab order (see dock.js for the view contract).
-export const VIEWS = [];
+import methods from './methods.js';
+
+export const VIEWS = [methods];

@@ -1,0 +1,264 @@
+// Methods view: up to three motion methods of the literature overlaid on the same control poses
+// (trajectories of the body points in distinct colours), their metrics side by side, and for
+// Ramamoorthi–Barr the variable frames and the Euler–Lagrange error before/after optimisation.
+import { methods as listMethods } from '../../pkg/screwbender.js';
+import { LAYER, Segments, track, poseOf } from '../scene.js';
+import { hexLinear, poseMatrix, add, scale } from '../math.js';
+import { lineChart, fmt, el } from '../plot.js';
+
+/** Overlay colours of the three method slots. */
+const SLOT_COLORS = ['#0072b2', '#d55e00', '#009e73'];
+/** Samples per control span of an overlaid method. */
+const SAMPLES_PER_SPAN = 48;
+/** Methods shown first for a preset (the paper each scene comes from), else the default. */
+const PRESET_METHODS = {
+  triangle7: ['cc0', 'cc1', 'fourpoint'],
+  rb_sphere7: ['rb', 'slerp', 'jarek'],
+  rb_ibeam7: ['rb', 'decoupled', 'jarek'],
+  rb_molecule4: ['rb', 'kks', 'jarek'],
+};
+const DEFAULT_METHODS = ['fourpoint', 'decoupled', 'slerp'];
+
+/** The metrics rows of the table: [label, tooltip, value of a MetricsRow]. */
+const METRICS = [
+  ['velocity jump', 'Largest jump of a body point’s velocity at the knots', (r) => r.velocity_jump],
+  ['angular velocity jump', 'Largest jump of the angular velocity at the knots (rad per unit)', (r) => r.angular_velocity_jump],
+  ['acceleration jump', 'Largest jump of a body point’s acceleration at the knots', (r) => r.acceleration_jump],
+  ['angular accel. jump', 'Largest jump of the angular acceleration at the knots', (r) => r.angular_acceleration_jump],
+  ['∫|a|² (first point)', 'Integrated squared linear acceleration of the first body point', (r) => r.acceleration_energy[0]],
+  ['∫|a|² (second point)', 'Integrated squared linear acceleration of the second body point', (r) => r.acceleration_energy[1]],
+  ['∫|α|²', 'Integrated squared angular acceleration (4× the covariant acceleration)', (r) => r.angular_acceleration_energy],
+  ['interpolation error', 'Largest distance between a control pose and the motion at its knot', (r) => r.interpolation_error],
+  ['frame dependence', 'Trajectory change when the local frame moves (0: frame-independent)', (r) => r.frame_dependence],
+  ['line error', 'Deviation from an exact straight translation sampled by the poses', (r) => r.line_error],
+  ['circle error', 'Deviation from an exact rotation about a fixed axis', (r) => r.circle_error],
+  ['helix error', 'Deviation from an exact screw (helical) motion', (r) => r.helix_error],
+];
+
+class MethodsView {
+  constructor(app, root) {
+    this.app = app;
+    this.all = listMethods();
+    this.chosen = null;
+    this.scene = null;
+    root.append(
+      el('p', { class: 'note' },
+        'Overlay up to three methods on the same control poses: their body-point paths are drawn in the colours below. ',
+        'Metrics are measured on the control poses as in ', el('code', {}, 'screwbender compare'), '.'),
+    );
+    this.pickers = el('div', { class: 'row' });
+    root.append(this.pickers);
+    this.selects = SLOT_COLORS.map((c, k) => {
+      const sel = el('select', { 'aria-label': `Method ${k + 1}`, onchange: () => this.pick() });
+      sel.append(el('option', { value: '' }, '— none —'));
+      for (const m of this.all) sel.append(el('option', { value: m.id }, m.title));
+      this.pickers.append(el('label', {}, el('span', { class: 'swatch', style: `background:${c}` }), sel));
+      return sel;
+    });
+    this.status = el('div', { class: 'note' });
+    this.table = el('table', { class: 'metrics' });
+    root.append(this.status, this.table);
+    this.rbBox = el('div');
+    root.append(this.rbBox);
+  }
+
+  /** The selected method ids (in slot order, empty slots left out). */
+  get methods() {
+    return this.selects.map((s) => s.value).filter(Boolean);
+  }
+
+  pick() {
+    this.chosen = this.selects.map((s) => s.value);
+    this.update('edit');
+  }
+
+  /** Selects methods (tests and presets): an array of up to three ids. */
+  select(ids) {
+    this.chosen = [0, 1, 2].map((k) => ids[k] ?? '');
+    this.update('edit');
+  }
+
+  show(on) {
+    if (!on) this.app.renderer.setLines(LAYER.methods, new Float32Array(0), false);
+  }
+
+  applyDefaults() {
+    const scene = this.app.view.scene;
+    if (this.chosen && this.scene === scene) return;
+    this.scene = scene;
+    this.chosen = [...(PRESET_METHODS[scene] ?? DEFAULT_METHODS)];
+  }
+
+  update(reason) {
+    this.applyDefaults();
+    const m = this.app.motion;
+    // Methods that do not apply to a cycle are disabled (cc1).
+    this.selects.forEach((s, k) => {
+      for (const o of s.options) {
+        const info = this.all.find((x) => x.id === o.value);
+        o.disabled = !!info && m.closed && !info.supportsClosed;
+      }
+      s.value = this.chosen[k] ?? '';
+      if (s.selectedOptions[0]?.disabled) s.value = '';
+    });
+    // During a drag the variable frames of the last fit would be stale.
+    if (reason === 'drag') this.rbTriads = null;
+    this.drawOverlay();
+    if (reason !== 'drag') {
+      this.drawTable();
+      this.drawRb();
+    }
+  }
+
+  drawOverlay() {
+    const app = this.app;
+    const m = app.motion;
+    const { dpr } = app.pixelSize();
+    const seg = new Segments();
+    const errors = [];
+    const spans = m.closed ? m.poseCount : m.poseCount - 1;
+    const count = Math.min(8192, SAMPLES_PER_SPAN * spans + (m.closed ? 0 : 1));
+    this.selects.forEach((s, k) => {
+      if (!s.value) return;
+      try {
+        const arr = m.methodSample(s.value, count);
+        const color = hexLinear(SLOT_COLORS[k]);
+        for (const p of app.bodyPoints()) seg.polyline(track(arr, p), m.closed, color, 2.4 * dpr, 0.95, 0.003);
+      } catch (e) {
+        errors.push(`${s.value}: ${e.message}`);
+      }
+    });
+    // Ramamoorthi–Barr's variable frames (drawRb) ride on the same layer.
+    const base = seg.array();
+    const triads = this.rbTriads ?? new Float32Array(0);
+    const all = new Float32Array(base.length + triads.length);
+    all.set(base);
+    all.set(triads, base.length);
+    app.renderer.setLines(LAYER.methods, all, false);
+    this.overlayErrors = errors;
+  }
+
+  drawTable() {
+    const m = this.app.motion;
+    const ids = this.methods;
+    this.table.replaceChildren();
+    if (ids.length === 0) {
+      this.status.textContent = 'Choose a method above.';
+      return;
+    }
+    const t0 = performance.now();
+    let table;
+    try {
+      table = m.compareMethods(ids, this.app.bodyPoints().slice(0, 2));
+    } catch (e) {
+      this.status.textContent = `Metrics unavailable: ${e.message}`;
+      return;
+    }
+    const ms = performance.now() - t0;
+    const head = el('tr', {}, el('th', {}, 'metric'));
+    ids.forEach((id) => {
+      const k = this.selects.findIndex((s) => s.value === id);
+      head.append(el('th', { title: this.all.find((x) => x.id === id)?.title ?? id }, el('span', { class: 'swatch', style: `background:${SLOT_COLORS[k]}` }), id));
+    });
+    this.table.append(head);
+    for (const [label, tip, get] of METRICS) {
+      const row = el('tr', {}, el('td', { title: tip }, label));
+      for (const r of table.rows) row.append(el('td', {}, fmt(get(r))));
+      this.table.append(row);
+    }
+    const notes = table.rows.flatMap((r) => r.notes.map((n) => `${r.method}: ${n}`));
+    const derivs = table.rows.map((r) => `${r.method}: ${r.derivatives}`).join('; ');
+    this.status.textContent =
+      `${table.pose_count} control poses, ${table.closed ? 'cycle' : 'open'}; computed in ${ms.toFixed(0)} ms. Derivatives: ${derivs}.` +
+      (notes.length ? ` Notes: ${notes.join(' ')}` : '') +
+      (this.overlayErrors.length ? ` Not drawn: ${this.overlayErrors.join(' ')}` : '');
+    this.lastTable = table;
+  }
+
+  /** Ramamoorthi–Barr: variable frames (as ticks on the overlay) and the EL error plot. */
+  drawRb() {
+    const app = this.app;
+    if (!this.methods.includes('rb')) {
+      this.rbBox.replaceChildren();
+      this.chart?.destroy();
+      this.chart = null;
+      this.rb = null;
+      this.rbTriads = null;
+      return;
+    }
+    let r;
+    const t0 = performance.now();
+    try {
+      r = app.motion.quaternionSpline({ variableFrames: 4 });
+    } catch (e) {
+      this.rbBox.replaceChildren(el('p', { class: 'note' }, `Ramamoorthi–Barr: ${e.message}`));
+      return;
+    }
+    const ms = performance.now() - t0;
+    this.rb = r;
+    if (!this.chart) {
+      this.rbBox.replaceChildren();
+      this.rbInfo = el('p', { class: 'note' });
+      this.rbBox.append(el('h4', {}, 'Ramamoorthi–Barr: Euler–Lagrange error'), this.rbInfo);
+      this.chart = lineChart(this.rbBox, {
+        title: '|EL(t)| before and after optimisation (log scale)',
+        x: 't (keyframe i at t = i)',
+        log: true,
+        series: [
+          { label: 'initial spline', color: '#999999' },
+          { label: 'optimised', color: SLOT_COLORS[this.selects.findIndex((s) => s.value === 'rb')] ?? '#0072b2', width: 2 },
+        ],
+      });
+      this.stageTable = el('table');
+      this.rbBox.append(this.stageTable);
+    }
+    // Log axis: zeros (exact keyframes) are lifted to the smallest positive value.
+    const floor = (a) => {
+      const pos = Array.from(a).filter((v) => v > 0);
+      const min = pos.length ? Math.min(...pos) : 1e-12;
+      return Array.from(a, (v) => Math.max(v, min));
+    };
+    this.chart.set(r.t, [floor(r.elBefore), floor(r.elAfter)], [...r.keyTimes, ...r.frameTimes]);
+    this.rbInfo.textContent =
+      `${r.frameTimes.length} variable frames at t = ${r.frameTimes.map((t) => t.toFixed(2)).join(', ') || '–'} ` +
+      `(dashed lines: keyframes and frames). max ||q|−1|: ${fmt(r.unitDeviationBefore)} → ${fmt(r.unitDeviationAfter)}. ` +
+      `Fit in ${ms.toFixed(0)} ms (twice: before and after).`;
+    this.stageTable.replaceChildren(el('tr', {}, el('th', {}, 'stage'), el('th', {}, 'variable frames'), el('th', {}, 'inserted at'), el('th', {}, 'objective'), el('th', {}, 'iterations')));
+    r.stages.forEach((s, k) => {
+      const name = k === 0 ? 'initial' : k === 1 ? 'keyframe velocities' : `+${s.variable_frames} frame(s)`;
+      this.stageTable.append(el('tr', {}, el('td', {}, name), el('td', {}, s.variable_frames), el('td', {}, s.inserted_at == null ? '–' : s.inserted_at.toFixed(2)), el('td', {}, fmt(s.objective, 5)), el('td', {}, s.iterations)));
+    });
+    // The variable frames in 3-D: small rotation triads of the RB motion at the frame times.
+    const { dpr } = app.pixelSize();
+    const count = 8 * (app.motion.closed ? app.motion.poseCount : app.motion.poseCount - 1) * 16 + 1;
+    let arr;
+    try {
+      arr = app.motion.methodSample('rb', count);
+    } catch {
+      return;
+    }
+    const seg = new Segments();
+    const [a, b] = app.motion.domain();
+    const n = arr.length / 7;
+    const mat = new Float32Array(16);
+    for (const t of r.frameTimes) {
+      const k = Math.round(((t - a) / (b - a)) * (app.motion.closed ? n : n - 1)) % n;
+      const { origin, rotation } = poseOf(arr, k);
+      poseMatrix(origin, rotation, 1, mat);
+      ['#e03c3c', '#3aa845', '#3a6fe0'].forEach((c, ax) => {
+        const dir = [mat[ax * 4], mat[ax * 4 + 1], mat[ax * 4 + 2]];
+        seg.push(origin, add(origin, scale(dir, 0.45)), hexLinear(c), 3 * dpr, 1, 0.01);
+      });
+    }
+    this.rbTriads = seg.array().slice();
+    this.drawOverlay();
+  }
+}
+
+export default {
+  id: 'methods',
+  title: 'Methods',
+  hint: 'Compare ScrewBender with Chaudhry–Cameron, Ramamoorthi–Barr and classical methods',
+  live: true,
+  create: (app, root) => new MethodsView(app, root),
+};
