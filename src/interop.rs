@@ -127,27 +127,7 @@ pub fn export_motion(
     let closed = doc.closed;
     let n = doc.poses.len();
     let coarse_spans = if closed { n } else { n.saturating_sub(1) };
-    let timing = match &settings.times {
-        Some(t) => {
-            if t.len() != coarse_spans + 1 {
-                return Err(Error::Unsupported {
-                    at: "times".into(),
-                    reason: format!(
-                        "{} times given, expected {} ({n} control poses{})",
-                        t.len(),
-                        coarse_spans + 1,
-                        if closed {
-                            ", plus the time pose 0 is reached again"
-                        } else {
-                            ""
-                        }
-                    ),
-                });
-            }
-            Timing::new(t.clone(), closed).map_err(|e| e.within("times"))?
-        }
-        None => Timing::uniform(n, closed),
-    };
+    let timing = Timing::for_poses(settings.times.clone(), n, closed)?;
     let (motion, polyscrew): (Box<dyn Motion>, Polyscrew) = if sub.levels == 0 {
         let p = Polyscrew::new(doc.poses.clone(), closed)?;
         (Box::new(p.clone()), p)

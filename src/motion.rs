@@ -21,6 +21,22 @@ pub struct Kinematics {
     pub angular_acceleration: DVec3,
 }
 
+impl Kinematics {
+    /// The same kinematics per unit of time under a retiming `u = p(t)` with `u' = du/dt` and
+    /// `u'' = d²u/dt²` (chain rule: `v_t = v_u u'`, `a_t = a_u u'² + v_u u''`, likewise for `ω`
+    /// and `α`); see [`crate::Timing::parameter_derivatives`].
+    pub fn retimed(&self, du: f64, ddu: f64) -> Kinematics {
+        Kinematics {
+            position: self.position,
+            velocity: self.velocity * du,
+            acceleration: self.acceleration * (du * du) + self.velocity * ddu,
+            angular_velocity: self.angular_velocity * du,
+            angular_acceleration: self.angular_acceleration * (du * du)
+                + self.angular_velocity * ddu,
+        }
+    }
+}
+
 /// A rigid motion: a pose for every parameter value in its domain.
 ///
 /// Parameters are in *coarse units*: control pose `i` sits at `u = i` unless the method says

@@ -48,6 +48,31 @@ impl Timing {
         })
     }
 
+    /// The timing of a motion with `poses` control poses: through `times` when given (`poses`
+    /// times for an open motion, `poses + 1` for a cycle: the last is when pose 0 is reached
+    /// again), else uniform. Errors name `times` (wrong count) or `times[i]`.
+    pub fn for_poses(times: Option<Vec<f64>>, poses: usize, closed: bool) -> Result<Timing, Error> {
+        let Some(times) = times else {
+            return Ok(Timing::uniform(poses, closed));
+        };
+        let want = poses + usize::from(closed);
+        if times.len() != want {
+            return Err(Error::Unsupported {
+                at: "times".into(),
+                reason: format!(
+                    "{} times given, expected {want} ({poses} control poses{})",
+                    times.len(),
+                    if closed {
+                        ", plus the time pose 0 is reached again"
+                    } else {
+                        ""
+                    }
+                ),
+            });
+        }
+        Timing::new(times, closed)
+    }
+
     /// The knot times.
     pub fn knots(&self) -> &[f64] {
         &self.knots
@@ -66,14 +91,22 @@ impl Timing {
     /// A cycle wraps `t` into one period (and `u` into `[0, n)`); an open timing holds the end
     /// values outside its interval (the object rests at the end poses).
     pub fn parameter(&self, t: f64) -> (f64, f64) {
+        let (u, du, _) = self.parameter_derivatives(t);
+        (u, du)
+    }
+
+    /// `u = p(t)`, `du/dt` and `d²u/dt²` at time `t` (see [`Timing::parameter`]). With them a
+    /// body point's velocity in time is `v_u u'` and its acceleration `a_u u'² + v_u u''`
+    /// ([`crate::Kinematics::retimed`]).
+    pub fn parameter_derivatives(&self, t: f64) -> (f64, f64, f64) {
         let (t0, t1) = self.duration();
         let last = self.knots.len() - 1;
         let t = if self.closed {
             t0 + (t - t0).rem_euclid(t1 - t0)
         } else if t < t0 {
-            return (0.0, 0.0);
+            return (0.0, 0.0, 0.0);
         } else if t > t1 {
-            return (last as f64, 0.0);
+            return (last as f64, 0.0, 0.0);
         } else {
             t
         };
@@ -94,12 +127,17 @@ impl Timing {
             + (-6.0 * s2 + 6.0 * s) * p1
             + (3.0 * s2 - 2.0 * s) * m1)
             / h;
+        let ddu = ((12.0 * s - 6.0) * p0
+            + (6.0 * s - 4.0) * m0
+            + (-12.0 * s + 6.0) * p1
+            + (6.0 * s - 2.0) * m1)
+            / (h * h);
         let u = if self.closed {
             u.rem_euclid(last as f64)
         } else {
             u
         };
-        (u, du)
+        (u, du, ddu)
     }
 }
 
@@ -169,6 +207,23 @@ fn monotone_slopes(knots: &[f64], closed: bool) -> Vec<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn second_derivative_matches_differences_of_the_rate() {
+        let t = Timing::new(vec![0.0, 0.5, 2.0, 2.4, 4.0], true).unwrap();
+        for k in 1..80 {
+            let x = 0.05 * k as f64 + 0.013;
+            let h = 1e-6;
+            let (_, d0, dd) = t.parameter_derivatives(x);
+            let (_, dm, _) = t.parameter_derivatives(x - h);
+            let (_, dp, _) = t.parameter_derivatives(x + h);
+            assert!((d0 - t.parameter(x).1).abs() < 1e-15);
+            assert!(
+                ((dp - dm) / (2.0 * h) - dd).abs() < 1e-5 * (1.0 + dd.abs()),
+                "t = {x}"
+            );
+        }
+    }
 
     #[test]
     fn uniform_is_the_identity() {

@@ -12,9 +12,12 @@ use wasm_bindgen::prelude::*;
 use super::convert::{count, is_absent, plain, poses_from_fn, push_kinematics, to_js};
 use super::MotionHandle;
 use crate::methods::{
-    compare_methods, fit_quaternion_spline, kinematics_at, Method, MetricsOptions, RbOptions, Side,
+    compare_methods, fit_quaternion_spline, kinematics_at, motion_metrics, Derivatives, Method,
+    MetricsOptions, RbOptions, Side,
 };
-use crate::{Error, Motion, MotionDocument, Pose, MAX_REFINED_POSES};
+use crate::{
+    Error, Motion, MotionDocument, Pose, Scheme, ScrewBender, Subdivision, MAX_REFINED_POSES,
+};
 
 #[wasm_bindgen(typescript_custom_section)]
 const TS_METHODS: &'static str = r#"
@@ -277,6 +280,49 @@ impl MotionHandle {
         }
         let table = compare_methods(&doc.poses, doc.closed, &list, &options)?;
         to_js(&table)
+    }
+
+    /// The metrics of this motion itself (its scheme, rules and levels): velocity and
+    /// acceleration jumps at the knots and the integrated squared accelerations, measured by
+    /// differences of the refined poses (step: the refined span), and the interpolation error;
+    /// plus `fourPointGap`, the largest distance between the 4-point motion at the same levels
+    /// and the control poses (0 up to rounding: 4-point interpolates).
+    #[wasm_bindgen(js_name = motionMetrics, unchecked_return_type = "{ row: MetricsRow; fourPointGap: number }")]
+    pub fn motion_metrics_js(
+        &self,
+        #[wasm_bindgen(js_name = bodyPoints, unchecked_optional_param_type = "Vec3[]")]
+        points: JsValue,
+    ) -> Result<JsValue, JsError> {
+        let mut options = MetricsOptions::default();
+        if let Some(p) = body_points(&points)? {
+            options.body_points = p;
+        }
+        let (doc, sub) = self.snapshot()?;
+        let h = 0.5f64.powi(sub.levels as i32);
+        let row = self.with_refined(|m| {
+            motion_metrics("current", m, &doc.poses, Derivatives::Sampled(h), &options)
+        })?;
+        let four = Subdivision::new(Scheme::FourPoint, sub.rules, sub.levels);
+        let four = ScrewBender::new(doc.poses.clone(), doc.closed, four)?;
+        let gap = doc
+            .poses
+            .iter()
+            .enumerate()
+            .map(|(i, p)| {
+                let q = four.pose_at(i as f64);
+                p.origin.distance(q.origin) + p.rotation.angle_between(q.rotation)
+            })
+            .fold(0.0, f64::max);
+        #[derive(Serialize)]
+        #[serde(rename_all = "camelCase")]
+        struct Out {
+            row: crate::methods::MetricsRow,
+            four_point_gap: f64,
+        }
+        to_js(&Out {
+            row,
+            four_point_gap: gap,
+        })
     }
 
     /// The Ramamoorthi–Barr construction on this motion's rotations (keyframe `i` at `t = i`,

@@ -17,6 +17,7 @@
 
 use wasm_bindgen::prelude::*;
 
+mod analysis_api;
 pub mod convert;
 #[cfg(feature = "files")]
 mod interop_api;
@@ -28,6 +29,7 @@ mod scenes_api;
 mod screw_api;
 mod types;
 
+pub use analysis_api::timing_map;
 #[cfg(feature = "files")]
 pub use interop_api::import_motion_file_js;
 #[cfg(feature = "methods")]

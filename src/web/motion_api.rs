@@ -94,7 +94,6 @@ impl MotionHandle {
     }
 
     /// The document and subdivision options (for the other API modules: export, analysis).
-    #[cfg(any(feature = "files", feature = "methods"))]
     pub(crate) fn snapshot(&self) -> Result<(MotionDocument, Subdivision), JsError> {
         self.read(|s| (s.doc.clone(), s.subdivision))
     }
@@ -117,7 +116,7 @@ impl MotionHandle {
 
     /// Runs `f` on the refined motion, subdividing first if needed. `f` must not call into
     /// JavaScript.
-    fn with_refined<R>(&self, f: impl FnOnce(&ScrewBender) -> R) -> Result<R, JsError> {
+    pub(crate) fn with_refined<R>(&self, f: impl FnOnce(&ScrewBender) -> R) -> Result<R, JsError> {
         let mut inner = self.inner.try_borrow_mut().map_err(|_| busy())?;
         if inner.refined.is_none() {
             let s = &inner.state;

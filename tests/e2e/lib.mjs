@@ -103,6 +103,18 @@ export async function openPage(context, url, backend, { path = '' } = {}) {
   return { page, problems };
 }
 
+/** Drags with real mouse events from `from` by (dx, dy) in `steps` moves; `during` runs mid-drag. */
+export async function mouseDrag(page, from, dx, dy, { steps = 8, during } = {}) {
+  await page.mouse.move(from.x, from.y);
+  await page.mouse.down();
+  for (let k = 1; k <= steps; k++) {
+    await page.mouse.move(from.x + (dx * k) / steps, from.y + (dy * k) / steps);
+    if (k === Math.ceil(steps / 2) && during) await during();
+  }
+  await page.mouse.up();
+  await waitFrames(page, 1);
+}
+
 /** Waits until at least `n` more frames were drawn. */
 export async function waitFrames(page, n = 2) {
   const start = await page.evaluate(() => {

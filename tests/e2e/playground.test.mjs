@@ -9,7 +9,7 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { openPage, waitFrames, canvasStats, startPlayground, ROOT, BACKEND, EXPECTED_BACKEND as EXPECTED } from './lib.mjs';
+import { openPage, waitFrames, canvasStats, mouseDrag, startPlayground, ROOT, BACKEND, EXPECTED_BACKEND as EXPECTED } from './lib.mjs';
 
 const ARTIFACTS = path.join(ROOT, 'artifacts', `e2e-${BACKEND}`);
 const VIEWPORT = { width: 1280, height: 800 };
@@ -36,17 +36,7 @@ const poses = () => sb(() => Array.from(window.screwbender.poses()));
 const refined = () => sb(() => Array.from(window.screwbender.refined()));
 const maxDiff = (a, b) => Math.max(...a.map((x, i) => Math.abs(x - b[i])));
 
-/** Drags with real mouse events from `from` by (dx, dy) in `steps` moves; `during` runs mid-drag. */
-async function drag(from, dx, dy, { steps = 8, during } = {}) {
-  await page.mouse.move(from.x, from.y);
-  await page.mouse.down();
-  for (let k = 1; k <= steps; k++) {
-    await page.mouse.move(from.x + (dx * k) / steps, from.y + (dy * k) / steps);
-    if (k === Math.ceil(steps / 2) && during) await during();
-  }
-  await page.mouse.up();
-  await waitFrames(page, 1);
-}
+const drag = (from, dx, dy, opts) => mouseDrag(page, from, dx, dy, opts);
 
 /** Opens the lil-gui "File" folder (whatever state an earlier test left it in). */
 async function openFileFolder() {

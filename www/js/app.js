@@ -89,6 +89,8 @@ export class App {
       snap: false,
       /** The open analysis view ('' = dock closed). */
       dock: '',
+      /** Control-pose times in seconds (the Timing view), or null for one second per span. */
+      times: null,
     };
     this.anim = { playing: false, u: 0, speed: 1, loop: true, visible: false };
     /** The imported mesh: {kind: 'obj', data: text} or {kind: 'gltf', data: base64}. */
@@ -229,6 +231,8 @@ export class App {
       if (k in v && typeof v[k] === typeof this.view[k]) this.view[k] = v[k];
     }
     this.view.strobe = Math.max(1, Math.min(MAX_STROBE, Math.round(this.view.strobe)));
+    const t = this.view.times;
+    if (t !== null && !(Array.isArray(t) && t.length <= 1e5 && t.every(Number.isFinite))) this.view.times = null;
     if (this.view.object === 'obj' && !this.imported) this.view.object = 'scene';
     this.selected = Number.isInteger(s.selected) && s.selected < motion.poseCount ? s.selected : -1;
     this.mode = s.mode === 'rotate' ? 'rotate' : 'translate';
@@ -756,9 +760,14 @@ export class App {
     return true;
   }
 
-  /** Control-pose times in seconds for export and plots (null: one second per span). */
+  /**
+   * Control-pose times in seconds for export and plots (null: one second per span): the timing
+   * table's times while they match the pose count (an insert or delete returns to uniform).
+   */
   times() {
-    return null;
+    const t = this.view.times;
+    const want = this.motion.poseCount + (this.motion.closed ? 1 : 0);
+    return Array.isArray(t) && t.length === want ? t : null;
   }
 
   exportJson() {
@@ -1086,6 +1095,7 @@ export class App {
       if (!document.getElementById('help').hidden) this.ui.toggleHelp(false);
       else this.select(-1);
     } else if (k === '?' || k === 'h') this.ui.toggleHelp();
+    else if (k === 'v' || k === 'V') document.getElementById('t-dock').click();
     else handled = false;
     if (handled) e.preventDefault();
   }

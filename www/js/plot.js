@@ -6,10 +6,11 @@ export const PALETTE = ['#0072b2', '#d55e00', '#009e73', '#cc79a7', '#e69f00', '
 
 /**
  * A chart in `parent`: `series` = [{label, color, width?, dash?}], `x` the x-axis label.
- * `marks` (x values, e.g. control-pose times) are drawn as thin vertical lines.
- * Returns {set(x, ys, marks?), resize(width), destroy(), plot}.
+ * `marks` (x values, e.g. control-pose times) are drawn as thin vertical lines; `legend: false`
+ * leaves the legend to the caller (one legend for several charts).
+ * Returns {set(x, ys, marks?), setTitle(text), resize(width), destroy(), plot}.
  */
-export function lineChart(parent, { title, x = 'u', series, height = 150, log = false }) {
+export function lineChart(parent, { title, x = 'u', series, height = 150, log = false, legend = true }) {
   const box = document.createElement('div');
   box.className = 'chart';
   parent.append(box);
@@ -19,7 +20,7 @@ export function lineChart(parent, { title, x = 'u', series, height = 150, log = 
     width: Math.max(200, parent.clientWidth || 480),
     height,
     scales: { x: { time: false }, y: log ? { distr: 3 } : {} },
-    legend: { live: false },
+    legend: { show: legend, live: false },
     cursor: { drag: { x: true, y: false } },
     axes: [
       { label: x, size: 34, labelSize: 14, font: '11px system-ui', labelFont: '11px system-ui' },
@@ -62,6 +63,10 @@ export function lineChart(parent, { title, x = 'u', series, height = 150, log = 
     set(xs, ys, newMarks = marks) {
       marks = newMarks;
       plot.setData([Array.from(xs), ...ys.map((y) => Array.from(y))]);
+    },
+    setTitle(text) {
+      const t = plot.root.querySelector('.u-title');
+      if (t) t.textContent = text;
     },
     resize(width) {
       plot.setSize({ width: Math.max(200, width), height });

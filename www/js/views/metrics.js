@@ -1,0 +1,58 @@
+// Metrics view: smoothness and fidelity numbers of the current motion (its scheme, rules and
+// levels), measured on the refined poses, for the body points of the object.
+import { el, fmt } from '../plot.js';
+
+const ROWS = [
+  ['max velocity jump', 'Largest jump of a body point’s velocity at the knots (differences of refined poses)', (r) => r.velocity_jump],
+  ['max angular velocity jump', 'Largest jump of the angular velocity at the knots', (r) => r.angular_velocity_jump],
+  ['max acceleration jump', 'Largest jump of a body point’s acceleration at the knots', (r) => r.acceleration_jump],
+  ['max angular acceleration jump', 'Largest jump of the angular acceleration at the knots', (r) => r.angular_acceleration_jump],
+  ['∫ |a|² du (each body point)', 'Integrated squared linear acceleration', (r) => r.acceleration_energy.map((v) => fmt(v)).join(' / ')],
+  ['∫ |α|² du', 'Integrated squared angular acceleration', (r) => r.angular_acceleration_energy],
+  ['distance to control poses', 'Largest pose distance (origin + angle) between control pose i and the motion at u = i', (r) => r.interpolation_error],
+];
+
+class MetricsView {
+  constructor(app, root) {
+    this.app = app;
+    root.append(el('p', { class: 'note' },
+      'Measured on the current motion by differences of its refined poses (step: one refined span), at the control-pose knots. ',
+      'Jumps shrink towards 0 as levels increase for a C¹ (velocity) or C² (acceleration) limit.'));
+    this.caption = el('div', { class: 'note' });
+    this.table = el('table');
+    root.append(this.caption, this.table);
+  }
+
+  show() {}
+
+  update() {
+    const app = this.app;
+    const m = app.motion;
+    const points = app.bodyPoints().slice(0, 4);
+    const t0 = performance.now();
+    const { row, fourPointGap } = m.motionMetrics(points);
+    const ms = performance.now() - t0;
+    const o = m.options();
+    this.caption.textContent =
+      `${o.scheme}${o.scheme === 'j' ? ` (s = ${o.j})` : ''}, ${o.rules} rules, ${o.levels} levels; body points ` +
+      `${points.map((p) => `(${p.map((v) => +v.toFixed(3)).join(', ')})`).join(', ')}; ${ms.toFixed(0)} ms.`;
+    const rows = [el('tr', {}, el('th', {}, 'metric'), el('th', {}, 'value'))];
+    for (const [label, tip, get] of ROWS) {
+      const v = get(row);
+      rows.push(el('tr', {}, el('td', { title: tip }, label), el('td', {}, typeof v === 'string' ? v : fmt(v))));
+    }
+    rows.push(el('tr', {},
+      el('td', { title: 'The 4-point scheme interpolates: this is 0 up to rounding, by construction' }, 'max distance 4-point curve ↔ control poses'),
+      el('td', {}, fmt(fourPointGap))));
+    this.table.replaceChildren(...rows);
+    this.last = { row, fourPointGap };
+  }
+}
+
+export default {
+  id: 'metrics',
+  title: 'Metrics',
+  hint: 'Velocity and acceleration jumps, integrated accelerations, interpolation error',
+  live: true,
+  create: (app, root) => new MetricsView(app, root),
+};
