@@ -78,6 +78,7 @@ mod gltf_import;
 mod interop;
 pub mod mesh;
 pub mod methods;
+mod morph;
 mod motion;
 mod polyscrew;
 mod pose;
@@ -112,6 +113,7 @@ pub use interop::{
     export_motion, import_motion_file, ExportFormat, ExportSettings, ExportedMotion, ImportKind,
     SamplingMode,
 };
+pub use morph::{morph_mesh, morph_weights, MORPH_RESOLUTION};
 pub use motion::{Kinematics, Motion};
 pub use polyscrew::Polyscrew;
 pub use pose::{

@@ -3,7 +3,8 @@ import init, { Motion, Renderer, DragSession, scenes as listScenes, limits } fro
 import { OrbitCamera } from './camera.js';
 import { poseMatrix, length, sub, add, scale, raySphere } from './math.js';
 import {
-  SLOT, LAYER, COLORS, INSTANCE, SEGMENT, instances, mix, Segments, poseOf, track, matricesOf, gridSegments,
+  SLOT, LAYER, COLORS, INSTANCE, SEGMENT, MAX_MORPH_STROBE, instances, mix, Segments, poseOf, track, matricesOf,
+  gridSegments,
 } from './scene.js';
 import { gizmoGeometry, hitGizmo, startDrag, gizmoPoint, project } from './gizmo.js';
 import { History, encodeHash, decodeHash, loadSaved, save, SESSION_VERSION } from './state.js';
@@ -391,10 +392,11 @@ export class App {
     const m = this.motion;
     const v = this.view;
     const closed = m.closed;
-    if (v.showStrobe) {
-      const mats = m.sampleMatrices(v.strobe);
-      r.setInstances(SLOT.strobe, instances(mats, (k, n) => mix(COLORS.strobeA, COLORS.strobeB, n > 1 ? k / (n - 1) : 0)));
+    const strobeColor = (k, n) => mix(COLORS.strobeA, COLORS.strobeB, n > 1 ? k / (n - 1) : 0);
+    if (v.showStrobe && !this.morphing) {
+      r.setInstances(SLOT.strobe, instances(m.sampleMatrices(v.strobe), strobeColor));
     } else r.setInstances(SLOT.strobe, new Float32Array(0));
+    this.rebuildMorphStrobe(strobeColor);
 
     const { dpr } = this.pixelSize();
     const seg = new Segments();
@@ -417,6 +419,35 @@ export class App {
     this.updateAnim();
     this.stats.updateMs = performance.now() - t0;
     this.requestDraw();
+  }
+
+  /** True when the object morphs between per-pose shapes (scene A8 with its own object). */
+  get morphing() {
+    return this.view.object === 'scene' && this.sceneInfo.morphShapes.length > 0;
+  }
+
+  /**
+   * The morphing strobe (scene A8): one mesh slot per instance, each holding the Minkowski
+   * combination of the control shapes at that instance's parameter (meshes depend only on the
+   * parameter, so they are rebuilt only when the count or the cycle changes).
+   */
+  rebuildMorphStrobe(color) {
+    const r = this.renderer;
+    const m = this.motion;
+    const n = this.morphing && this.view.showStrobe ? Math.min(this.view.strobe, MAX_MORPH_STROBE) : 0;
+    const key = n ? `${this.view.scene}:${m.closed}:${m.poseCount}:${n}` : '';
+    const [a, b] = m.domain();
+    const us = Array.from({ length: n }, (_, k) => a + ((b - a) * k) / (m.closed ? n : Math.max(1, n - 1)));
+    if (key !== this.morphKey) {
+      us.forEach((u, k) => r.setMorphMesh(SLOT.morphStrobe + k, this.view.scene, m.closed, u));
+      this.morphKey = key;
+    }
+    const mats = n ? m.sampleMatrices(n) : new Float32Array(0);
+    for (let k = 0; k < Math.max(n, this.morphStrobeSlots ?? 0); k++) {
+      const data = k < n ? instances(mats.subarray(k * 16, k * 16 + 16), () => color(k, n)) : new Float32Array(0);
+      r.setInstances(SLOT.morphStrobe + k, data);
+    }
+    this.morphStrobeSlots = Math.max(n, this.morphStrobeSlots ?? 0);
   }
 
   /** Control poses: red objects, handles, triads, the control polygon. */
@@ -563,6 +594,8 @@ export class App {
       return;
     }
     const p = this.motion.poseAt(this.anim.u);
+    // The morphing object changes shape as it moves.
+    if (this.morphing) this.renderer.setMorphMesh(SLOT.anim, this.view.scene, this.motion.closed, this.anim.u);
     const mat = poseMatrix(p.origin, p.rotation, CONTROL_SCALE * CONTROL_SCALE);
     this.renderer.setInstances(SLOT.anim, instances(mat, () => COLORS.anim));
     this.ui?.setTime(this.anim.u, a, b);
@@ -891,6 +924,8 @@ export class App {
    */
   dragSession() {
     const v = this.view;
+    // The morphing strobe has one slot per instance: drags rebuild it (its meshes are cached).
+    if (this.morphing) return null;
     try {
       const { dpr } = this.pixelSize();
       const points = v.showTrajectories ? this.bodyPoints().flat() : [];

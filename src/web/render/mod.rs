@@ -90,6 +90,29 @@ impl RendererHandle {
         Ok(mesh.triangle_count())
     }
 
+    /// Puts in `slot` the morphing object of a scene with per-pose shapes (`morphShapes`, scene
+    /// A8) at motion parameter `u`: the Minkowski combination of the shapes' convex hulls with
+    /// the C¹ weights of [`crate::morph_weights`] (see [`crate::morph_mesh`]). Returns the
+    /// triangle count.
+    #[wasm_bindgen(js_name = setMorphMesh)]
+    pub fn set_morph_mesh(
+        &mut self,
+        slot: usize,
+        scene: &str,
+        closed: bool,
+        u: f64,
+    ) -> Result<usize, JsError> {
+        let s = crate::scenes::scene(scene)
+            .ok_or_else(|| JsError::new(&format!("unknown scene {scene:?}")))?;
+        if !u.is_finite() {
+            return Err(JsError::new("u: not a finite number (NaN or infinity)"));
+        }
+        let weights = crate::morph_weights(s.morph_shapes.len(), closed, u);
+        let mesh = crate::morph_mesh(&s.morph_shapes, &weights, crate::MORPH_RESOLUTION)?;
+        self.inner.set_mesh(slot, &mesh, false);
+        Ok(mesh.triangle_count())
+    }
+
     /// Parses an OBJ text ([`Mesh::from_obj`]: size and triangle limits), scales it to fit a
     /// cube of side `size` centred on the local origin and puts it in `slot`. Returns the
     /// triangle count; on error the slot keeps its previous mesh.
