@@ -22,7 +22,7 @@ let problems;
 
 before(async () => {
   fs.mkdirSync(ARTIFACTS, { recursive: true });
-  play = await startPlayground({ viewport: VIEWPORT });
+  play = await startPlayground({ viewport: VIEWPORT, acceptDownloads: true });
   ({ url, context } = play);
   ({ page, problems } = await openPage(context, url, BACKEND));
 });
@@ -329,7 +329,7 @@ test(`${BACKEND}: touch: one finger orbits, two fingers pinch-zoom`, async () =>
 
 test(`${BACKEND}: every preset renders (screenshots in artifacts/)`, async () => {
   const ids = await sb(() => window.screwbender.app.scenes.map((s) => s.id));
-  assert.equal(ids.length, 10); // A1–A11 without A4 (the planar polygons)
+  assert.equal(ids.length, 14); // A1–A11 without A4 (the planar polygons), B1, C1–C3
   for (const id of ids) {
     await fresh(id);
     await sb(() => window.screwbender.app.frameAll());
