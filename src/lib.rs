@@ -85,6 +85,7 @@ pub mod scenes;
 mod scheme;
 mod screw;
 mod screwbender;
+mod split_tweak;
 mod subdivision;
 mod timing;
 mod trig;
@@ -123,5 +124,6 @@ pub use screw::{
     HALF_TURN_EPSILON, LENGTH_EPSILON, PAPER_CROSS_EPSILON,
 };
 pub use screwbender::ScrewBender;
+pub use split_tweak::{split, split_tweak_levels, split_tweak_step, SplitTweakStep};
 pub use subdivision::{Subdivision, MAX_REFINED_POSES};
 pub use timing::Timing;
