@@ -71,6 +71,7 @@
 
 mod blend;
 mod csv;
+mod decoupled_blend;
 mod document;
 mod error;
 mod gltf_export;
@@ -99,6 +100,9 @@ struct ReadmeDoctests;
 
 pub use blend::Blend;
 pub use csv::{parse_csv_poses, poses_csv, trajectory_csv, MAX_CSV_BYTES, POSE_COLUMNS};
+pub use decoupled_blend::{
+    compare_frames, move_local_origin, subdivide_decoupled, DecoupledPose, FrameComparison,
+};
 pub use document::{MotionDocument, RawDocument, RawPose, MAX_DOCUMENT_BYTES};
 pub use error::Error;
 pub use gltf_export::{
