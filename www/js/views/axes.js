@@ -38,8 +38,7 @@ export default {
       <div class="scroll"><table>
         <thead><tr><th>span</th><th>kind</th><th>angle °</th><th>slide</th><th>pitch</th></tr></thead>
         <tbody></tbody>
-      </table></div>
-      <div class="axes-label" hidden></div>`;
+      </table></div>`;
     const levelSel = el.querySelector('.level');
     for (let l = 0; l <= MAX_LEVEL; l++) {
       const o = document.createElement('option');
@@ -49,7 +48,12 @@ export default {
     }
     const tbody = el.querySelector('tbody');
     const countEl = el.querySelector('.count');
-    const label = el.querySelector('.axes-label');
+    // The floating label lives in <body>: inside the dock it could not rise above the side panel
+    // (the dock is its own stacking context).
+    const label = document.createElement('div');
+    label.className = 'axes-label';
+    label.hidden = true;
+    document.body.append(label);
     const state = { level: 0, hover: -1, screws: [], anchors: [], visible: false };
 
     /** Poses of the chosen level (7 per pose) and whether they form a cycle. */
@@ -222,6 +226,7 @@ export default {
       highlight: setHover,
       dispose() {
         app.renderer.setLines(LAYER.screwAxes, new Float32Array(0), true);
+        label.remove();
       },
     };
   },

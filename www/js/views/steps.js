@@ -84,6 +84,7 @@ export default {
         <span class="swatch" style="background:#2f8f3a"></span>split midpoints
         <span class="swatch" style="background:#c9d3e3"></span>before tweak
         <span class="swatch" style="background:#1f5fbf"></span>after tweak
+        <span class="swatch" style="background:#e0602f"></span>moved by the tweak
         <span class="swatch" style="background:#d1202f"></span>tweak arrows
         <span class="swatch" style="background:#9a6fd1"></span>helper poses (V1)
       </p>
