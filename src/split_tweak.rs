@@ -9,7 +9,9 @@
 //!   equals one [`Subdivision`] step.
 //! * With the direct rules ([`Rules::Direct`], spec §6.1) the output is one
 //!   [`Subdivision::step_cyclic`]; the split sequence is still the screw midpoints, and the
-//!   "tweak" of slot `j` is the displacement `Z_j → Q_j`. There are no helpers.
+//!   "tweak" of slot `j` is the displacement `Z_j → Q_j`. Each moved slot has two helpers, the
+//!   inner blends of its rule (e.g. `s(a, 9/8, b)` and `s(d, 9/8, c)` for the 4-point new pose),
+//!   whose screw midpoint is the output.
 //!
 //! Open sequences are refined on the extended cycle of spec §7 (dummy poses included); each
 //! [`SplitTweakStep`] says which part of its output is kept.
@@ -31,9 +33,10 @@ pub struct SplitTweakStep<T> {
     /// Which slots the scheme's tweak moves (`Q_j` differs from `Z_j` by rule, not by accident):
     /// old slots for the B-spline, new slots for the 4-point, both for Jarek and the J_s family.
     pub tweaked: Vec<bool>,
-    /// For the split-then-tweak rules, the helper of every tweaked slot `j` as `(j, m)`: the
-    /// tweak moves `Z_j` along the blend between `Z_j` and `m` (old slots: towards `m`, new
-    /// slots: away from it). Empty for the direct rules.
+    /// Helper elements as `(j, h)`, drawn faintly in the paper's Fig. 4. Split-then-tweak rules:
+    /// one per tweaked slot `j`, the element the tweak moves `Z_j` towards (old slots) or away
+    /// from (new slots) along the blend between them. Direct rules: two per tweaked slot, the two
+    /// inner blends of the rule, whose midpoint `blend(h₁, ½, h₂)` is `Q_j`.
     pub helpers: Vec<(usize, T)>,
     /// The part of `output` that belongs to the motion, as `(start, len)`: everything for a
     /// cycle; for an open sequence, the refined range that covers `[0, m − 1]` after this step
@@ -94,7 +97,7 @@ pub fn split_tweak_step<T: Blend>(
         })
         .collect();
     let (output, helpers) = match rules {
-        Rules::Direct => (direct, Vec::new()),
+        Rules::Direct => (direct, direct_helpers(input, scheme)),
         Rules::SplitTweak => {
             let zz = |j: usize| &z[j % m];
             let mut out = Vec::with_capacity(m);
@@ -132,6 +135,29 @@ pub fn split_tweak_step<T: Blend>(
         helpers,
         kept: (0, m),
     })
+}
+
+/// The inner blends of the direct rules (spec §6.1) for every moved slot: `(j, h₁)`, `(j, h₂)`
+/// with `Q_j = blend(h₁, ½, h₂)`. With `a, b, c, d = P_{i−1}, P_i, P_{i+1}, P_{i+2}`: old slot
+/// `2i` from `s(b, σ, a)`, `s(b, σ, c)` (`σ = s/4`: ¼ B-spline, ⅛ Jarek); new slot `2i+1` from
+/// `s(a, w, b)`, `s(d, w, c)` (`w = 1 + (1 − s)/8`: 9/8 4-point, 17/16 Jarek).
+fn direct_helpers<T: Blend>(p: &[T], scheme: Scheme) -> Vec<(usize, T)> {
+    let n = p.len();
+    let s = scheme.j_parameter();
+    let w = 1.0 + (1.0 - s) / 8.0;
+    let mut out = Vec::new();
+    for i in 0..n {
+        let (a, b, c, d) = (&p[(i + n - 1) % n], &p[i], &p[(i + 1) % n], &p[(i + 2) % n]);
+        if s != 0.0 {
+            out.push((2 * i, T::blend(b, s / 4.0, a)));
+            out.push((2 * i, T::blend(b, s / 4.0, c)));
+        }
+        if s != 1.0 {
+            out.push((2 * i + 1, T::blend(a, w, b)));
+            out.push((2 * i + 1, T::blend(d, w, c)));
+        }
+    }
+    out
 }
 
 /// Steps `0 .. sub.levels` of the subdivision of `input` (a cycle when `closed`), each taken

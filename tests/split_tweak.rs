@@ -104,7 +104,18 @@ fn untweaked_slots_stay_split_and_helpers_explain_the_tweak() {
                 }
             }
             match rules {
-                Rules::Direct => assert!(step.helpers.is_empty()),
+                Rules::Direct => {
+                    let count = step.tweaked.iter().filter(|t| **t).count();
+                    assert_eq!(step.helpers.len(), 2 * count, "{name} {scheme}");
+                    // The output of a moved slot is the screw midpoint of its two helpers.
+                    for pair in step.helpers.chunks(2) {
+                        let (j, h1) = pair[0];
+                        assert_eq!(pair[1].0, j);
+                        assert!(step.tweaked[j]);
+                        let mid = screw(&h1, 0.5, &pair[1].1);
+                        assert_pose_near(&mid, &step.output[j], SAME, name);
+                    }
+                }
                 Rules::SplitTweak => {
                     let count = step.tweaked.iter().filter(|t| **t).count();
                     assert_eq!(step.helpers.len(), count, "{name} {scheme}");

@@ -48,9 +48,13 @@ export interface SplitTweakStep {
   output: Float64Array;
   /** 1 where the scheme's tweak moves slot `j`, else 0 (`2n` entries). */
   tweaked: Uint8Array;
-  /** Slots that have a helper pose (split-then-tweak rules only). */
+  /**
+   * The slot of each helper pose. Split-then-tweak rules: one helper per tweaked slot (the pose
+   * the tweak moves towards or away from); direct rules: two per moved slot (the inner screws of
+   * the rule, whose midpoint is the output).
+   */
   helperSlots: Uint32Array;
-  /** The helper pose of each slot in `helperSlots` (7 numbers each). */
+  /** The helper poses, in the order of `helperSlots` (7 numbers each). */
   helpers: Float64Array;
   /** `[start, length]` of the part of `output` that belongs to the motion. */
   kept: [number, number];
