@@ -35,6 +35,7 @@ export default {
       <div class="row">
         <label>Polygon <select class="source"></select></label>
         <label>Levels <input class="levels" type="range" min="0" max="5" step="1" value="1"> <span class="lv">1</span></label>
+        <label title="Also draw each scheme after one step, dashed (paper Fig. 2 shows 1 and 5 steps)"><input class="once" type="checkbox" checked> + 1 step</label>
         <label title="Show one split and the tweak of each scheme (paper Fig. 3)"><input class="fig3" type="checkbox"> split &amp; tweak (first step)</label>
         <button type="button" class="act reset">Reset</button>
       </div>
@@ -47,6 +48,7 @@ export default {
     const levels = el.querySelector('.levels');
     const lv = el.querySelector('.lv');
     const fig3 = el.querySelector('.fig3');
+    const once = el.querySelector('.once');
     const canvas = el.querySelector('canvas');
     const modeNote = el.querySelector('.mode');
     const legend = el.querySelector('.legend');
@@ -99,6 +101,12 @@ export default {
       state.results = {};
       for (const s of SCHEMES) {
         state.results[s.id] = subdividePolygon(state.points, closed, { scheme: s.id, rules: 'direct', levels: state.level });
+      }
+      state.once = {};
+      if (once.checked && state.level > 1) {
+        for (const s of SCHEMES) {
+          state.once[s.id] = subdividePolygon(state.points, closed, { scheme: s.id, rules: 'direct', levels: 1 });
+        }
       }
       state.fig3 = null;
       if (fig3.checked && closed) {
@@ -160,6 +168,17 @@ export default {
       g.lineWidth = 1.5;
       path(state.points, state.closed);
       g.stroke();
+      for (const s of SCHEMES) {
+        if (!show[s.id] || !state.once[s.id]) continue;
+        g.strokeStyle = s.color;
+        g.globalAlpha = 0.55;
+        g.lineWidth = 1.1;
+        g.setLineDash([4, 3]);
+        path(state.once[s.id], state.closed);
+        g.stroke();
+        g.setLineDash([]);
+        g.globalAlpha = 1;
+      }
       for (const s of SCHEMES) {
         if (!show[s.id]) continue;
         g.strokeStyle = s.color;
@@ -295,6 +314,7 @@ export default {
       refresh();
     };
     fig3.onchange = () => refresh();
+    once.onchange = () => refresh();
     el.querySelector('.reset').onclick = () => {
       const p = presets.find((x) => x.id === state.source);
       if (p) state.polys[p.id] = Float64Array.from(p.points.flat());

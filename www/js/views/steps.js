@@ -86,7 +86,7 @@ export default {
         <span class="swatch" style="background:#1f5fbf"></span>after tweak
         <span class="swatch" style="background:#e0602f"></span>moved by the tweak
         <span class="swatch" style="background:#d1202f"></span>tweak arrows
-        <span class="swatch" style="background:#9a6fd1"></span>helper poses (V1)
+        <span class="swatch" style="background:#9a6fd1"></span>helper poses (inner screws)
       </p>
       <p class="note">Scheme and rule set come from the main panel. Keys: <b>[</b>/<b>]</b> or <b>,</b>/<b>.</b> step back/forward.</p>`;
     const caption = el.querySelector('.caption');
@@ -178,10 +178,14 @@ export default {
         seg.polyline(origins(step.split), true, C.ghost, 1.2 * dpr, 0.8);
         seg.polyline(origins(step.output), true, C.after, 1.6 * dpr, 0.9);
         for (const j of moved) arrow(seg, poseOf(step.split, j).origin, poseOf(step.output, j).origin, C.arrow, 2.4 * dpr);
+        // Helpers (paper Fig. 4, drawn faintly): V1 — the pose each tweak moves towards or away
+        // from, joined to the result; V2 — the two inner screws of the rule, joined to each other
+        // (the result is the screw midpoint between them).
         step.helperSlots.forEach((j, k) => {
           const h = poseOf(step.helpers, k).origin;
           mark(seg, h, 0.6 * r, C.helper, 1.5 * dpr);
-          seg.push(h, poseOf(step.output, j).origin, C.helper, 1 * dpr, 0.5, 0.01);
+          if (o.rules === 'split') seg.push(h, poseOf(step.output, j).origin, C.helper, 1 * dpr, 0.5, 0.01);
+          else if (k % 2 === 1) seg.push(poseOf(step.helpers, k - 1).origin, h, C.helper, 1 * dpr, 0.5, 0.01);
         });
         app.renderer.setInstances(SLOT.stepsGhost, instances(matricesOf(pick(step.split, moved)), () => C.ghost));
         const movedSet = new Set(moved);
