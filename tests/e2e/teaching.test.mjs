@@ -301,6 +301,33 @@ test(`${BACKEND}: frame view: screw trajectories ignore the local origin, decoup
   noProblems();
 });
 
+test(`${BACKEND}: every preset in every teaching view (open, 2-pose, J_s, V1 rules): no errors`, async () => {
+  const ids = await sb(() => window.screwbender.app.scenes.map((s) => s.id));
+  for (const id of ids) {
+    await preset(id);
+    for (const view of ['axes', 'steps', 'polygon', 'frame']) {
+      await open(view);
+      if (view === 'axes') {
+        await page.locator('.view-axes select.level').selectOption('1');
+        await sb(() => window.screwbender.flushViews());
+        await page.locator('.view-axes select.level').selectOption('0');
+      }
+      if (view === 'steps') await sb(() => window.screwbender.app.dock.current.goTo(5));
+      if (view === 'polygon') await sb(() => window.screwbender.app.dock.current.set('origins', 2));
+    }
+  }
+  await preset('bunny6');
+  for (const options of [{ scheme: 'j', j: 0.3 }, { scheme: 'jarek', rules: 'split' }, { scheme: 'bspline', rules: 'split' }]) {
+    await sb((o) => window.screwbender.app.edit(() => window.screwbender.app.motion.setOptions(o)), options);
+    for (const view of ['axes', 'steps', 'frame']) {
+      await open(view);
+      if (view === 'steps') await sb(() => window.screwbender.app.dock.current.goTo(3));
+    }
+  }
+  assert.deepEqual(await sb(() => window.screwbender.errors()), []);
+  noProblems();
+});
+
 test(`${BACKEND}: hiding a teaching view clears its overlays; no banner errors`, async () => {
   for (const id of ['axes', 'steps', 'polygon', 'frame']) await open(id);
   await sb(() => window.screwbender.openView(''));
