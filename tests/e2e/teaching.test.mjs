@@ -121,6 +121,26 @@ test(`${BACKEND}: screw axes view lists every span and follows edits and drags`,
   assert.equal(await sb(() => window.screwbender.app.dock.current.state.hover), 3);
   assert.equal(await sb(() => document.querySelector('.axes-label').hidden), false);
   assert.match(await page.locator('.axes-label').textContent(), /°, slide/);
+  // Hovering an axis in the 3-D view highlights its row.
+  await page.mouse.move(5, 790);
+  await sb(() => window.screwbender.app.dock.current.highlight(-1));
+  const target = await sb(() => {
+    const app = window.screwbender.app;
+    const ends = app.dock.current.state.ends;
+    const dock = document.getElementById('dock').getBoundingClientRect();
+    for (let i = 0; i < ends.length; i++) {
+      if (!ends[i]) continue;
+      const mid = ends[i][0].map((v, a) => (v + ends[i][1][a]) / 2);
+      const p = app.toPage(mid);
+      if (p && p.x > dock.right + 10 && p.x < 1000 && p.y > 150 && p.y < 740) return { i, ...p };
+    }
+    return null;
+  });
+  assert.ok(target, 'no axis visible outside the dock');
+  await page.mouse.move(target.x, target.y);
+  assert.equal(await sb(() => window.screwbender.app.dock.current.state.hover), target.i);
+  assert.equal(await sb((i) => document.querySelectorAll('.view-axes tbody tr')[i].classList.contains('hi'), target.i), true);
+  await page.mouse.move(5, 790);
   // A refined level has 2^level times as many spans.
   await page.locator('.view-axes select.level').selectOption('2');
   await sb(() => window.screwbender.flushViews());

@@ -24,7 +24,7 @@ function perpendicular(d) {
 export default {
   id: 'axes',
   title: 'Screw axes',
-  hint: 'The screw axis of every span: direction, angle, slide and pitch (hover a row to highlight it)',
+  hint: 'The screw axis of every span: direction, angle, slide and pitch (hover a row or an axis to highlight it)',
   live: true,
   create(app, el) {
     el.innerHTML = `
@@ -34,7 +34,8 @@ export default {
       </div>
       <p class="note">Each span <i>i → i+1</i> is a screw motion: a rotation by the angle about the
         drawn axis (right-hand rule along the arrow ticks; colour runs dark → light along the axis
-        direction) combined with the slide along it. Pitch = slide / angle.</p>
+        direction) combined with the slide along it. Pitch = slide / angle. Hover a row or an axis
+        to highlight it.</p>
       <div class="scroll"><table>
         <thead><tr><th>span</th><th>kind</th><th>angle °</th><th>slide</th><th>pitch</th></tr></thead>
         <tbody></tbody>
@@ -54,7 +55,7 @@ export default {
     label.className = 'axes-label';
     label.hidden = true;
     document.body.append(label);
-    const state = { level: 0, hover: -1, screws: [], anchors: [], visible: false };
+    const state = { level: 0, hover: -1, screws: [], anchors: [], ends: [], visible: false };
 
     /** Poses of the chosen level (7 per pose) and whether they form a cycle. */
     function levelPoses() {
@@ -88,8 +89,18 @@ export default {
       });
     }
 
+    // While a span is highlighted, keep its label on its axis when the camera moves.
+    let follow = 0;
+    function track() {
+      follow = 0;
+      if (state.hover < 0 || !state.visible) return;
+      placeLabel();
+      follow = requestAnimationFrame(track);
+    }
+
     function setHover(i) {
       state.hover = i;
+      if (i >= 0 && !follow) follow = requestAnimationFrame(track);
       for (const tr of tbody.children) tr.classList.toggle('hi', Number(tr.dataset.span) === i);
       draw();
       placeLabel();
@@ -127,6 +138,7 @@ export default {
       const size = Math.max(2, length(sub(hi, lo)));
       const seg = new Segments();
       state.anchors = [];
+      state.ends = [];
       state.screws.forEach((s, i) => {
         const hot = i === state.hover;
         const dim = state.hover >= 0 && !hot;
@@ -155,6 +167,7 @@ export default {
         }
         state.anchors.push(point);
         const p0 = sub(point, scale(dir, half));
+        state.ends[i] = [p0, add(point, scale(dir, half))];
         const dark = mix(base, [0, 0, 0], 0.55);
         const light = mix(base, [1, 1, 1], 0.35);
         for (let k = 0; k < GRADIENT_STEPS; k++) {
@@ -193,6 +206,37 @@ export default {
       app.renderer.setLines(LAYER.screwAxes, seg.array(), true);
     }
 
+    // Hovering an axis in the 3-D view highlights its row (and label), like hovering the row.
+    let hoverFrom3d = false;
+    const onCanvasMove = (e) => {
+      if (e.buttons !== 0 || !state.ends) return;
+      let best = -1;
+      let bestD = 7;
+      state.ends.forEach((ends, i) => {
+        if (!ends) return;
+        const a = app.toPage(ends[0]);
+        const b = app.toPage(ends[1]);
+        if (!a || !b) return;
+        const dx = b.x - a.x;
+        const dy = b.y - a.y;
+        const L2 = dx * dx + dy * dy;
+        const t = L2 > 0 ? Math.max(0, Math.min(1, ((e.clientX - a.x) * dx + (e.clientY - a.y) * dy) / L2)) : 0;
+        const d = Math.hypot(e.clientX - (a.x + t * dx), e.clientY - (a.y + t * dy));
+        if (d < bestD) {
+          bestD = d;
+          best = i;
+        }
+      });
+      if (best >= 0 && best !== state.hover) {
+        hoverFrom3d = true;
+        setHover(best);
+        tbody.children[best]?.scrollIntoView({ block: 'nearest' });
+      } else if (best < 0 && hoverFrom3d) {
+        hoverFrom3d = false;
+        setHover(-1);
+      }
+    };
+
     levelSel.onchange = () => {
       state.level = Number(levelSel.value);
       state.hover = -1;
@@ -217,6 +261,8 @@ export default {
       },
       show(visible) {
         state.visible = visible;
+        if (visible) app.canvas.addEventListener('pointermove', onCanvasMove);
+        else app.canvas.removeEventListener('pointermove', onCanvasMove);
         if (!visible) {
           app.renderer.setLines(LAYER.screwAxes, new Float32Array(0), true);
           label.hidden = true;
@@ -225,6 +271,7 @@ export default {
       /** Highlights span i (as hovering its row does); -1 clears. For tests and keyboard users. */
       highlight: setHover,
       dispose() {
+        app.canvas.removeEventListener('pointermove', onCanvasMove);
         app.renderer.setLines(LAYER.screwAxes, new Float32Array(0), true);
         label.remove();
       },
