@@ -6,6 +6,10 @@ import { splitTweakStep } from '../../pkg/screwbender.js';
 import { LAYER, SLOT, Segments, instances, matricesOf, poseOf } from '../scene.js';
 import { add, sub, scale, cross, normalize, length, hexLinear } from '../math.js';
 
+/** Scale of the before-tweak ghosts relative to the object. */
+const GHOST_SCALE = 0.97;
+/** A tweak smaller than this (length units, or 1 − |q·q′|) counts as not moving the pose. */
+const MOVED = 1e-9;
 /** Most levels the view steps through. */
 const MAX_LEVELS = 5;
 const C = {
@@ -162,8 +166,8 @@ export default {
       const name = SCHEME_NAMES[o.scheme] ?? o.scheme;
       const open = m.closed ? '' : ' (open motion: the dummy end poses of spec §7 are included)';
       if (phase === 'split') {
-        seg.polyline(origins(step.input), true, C.input, 1.5 * dpr, 0.9);
-        seg.polyline(origins(step.split), true, C.split, 1.2 * dpr, 0.6);
+        seg.polyline(origins(step.input), m.closed, C.input, 1.5 * dpr, 0.9);
+        seg.polyline(origins(step.split), m.closed, C.split, 1.2 * dpr, 0.6);
         const mids = [];
         for (let i = 0; i < n; i++) {
           mids.push(2 * i + 1);
@@ -175,8 +179,8 @@ export default {
       } else {
         const moved = [];
         for (let j = 0; j < 2 * n; j++) if (step.tweaked[j]) moved.push(j);
-        seg.polyline(origins(step.split), true, C.ghost, 1.2 * dpr, 0.8);
-        seg.polyline(origins(step.output), true, C.after, 1.6 * dpr, 0.9);
+        seg.polyline(origins(step.split), m.closed, C.ghost, 1.2 * dpr, 0.8);
+        seg.polyline(origins(step.output), m.closed, C.after, 1.6 * dpr, 0.9);
         for (const j of moved) arrow(seg, poseOf(step.split, j).origin, poseOf(step.output, j).origin, C.arrow, 2.4 * dpr);
         // Helpers (paper Fig. 4, drawn faintly): V1 — the pose each tweak moves towards or away
         // from, joined to the result; V2 — the two inner screws of the rule, joined to each other
@@ -187,10 +191,22 @@ export default {
           if (o.rules === 'split') seg.push(h, poseOf(step.output, j).origin, C.helper, 1 * dpr, 0.5, 0.01);
           else if (k % 2 === 1) seg.push(poseOf(step.helpers, k - 1).origin, h, C.helper, 1 * dpr, 0.5, 0.01);
         });
-        app.renderer.setInstances(SLOT.stepsGhost, instances(matricesOf(pick(step.split, moved)), () => C.ghost));
+        // Ghosts a little smaller: where the tweak does not move a pose (e.g. poses sampled from
+        // one screw) the pose after the tweak covers its ghost instead of z-fighting with it.
+        app.renderer.setInstances(SLOT.stepsGhost, instances(matricesOf(pick(step.split, moved), GHOST_SCALE), () => C.ghost));
         const movedSet = new Set(moved);
         app.renderer.setInstances(SLOT.steps, instances(matricesOf(step.output), (k) => (movedSet.has(k) ? C.moved : C.after)));
-        state.caption = `Level ${level} → ${level + 1} · tweak (${name}, ${rules}): ${moved.length} of ${2 * n} poses move (arrows). ${tweakText(o)}.${open}`;
+        // How many tweaked poses really move (poses sampled from one screw do not).
+        const changed = moved.filter((j) => {
+          const a = poseOf(step.split, j);
+          const b = poseOf(step.output, j);
+          const dq = Math.abs(a.rotation.reduce((acc, v, k) => acc + v * b.rotation[k], 0));
+          return length(sub(a.origin, b.origin)) > MOVED || 1 - dq > MOVED;
+        }).length;
+        state.changed = changed;
+        const shown = changed === moved.length ? `${moved.length} of ${2 * n} poses move (arrows)` :
+          `the rule tweaks ${moved.length} of ${2 * n} poses; ${changed} of them move by more than ${MOVED} (arrows)`;
+        state.caption = `Level ${level} → ${level + 1} · tweak (${name}, ${rules}): ${shown}. ${tweakText(o)}.${open}`;
       }
       app.renderer.setLines(LAYER.steps, seg.array(), true);
       caption.textContent = state.caption;
