@@ -321,6 +321,9 @@ export default {
       refresh();
     };
 
+    // Redraw at the new width when the dock is resized.
+    new ResizeObserver(() => draw()).observe(canvas);
+
     return {
       state,
       update() {
