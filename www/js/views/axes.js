@@ -12,6 +12,8 @@ const MAX_LEVEL = 3;
 const PALETTE = ['#d1202f', '#1f6fd1', '#2a9d4b', '#b0589c', '#e07b1f', '#178f8f', '#6c4bd1', '#8c7a1f'].map(hexLinear);
 const HIGHLIGHT = hexLinear('#ffb000');
 const GRADIENT_STEPS = 8;
+/** Most rows the table lists (all axes are still drawn). */
+const MAX_ROWS = 400;
 
 const deg = (r) => (r * 180) / Math.PI;
 const fmt = (v, d = 3) => (Math.abs(v) < 0.5 * 10 ** -d ? (0).toFixed(d) : v.toFixed(d));
@@ -73,7 +75,7 @@ export default {
       tbody.textContent = '';
       const n = state.screws.length;
       const closed = app.motion.closed;
-      state.screws.forEach((s, i) => {
+      state.screws.slice(0, MAX_ROWS).forEach((s, i) => {
         const tr = document.createElement('tr');
         const j = closed ? (i + 1) % n : i + 1;
         const pitch = s.kind === 'general' ? fmt(s.pitch) : s.kind === 'translation' ? '∞' : '—';
@@ -246,7 +248,8 @@ export default {
     function update() {
       state.poses = levelPoses();
       state.screws = spanScrewsOf(state.poses, app.motion.closed);
-      countEl.textContent = `${state.screws.length} spans`;
+      const n = state.screws.length;
+      countEl.textContent = n > MAX_ROWS ? `${n} spans (table: first ${MAX_ROWS})` : `${n} spans`;
       if (state.hover >= state.screws.length) state.hover = -1;
       rebuildTable();
       if (state.hover >= 0) setHover(state.hover);
