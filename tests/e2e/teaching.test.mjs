@@ -256,6 +256,10 @@ test(`${BACKEND}: polygon view reproduces the spec's L-polygon vectors and drags
   await sb(() => window.screwbender.app.dock.current.set('polygon_l', 1));
   const shown = await sb(() => Array.from(window.screwbender.app.dock.current.state.results.fourpoint));
   shown.forEach((v, i) => assert.ok(Math.abs(v - want.fourpoint[i]) < 1e-12));
+  // ... and lists them in its numbers table.
+  await page.locator('.view-polygon .numbers summary').click();
+  const row1 = await page.locator('.view-polygon .numbers tbody tr').nth(1).textContent();
+  assert.match(row1, /\(3, 0\)\s*\(3, -0\.5\)\s*\(3, -0\.25\)/);
   // A real drag of vertex 1 moves it and re-subdivides.
   const v1 = await sb(() => window.screwbender.app.dock.current.vertexOnPage(1));
   await page.mouse.move(v1.x, v1.y);

@@ -13,6 +13,8 @@ const SCHEMES = [
 const CONTROL = '#8a8f9c';
 /** Pick radius of a vertex, CSS pixels. */
 const PICK = 10;
+/** Most rows of the numbers table. */
+const MAX_ROWS = 96;
 /** Canvas height, CSS pixels. */
 const HEIGHT = 300;
 
@@ -41,7 +43,10 @@ export default {
       </div>
       <div class="row legend"></div>
       <canvas class="poly-canvas" height="${HEIGHT}"></canvas>
-      <p class="note mode"></p>`;
+      <p class="note mode"></p>
+      <details class="numbers"><summary>Numbers (refined vertices, old and new alternating from vertex 0)</summary>
+        <table><thead><tr><th>#</th>${SCHEMES.map((s) => `<th>${s.name}</th>`).join('')}</tr></thead><tbody></tbody></table>
+      </details>`;
     const source = el.querySelector('.source');
     for (const p of presets) source.append(new Option(`${p.id} (${p.figure})`, p.id));
     source.append(new Option('control origins (read-only)', 'origins'));
@@ -246,9 +251,29 @@ export default {
       g.fillText(`level ${state.level}`, 6, 14);
     }
 
+    /** The refined vertices as a table (at most MAX_ROWS rows; the spec's §4 vectors at level 1). */
+    function numbers() {
+      const body = el.querySelector('.numbers tbody');
+      if (!el.querySelector('.numbers').open) return;
+      const count = state.results.bspline.length / 2;
+      const fmt = (v) => (Math.abs(v) < 5e-13 ? 0 : v).toFixed(4).replace(/\.?0+$/, '');
+      const rows = [];
+      for (let k = 0; k < Math.min(count, MAX_ROWS); k++) {
+        const cells = SCHEMES.map((s) => {
+          const r = state.results[s.id];
+          return `<td>(${fmt(r[2 * k])}, ${fmt(r[2 * k + 1])})</td>`;
+        });
+        rows.push(`<tr><td>${k}</td>${cells.join('')}</tr>`);
+      }
+      if (count > MAX_ROWS) rows.push(`<tr><td colspan="4">… ${count - MAX_ROWS} more</td></tr>`);
+      body.innerHTML = rows.join('');
+    }
+    el.querySelector('.numbers').addEventListener('toggle', () => numbers());
+
     function refresh() {
       compute();
       draw();
+      numbers();
     }
 
     const local = (e) => {
