@@ -71,6 +71,7 @@
 
 mod blend;
 mod csv;
+mod decoupled_blend;
 mod document;
 mod error;
 mod gltf_export;
@@ -87,6 +88,7 @@ pub mod scenes;
 mod scheme;
 mod screw;
 mod screwbender;
+mod split_tweak;
 mod subdivision;
 mod timing;
 mod trig;
@@ -100,6 +102,9 @@ struct ReadmeDoctests;
 
 pub use blend::Blend;
 pub use csv::{parse_csv_poses, poses_csv, trajectory_csv, MAX_CSV_BYTES, POSE_COLUMNS};
+pub use decoupled_blend::{
+    compare_frames, move_local_origin, subdivide_decoupled, DecoupledPose, FrameComparison,
+};
 pub use document::{MotionDocument, RawDocument, RawPose, MAX_DOCUMENT_BYTES};
 pub use error::Error;
 pub use gltf_export::{
@@ -130,5 +135,6 @@ pub use screw::{
     HALF_TURN_EPSILON, LENGTH_EPSILON, PAPER_CROSS_EPSILON,
 };
 pub use screwbender::ScrewBender;
+pub use split_tweak::{split, split_tweak_levels, split_tweak_step, SplitTweakStep};
 pub use subdivision::{Subdivision, MAX_REFINED_POSES};
 pub use timing::Timing;

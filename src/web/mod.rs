@@ -27,6 +27,7 @@ mod motion_api;
 pub mod options;
 mod scenes_api;
 mod screw_api;
+mod teaching_api;
 mod types;
 
 pub use analysis_api::timing_map;
@@ -37,6 +38,10 @@ pub use methods_api::methods;
 pub use motion_api::MotionHandle;
 pub use scenes_api::scenes;
 pub use screw_api::{poses_to_matrices_js, screw, screw_info, screw_pairs, screw_poses};
+pub use teaching_api::{
+    compare_frames_js, polygon_scenes, span_screws_of, split_tweak_step_js, subdivide_decoupled_js,
+    subdivide_polygon,
+};
 
 use convert::{to_js, KINEMATICS_STRIDE, MATRIX_STRIDE, POSE_STRIDE};
 

@@ -999,6 +999,8 @@ export class App {
       this.rebuildMotion();
       this.rebuildControls();
       this.autosave();
+      // Views that do not follow drags catch up now.
+      this.dock?.changed('edit');
     }
     this.drag?.session?.free();
     this.drag = null;

@@ -2,6 +2,10 @@
 import plots from './plots.js';
 import metrics from './metrics.js';
 import timing from './timing.js';
+import axes from './axes.js';
+import steps from './steps.js';
+import polygon from './polygon.js';
+import frame from './frame.js';
 import methods from './methods.js';
 
-export const VIEWS = [plots, metrics, timing, methods];
+export const VIEWS = [plots, metrics, timing, axes, steps, polygon, frame, methods];
