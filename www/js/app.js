@@ -304,6 +304,20 @@ export class App {
     this.dock?.changed('edit');
   }
 
+  /**
+   * Up to 1700 px wide, the settings panel would cover the right part of the 3-D view that the
+   * open dock leaves: fold it while the dock is open, and unfold it again when it closes (if it
+   * was open).
+   */
+  foldPanelForDock(open) {
+    const gui = this.ui?.gui;
+    if (!gui || window.innerWidth >= 1700) return;
+    if (open) {
+      this.panelWasOpen = !gui._closed;
+      gui.close();
+    } else if (this.panelWasOpen) gui.open();
+  }
+
   /** Opens analysis view `id` in the dock ('' or null closes it); returns its instance. */
   openView(id) {
     let inst = null;
@@ -312,6 +326,7 @@ export class App {
       inst = this.dock.open(id || null);
       // The 3-D view changes size when the dock opens or closes (wide screens): re-frame.
       if (wasOpen !== !!this.dock.active) {
+        this.foldPanelForDock(!!this.dock.active);
         this.sizeCache = null;
         this.frameAll();
       }
