@@ -18,21 +18,11 @@ mod native {
     };
     use screwbender::{Motion, Pose};
 
+    /// Scene C1's keyframes (`scenes.md`), pose `i` at `t = i`.
     fn sphere7() -> (Vec<f64>, Vec<DQuat>) {
-        let keys = [
-            [1.0, 0.0, 0.0, 0.0],
-            [0.8, 0.6, 0.0, 0.0],
-            [0.6, 0.48, 0.64, 0.0],
-            [0.0, 0.6, 0.8, 0.0],
-            [-0.6, 0.0, 0.8, 0.0],
-            [-0.8, -0.36, 0.48, 0.0],
-            [-0.6, -0.8, 0.0, 0.0],
-        ];
-        let q = keys
-            .iter()
-            .map(|k: &[f64; 4]| DQuat::from_xyzw(k[1], k[2], k[3], k[0]))
-            .collect();
-        ((0..7).map(|i| i as f64).collect(), q)
+        let scene = screwbender::scenes::scene("rb_sphere7").expect("scene C1");
+        let q: Vec<DQuat> = scene.poses.iter().map(|p| p.rotation).collect();
+        ((0..q.len()).map(|i| i as f64).collect(), q)
     }
 
     fn sphere7_options(frames: usize) -> RbOptions {

@@ -24,20 +24,11 @@ const SPEC_TOL: f64 = 1.5e-6;
 /// Optimised quantities: spec §8 says 1e-4 relative.
 const OPT_TOL: f64 = 1e-4;
 
+/// Scene C1's keyframes (`scenes.md`, the preset `rb_sphere7`), keyframe `i` at `t = i`.
 fn sphere7() -> (Vec<f64>, Vec<DQuat>) {
-    let keys = [
-        [1.0, 0.0, 0.0, 0.0],
-        [0.8, 0.6, 0.0, 0.0],
-        [0.6, 0.48, 0.64, 0.0],
-        [0.0, 0.6, 0.8, 0.0],
-        [-0.6, 0.0, 0.8, 0.0],
-        [-0.8, -0.36, 0.48, 0.0],
-        [-0.6, -0.8, 0.0, 0.0],
-    ];
-    (
-        (0..7).map(|i| i as f64).collect(),
-        keys.iter().map(|&k| wxyz(k)).collect(),
-    )
+    let scene = screwbender::scenes::scene("rb_sphere7").expect("scene C1");
+    let q: Vec<DQuat> = scene.poses.iter().map(|p| p.rotation).collect();
+    ((0..q.len()).map(|i| i as f64).collect(), q)
 }
 
 fn sphere7_options(frames: usize) -> RbOptions {

@@ -5,50 +5,28 @@
 //! `cargo test --target wasm32-unknown-unknown --test teaching_api`.
 #![cfg(target_arch = "wasm32")]
 
-use js_sys::{Array, Float64Array, Reflect, Uint32Array, Uint8Array, JSON};
+use js_sys::{Array, Float64Array, Uint32Array, Uint8Array};
 use screwbender::web::{
     compare_frames_js, polygon_scenes, span_screws_of, split_tweak_step_js, subdivide_decoupled_js,
     subdivide_polygon,
 };
-use wasm_bindgen::{JsCast, JsError, JsValue};
+use wasm_bindgen::{JsError, JsValue};
 use wasm_bindgen_test::*;
+
+mod common;
+
+use common::js::{get, js, message, numbers};
 
 wasm_bindgen_test_configure!(run_in_browser);
 
-fn js(text: &str) -> JsValue {
-    JSON::parse(text).expect("test JSON is valid")
-}
-
-fn message(e: JsError) -> String {
-    let v = JsValue::from(e);
-    v.dyn_ref::<js_sys::Error>()
-        .map(|e| String::from(e.message()))
-        .unwrap_or_default()
-}
-
-fn get(v: &JsValue, key: &str) -> JsValue {
-    Reflect::get(v, &key.into()).unwrap()
-}
-
-fn f64s(v: &JsValue) -> Vec<f64> {
-    Float64Array::from(v.clone()).to_vec()
-}
-
 /// The L cycle of scene A2 as 7 numbers per pose (rotations about z).
 fn l_cycle() -> JsValue {
-    let angles: [f64; 6] = [-60.0, 0.0, 0.0, 45.0, 90.0, 45.0];
-    let origins = [
-        [0.0, 0.0],
-        [6.0, 0.0],
-        [6.0, 2.0],
-        [2.0, 2.0],
-        [2.0, 6.0],
-        [0.0, 6.0],
-    ];
+    let scene = screwbender::scenes::scene("l_cycle_rotated").expect("scene A2");
     let mut data = Vec::new();
-    for (o, a) in origins.iter().zip(angles) {
-        let h = a.to_radians() / 2.0;
-        data.extend_from_slice(&[o[0], o[1], 0.0, h.cos(), 0.0, 0.0, h.sin()]);
+    for p in &scene.poses {
+        data.extend_from_slice(&p.origin.to_array());
+        let q = p.rotation;
+        data.extend_from_slice(&[q.w, q.x, q.y, q.z]);
     }
     Float64Array::from(&data[..]).into()
 }
@@ -89,22 +67,22 @@ fn split_tweak_step_layout() {
         JsValue::from(1),
     )
     .unwrap();
-    assert_eq!(f64s(&get(&step, "input")).len(), 12 * 7);
-    assert_eq!(f64s(&get(&step, "split")).len(), 24 * 7);
-    assert_eq!(f64s(&get(&step, "output")).len(), 24 * 7);
+    assert_eq!(numbers(&get(&step, "input")).len(), 12 * 7);
+    assert_eq!(numbers(&get(&step, "split")).len(), 24 * 7);
+    assert_eq!(numbers(&get(&step, "output")).len(), 24 * 7);
     let tweaked = Uint8Array::from(get(&step, "tweaked")).to_vec();
     assert_eq!(tweaked, vec![1; 24]);
     let slots = Uint32Array::from(get(&step, "helperSlots")).to_vec();
     assert_eq!(slots.len(), 24);
-    assert_eq!(f64s(&get(&step, "helpers")).len(), 24 * 7);
+    assert_eq!(numbers(&get(&step, "helpers")).len(), 24 * 7);
     let kept: Vec<f64> = Array::from(&get(&step, "kept"))
         .iter()
         .map(|v| v.as_f64().unwrap())
         .collect();
     assert_eq!(kept, vec![0.0, 24.0]);
     // The split's old slots are the input.
-    let input = f64s(&get(&step, "input"));
-    let split = f64s(&get(&step, "split"));
+    let input = numbers(&get(&step, "input"));
+    let split = numbers(&get(&step, "split"));
     assert_eq!(&split[..7], &input[..7]);
 }
 
@@ -119,7 +97,7 @@ fn frames_screw_independent_decoupled_not() {
     )
     .unwrap();
     assert_eq!(get(&cmp, "length").as_f64().unwrap(), 48.0);
-    assert_eq!(f64s(&get(&cmp, "screw")).len(), 2 * 48 * 3);
+    assert_eq!(numbers(&get(&cmp, "screw")).len(), 2 * 48 * 3);
     assert!(get(&cmp, "screwDeviation").as_f64().unwrap() < 1e-9);
     assert!(get(&cmp, "decoupledDeviation").as_f64().unwrap() > 1e-2);
     let dec = subdivide_decoupled_js(l_cycle(), JsValue::TRUE, js(r#"{"levels": 2}"#)).unwrap();

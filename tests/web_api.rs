@@ -5,35 +5,18 @@
 //! `cargo test --target wasm32-unknown-unknown --test web_api` (scripts/test.sh runs it).
 #![cfg(target_arch = "wasm32")]
 
-use js_sys::{Array, Float64Array, Reflect, JSON};
+use js_sys::{Array, Float64Array, Reflect};
 use screwbender::web::{screw_info, screw_poses, MotionHandle};
-use wasm_bindgen::{JsCast, JsError, JsValue};
+use wasm_bindgen::{JsError, JsValue};
 use wasm_bindgen_test::*;
+
+mod common;
+
+use common::js::{get, js, message, numbers};
 
 wasm_bindgen_test_configure!(run_in_browser);
 
 const H: f64 = std::f64::consts::FRAC_1_SQRT_2;
-
-/// A JS value from JSON text.
-fn js(text: &str) -> JsValue {
-    JSON::parse(text).expect("test JSON is valid")
-}
-
-/// The message a JS caller would see.
-fn message(e: JsError) -> String {
-    let v = JsValue::from(e);
-    v.dyn_ref::<js_sys::Error>()
-        .map(|e| String::from(e.message()))
-        .unwrap_or_default()
-}
-
-fn get(v: &JsValue, key: &str) -> JsValue {
-    Reflect::get(v, &key.into()).unwrap()
-}
-
-fn numbers(v: &JsValue) -> Vec<f64> {
-    Array::from(v).iter().map(|x| x.as_f64().unwrap()).collect()
-}
 
 fn assert_near(a: &[f64], b: &[f64], tol: f64) {
     assert_eq!(a.len(), b.len());

@@ -4,6 +4,7 @@
 use wasm_bindgen::prelude::*;
 
 use super::convert::{count, f64_array, is_absent, point_from_js, push_kinematics, string};
+use super::motion_api::sample_parameters;
 use super::MotionHandle;
 use crate::methods::{sampled_difference, Side};
 use crate::{Error, Timing, MAX_REFINED_POSES};
@@ -16,17 +17,6 @@ fn timing(times: &JsValue, poses: usize, closed: bool) -> Result<Timing, Error> 
         Some(f64_array(times, "times", poses + 2)?)
     };
     Timing::for_poses(times, poses, closed)
-}
-
-/// `count` uniform times over `[T_0, T_last]` (the end excluded for a cycle).
-fn times_of(timing: &Timing, closed: bool, count: usize) -> impl Iterator<Item = f64> {
-    let (a, b) = timing.duration();
-    let d = if closed {
-        count as f64
-    } else {
-        count.saturating_sub(1).max(1) as f64
-    };
-    (0..count).map(move |k| a + (b - a) * k as f64 / d)
 }
 
 #[wasm_bindgen(js_class = Motion)]
@@ -75,7 +65,7 @@ impl MotionHandle {
         let h = 0.5f64.powi(sub.levels as i32);
         self.with_refined(|m| {
             let mut out = Vec::with_capacity(n * super::KINEMATICS_STRIDE);
-            for t in times_of(&timing, doc.closed, n) {
+            for t in sample_parameters(timing.duration(), doc.closed, n) {
                 let (u, du, ddu) = timing.parameter_derivatives(t);
                 let k = if limit {
                     // One-sided within three steps of an open motion's ends.
@@ -111,7 +101,7 @@ pub fn timing_map(
     let n = count(&samples, "count", MAX_REFINED_POSES)?;
     let timing = timing(&times, poses, closed)?;
     let mut out = Vec::with_capacity(3 * n);
-    for t in times_of(&timing, closed, n) {
+    for t in sample_parameters(timing.duration(), closed, n) {
         let (u, du) = timing.parameter(t);
         out.extend_from_slice(&[t, u, du]);
     }

@@ -10,6 +10,7 @@ use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
 use super::convert::{count, is_absent, plain, poses_from_fn, push_kinematics, to_js};
+use super::motion_api::sample_parameters;
 use super::MotionHandle;
 use crate::methods::{
     compare_methods, fit_quaternion_spline, kinematics_at, motion_metrics, Derivatives, Method,
@@ -147,17 +148,6 @@ pub fn methods() -> Result<JsValue, JsError> {
     to_js(&list)
 }
 
-/// Uniform parameters over `domain`: `count` of them, the end included for an open motion.
-fn uniform(domain: (f64, f64), closed: bool, count: usize) -> impl Iterator<Item = f64> {
-    let (a, b) = domain;
-    let d = if closed {
-        count as f64
-    } else {
-        count.saturating_sub(1).max(1) as f64
-    };
-    (0..count).map(move |k| a + (b - a) * k as f64 / d)
-}
-
 /// Body points from an optional array of `[x, y, z]`.
 fn body_points(value: &JsValue) -> Result<Option<Vec<DVec3>>, Error> {
     if is_absent(value) {
@@ -218,7 +208,7 @@ impl MotionHandle {
         let n = count(&samples, "count", MAX_REFINED_POSES)?;
         let (doc, _) = self.snapshot()?;
         let motion = build(&doc, m)?;
-        let us: Vec<f64> = uniform(motion.domain(), doc.closed, n).collect();
+        let us: Vec<f64> = sample_parameters(motion.domain(), doc.closed, n).collect();
         Ok(poses_from_fn(n, |k| motion.pose_at(us[k])))
     }
 
@@ -239,7 +229,7 @@ impl MotionHandle {
         let motion = build(&doc, m)?;
         let mut out = Vec::with_capacity(n * super::KINEMATICS_STRIDE);
         let end = motion.domain().1;
-        for u in uniform(motion.domain(), doc.closed, n) {
+        for u in sample_parameters(motion.domain(), doc.closed, n) {
             // One-sided at the end of an open motion (nothing lies after it).
             let side = if u >= end { Side::Left } else { Side::Right };
             let k = kinematics_at(motion.as_ref(), u, local, side);

@@ -132,7 +132,11 @@ impl MotionHandle {
 
 /// Uniform parameters as in [`Motion::sample`]: `[start, end)` for a cycle, `[start, end]`
 /// inclusive for an open motion.
-fn sample_parameters(domain: (f64, f64), closed: bool, count: usize) -> impl Iterator<Item = f64> {
+pub(crate) fn sample_parameters(
+    domain: (f64, f64),
+    closed: bool,
+    count: usize,
+) -> impl Iterator<Item = f64> {
     let (a, b) = domain;
     let denom = if closed {
         count as f64

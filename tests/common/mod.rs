@@ -3,6 +3,8 @@
 
 #[cfg(not(target_arch = "wasm32"))]
 pub mod cli;
+#[cfg(target_arch = "wasm32")]
+pub mod js;
 
 use glam::{DQuat, DVec3};
 use screwbender::Pose;

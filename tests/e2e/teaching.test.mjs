@@ -8,52 +8,24 @@
 // the wasm export in the page. Screenshots go to artifacts/e2e-<backend>/teach-<view>.png.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawn } from 'node:child_process';
 import fs from 'node:fs';
-import net from 'node:net';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { launch, openPage, waitFrames } from './lib.mjs';
+import { openPage, waitFrames, startPlayground, ROOT, BACKEND } from './lib.mjs';
 
-const BACKEND = process.env.E2E_BACKEND ?? 'webgpu';
-const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 const ARTIFACTS = path.join(ROOT, 'artifacts', `e2e-${BACKEND}`);
 
-let server;
-let browser;
+let play;
 let page;
 let problems;
 
-async function freePort() {
-  return new Promise((resolve) => {
-    const s = net.createServer();
-    s.listen(0, '127.0.0.1', () => {
-      const { port } = s.address();
-      s.close(() => resolve(port));
-    });
-  });
-}
-
 before(async () => {
-  assert.ok(fs.existsSync(path.join(ROOT, 'www/pkg/screwbender_bg.wasm')), 'build the wasm first (scripts/serve.sh)');
   fs.mkdirSync(ARTIFACTS, { recursive: true });
-  const port = await freePort();
-  server = spawn(process.execPath, [path.join(ROOT, 'scripts/serve.mjs'), path.join(ROOT, 'www')], {
-    env: { ...process.env, PORT: String(port), SERVE_QUIET: '1' },
-    stdio: ['ignore', 'pipe', 'inherit'],
-  });
-  await new Promise((resolve, reject) => {
-    server.stdout.on('data', (d) => d.toString().includes('http://') && resolve());
-    server.on('exit', (c) => reject(new Error(`server exited ${c}`)));
-  });
-  browser = await launch(BACKEND);
-  const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
-  ({ page, problems } = await openPage(context, `http://127.0.0.1:${port}/`, BACKEND));
+  play = await startPlayground();
+  ({ page, problems } = await openPage(play.context, play.url, BACKEND));
 });
 
 after(async () => {
-  await browser?.close();
-  server?.kill();
+  await play?.close();
 });
 
 const sb = (f, arg) => page.evaluate(f, arg);
