@@ -314,67 +314,11 @@ fn example_h_general_3d() {
     );
 }
 
-fn v2(pts: &[[f64; 2]]) -> Vec<DVec2> {
-    pts.iter().map(|p| DVec2::from_array(*p)).collect()
-}
-
 /// Spec §4: one step of each point scheme on the L polygon, by both rule sets.
 #[test]
 fn l_polygon_one_step() {
     let l = scenes::polygon_scenes().remove(0).vertices;
-    let expected = [
-        (
-            Scheme::BSpline,
-            v2(&[
-                [0.75, 0.75],
-                [3.0, 0.0],
-                [5.25, 0.25],
-                [6.0, 1.0],
-                [5.5, 1.75],
-                [4.0, 2.0],
-                [2.5, 2.5],
-                [2.0, 4.0],
-                [1.75, 5.5],
-                [1.0, 6.0],
-                [0.25, 5.25],
-                [0.0, 3.0],
-            ]),
-        ),
-        (
-            Scheme::FourPoint,
-            v2(&[
-                [0.0, 0.0],
-                [3.0, -0.5],
-                [6.0, 0.0],
-                [6.625, 1.0],
-                [6.0, 2.0],
-                [4.0, 1.875],
-                [2.0, 2.0],
-                [1.875, 4.0],
-                [2.0, 6.0],
-                [1.0, 6.625],
-                [0.0, 6.0],
-                [-0.5, 3.0],
-            ]),
-        ),
-        (
-            Scheme::Jarek,
-            v2(&[
-                [0.375, 0.375],
-                [3.0, -0.25],
-                [5.625, 0.125],
-                [6.3125, 1.0],
-                [5.75, 1.875],
-                [4.0, 1.9375],
-                [2.25, 2.25],
-                [1.9375, 4.0],
-                [1.875, 5.75],
-                [1.0, 6.3125],
-                [0.125, 5.625],
-                [-0.25, 3.0],
-            ]),
-        ),
-    ];
+    let expected = common::l_polygon_one_step();
     for (scheme, want) in expected {
         for rules in [Rules::Direct, Rules::SplitTweak] {
             let got = Subdivision::new(scheme, rules, 1).apply(&l, true).unwrap();

@@ -6,8 +6,8 @@ pub mod cli;
 #[cfg(target_arch = "wasm32")]
 pub mod js;
 
-use glam::{DQuat, DVec3};
-use screwbender::Pose;
+use glam::{DQuat, DVec2, DVec3};
+use screwbender::{Pose, Scheme};
 
 /// A pose from an origin and a `[w, x, y, z]` quaternion that may be rounded (normalised here).
 pub fn pose(o: [f64; 3], q: [f64; 4]) -> Pose {
@@ -130,4 +130,64 @@ impl Rng {
         }
         poses
     }
+}
+
+/// Spec §4 (`screwbender.md`): one subdivision step of the L polygon (scene A4 `polygon_l`) by
+/// each point scheme, the same for both rule sets.
+pub fn l_polygon_one_step() -> Vec<(Scheme, Vec<DVec2>)> {
+    let points =
+        |pts: &[[f64; 2]]| -> Vec<DVec2> { pts.iter().map(|p| DVec2::from_array(*p)).collect() };
+    vec![
+        (
+            Scheme::BSpline,
+            points(&[
+                [0.75, 0.75],
+                [3.0, 0.0],
+                [5.25, 0.25],
+                [6.0, 1.0],
+                [5.5, 1.75],
+                [4.0, 2.0],
+                [2.5, 2.5],
+                [2.0, 4.0],
+                [1.75, 5.5],
+                [1.0, 6.0],
+                [0.25, 5.25],
+                [0.0, 3.0],
+            ]),
+        ),
+        (
+            Scheme::FourPoint,
+            points(&[
+                [0.0, 0.0],
+                [3.0, -0.5],
+                [6.0, 0.0],
+                [6.625, 1.0],
+                [6.0, 2.0],
+                [4.0, 1.875],
+                [2.0, 2.0],
+                [1.875, 4.0],
+                [2.0, 6.0],
+                [1.0, 6.625],
+                [0.0, 6.0],
+                [-0.5, 3.0],
+            ]),
+        ),
+        (
+            Scheme::Jarek,
+            points(&[
+                [0.375, 0.375],
+                [3.0, -0.25],
+                [5.625, 0.125],
+                [6.3125, 1.0],
+                [5.75, 1.875],
+                [4.0, 1.9375],
+                [2.25, 2.25],
+                [1.9375, 4.0],
+                [1.875, 5.75],
+                [1.0, 6.3125],
+                [0.125, 5.625],
+                [-0.25, 3.0],
+            ]),
+        ),
+    ]
 }

@@ -3,15 +3,14 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
-import { openPage, waitFrames, startPlayground, BACKEND } from './lib.mjs';
+import { waitFrames, playgroundPage, BACKEND } from './lib.mjs';
 
 let play;
 let page;
 let problems;
 
 before(async () => {
-  play = await startPlayground({ acceptDownloads: true });
-  ({ page, problems } = await openPage(play.context, play.url, BACKEND));
+  ({ play, page, problems } = await playgroundPage({ acceptDownloads: true }));
   await page.evaluate(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
 });
 

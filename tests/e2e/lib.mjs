@@ -157,3 +157,13 @@ export async function canvasStats(page) {
   }, png.toString('base64'));
   return { ...stats, png };
 }
+
+/**
+ * One playground page for a test file: serves www/, launches Chromium for BACKEND and opens the
+ * page; returns {play, page, problems} (close with play.close()).
+ */
+export async function playgroundPage(options) {
+  const play = await startPlayground(options);
+  const { page, problems } = await openPage(play.context, play.url, BACKEND);
+  return { play, page, problems };
+}

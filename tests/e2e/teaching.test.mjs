@@ -10,7 +10,7 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { openPage, waitFrames, startPlayground, ROOT, BACKEND } from './lib.mjs';
+import { waitFrames, playgroundPage, ROOT, BACKEND } from './lib.mjs';
 
 const ARTIFACTS = path.join(ROOT, 'artifacts', `e2e-${BACKEND}`);
 
@@ -20,8 +20,7 @@ let problems;
 
 before(async () => {
   fs.mkdirSync(ARTIFACTS, { recursive: true });
-  play = await startPlayground();
-  ({ page, problems } = await openPage(play.context, play.url, BACKEND));
+  ({ play, page, problems } = await playgroundPage());
 });
 
 after(async () => {
