@@ -438,7 +438,7 @@ impl MotionHandle {
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] s: JsValue,
     ) -> Result<(), JsError> {
-        let s = finite(&s, "j")?;
+        let s = options::check_j(finite(&s, "j")?)?;
         self.update(|st| {
             st.subdivision.scheme = crate::Scheme::J(s);
             Ok(())
