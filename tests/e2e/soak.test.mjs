@@ -7,7 +7,7 @@
 //   E2E_BACKEND=webgl2 node --test tests/e2e/soak.test.mjs
 //   SOAK_SECONDS=300 SOAK_SEED=42 E2E_BACKEND=webgpu node --test tests/e2e/soak.test.mjs
 //
-// SOAK_SECONDS (default 60, per backend) bounds the run: batches of 100 App operations, each
+// SOAK_SECONDS (default 90, per backend) bounds the run: batches of 100 App operations, each
 // followed by 4 real drags, until the time is up; the counts are printed. The seed is printed
 // and named in every failure message.
 import { test, before, after } from 'node:test';
@@ -22,7 +22,7 @@ import { launch, openPage, waitFrames } from './lib.mjs';
 const BACKEND = process.env.E2E_BACKEND ?? 'webgpu';
 const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 const VIEWPORT = { width: 1280, height: 800 };
-const SECONDS = Number(process.env.SOAK_SECONDS ?? 60);
+const SECONDS = Number(process.env.SOAK_SECONDS ?? 90);
 /** App operations per batch, and real mouse drags after each batch. */
 const OPS_PER_BATCH = 100;
 const DRAGS_PER_BATCH = 4;
