@@ -44,6 +44,11 @@ fn scratch(name: &str, contents: &[u8]) -> PathBuf {
     path
 }
 
+/// Removes a file made by [`scratch`] and its directory.
+fn remove(path: &std::path::Path) {
+    let _ = std::fs::remove_dir_all(path.parent().unwrap());
+}
+
 /// Asserts that the CLI refuses: exit status 2, nothing on stdout, one stderr line containing
 /// every string of `want`.
 #[track_caller]
@@ -75,6 +80,7 @@ fn document_refused(text: &str, message: &str) {
     }
     let path = scratch("doc.json", text.as_bytes());
     cli_refuses(&["import", path.to_str().unwrap()], "", &[message]);
+    remove(&path);
 }
 
 /// The CSV refused by the core with exactly `message`, and by `screwbender import`.
@@ -84,6 +90,7 @@ fn csv_refused(text: &str, message: &str) {
     assert_eq!(e.to_string(), message);
     let path = scratch("poses.csv", text.as_bytes());
     cli_refuses(&["import", path.to_str().unwrap()], "", &[message]);
+    remove(&path);
 }
 
 #[test]
@@ -447,6 +454,7 @@ fn malformed_files_are_refused_with_their_position() {
     let path = scratch("latin1.json", b"{\"name\":\"caf\xe9\",\"poses\":[]}");
     cli_refuses(&["subdivide", path.to_str().unwrap()], "", &["latin1.json"]);
     cli_refuses(&["import", path.to_str().unwrap()], "", &["not UTF-8 text"]);
+    remove(&path);
     // CSV: missing fields, text in a number field, a header without a pose column.
     csv_refused(
         &csv_with("1,2,3"),
@@ -472,12 +480,14 @@ fn malformed_files_are_refused_with_their_position() {
         "",
         &["truncated.glb: glb: "],
     );
+    remove(&path);
     let path = scratch("notgltf.gltf", br#"{"poses": []}"#);
     cli_refuses(
         &["import", path.to_str().unwrap()],
         "",
         &["notgltf.gltf: gltf: invalid glTF JSON"],
     );
+    remove(&path);
 }
 
 #[test]
@@ -496,6 +506,7 @@ fn oversized_files_are_refused_before_parsing() {
         "",
         &["huge.json", "is larger than the limit of 16777216 bytes"],
     );
+    remove(&path);
     for name in ["huge.glb", "huge.csv"] {
         let path = scratch(name, b"");
         let f = std::fs::OpenOptions::new().write(true).open(&path).unwrap();
@@ -508,6 +519,7 @@ fn oversized_files_are_refused_before_parsing() {
                 &format!("is larger than the limit of {MAX_GLTF_BYTES} bytes"),
             ],
         );
+        remove(&path);
     }
     // Standard input has no size to check first: the document limit applies after reading.
     cli_refuses(&["subdivide"], &big, &["document: ", "out of range"]);
