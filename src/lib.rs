@@ -122,14 +122,15 @@ pub use morph::{morph_mesh, morph_weights, MORPH_RESOLUTION};
 pub use motion::{Kinematics, Motion};
 pub use polyscrew::Polyscrew;
 pub use pose::{
-    quat_from_wxyz, quat_to_wxyz, Pose, ORTHONORMAL_TOLERANCE, UNIT_QUATERNION_TOLERANCE,
+    quat_from_wxyz, quat_to_wxyz, Pose, MAX_COORDINATE, ORTHONORMAL_TOLERANCE,
+    UNIT_QUATERNION_TOLERANCE,
 };
 pub use sampling::{
     check_timing, check_tolerance, interpolate_linear, linear_deviation, sample_fixed_rate,
     sample_motion, sample_polyscrew, sample_screwbender, trajectory, Sample, DEFAULT_TOLERANCE,
     MAX_SAMPLES, MAX_SAMPLE_ANGLE, MIN_TOLERANCE,
 };
-pub use scheme::{Rules, Scheme};
+pub use scheme::{Rules, Scheme, MAX_J_PARAMETER};
 pub use screw::{
     screw, screw_paper, BasisPair, PaperScrew, Screw, ScrewKind, ScrewParameters, ANGLE_EPSILON,
     HALF_TURN_EPSILON, LENGTH_EPSILON, PAPER_CROSS_EPSILON,

@@ -17,6 +17,27 @@ pub const UNIT_QUATERNION_TOLERANCE: f64 = 1e-3;
 /// `1e-4` accepts bases printed with five or six decimals.
 pub const ORTHONORMAL_TOLERANCE: f64 = 1e-4;
 
+/// Largest accepted magnitude of a user-given origin coordinate: `1e100`.
+///
+/// Far beyond any physical scene (an `f64` resolves a millimetre only up to about `1e12`), and
+/// small enough that squared lengths and subdivision weights never overflow (`(1e100)² = 1e200`):
+/// every accepted pose gives finite results. Larger coordinates are refused with
+/// [`Error::OutOfRange`] naming `origin`.
+pub const MAX_COORDINATE: f64 = 1e100;
+
+/// Checks a user-given origin: finite, each coordinate within [`MAX_COORDINATE`].
+fn check_origin(origin: &[f64; 3]) -> Result<(), Error> {
+    check_finite(origin, "origin")?;
+    match origin.iter().find(|v| v.abs() > MAX_COORDINATE) {
+        Some(v) => Err(Error::OutOfRange {
+            at: "origin".into(),
+            value: format!("{v:e}"),
+            expected: format!("coordinates within ±{MAX_COORDINATE:e}"),
+        }),
+        None => Ok(()),
+    }
+}
+
 /// A rigid pose `L = [O, I, J, K]`: the origin `O` and the rotation whose matrix has columns
 /// `I, J, K` (images of the local x, y, z axes).
 ///
@@ -64,9 +85,10 @@ impl Pose {
     /// A pose from an origin and a quaternion in the crate's file/API order `[w, x, y, z]`.
     ///
     /// The quaternion must be finite, non-zero and of norm within [`UNIT_QUATERNION_TOLERANCE`]
-    /// of 1; it is then normalised. Errors name `origin` or `rotation`.
+    /// of 1; it is then normalised. The origin must be finite with coordinates within
+    /// [`MAX_COORDINATE`]. Errors name `origin` or `rotation`.
     pub fn from_wxyz(origin: [f64; 3], rotation: [f64; 4]) -> Result<Pose, Error> {
-        check_finite(&origin, "origin")?;
+        check_origin(&origin)?;
         let q = quat_from_wxyz(rotation).map_err(|e| e.within("rotation"))?;
         Ok(Pose::new(DVec3::from_array(origin), q))
     }
@@ -77,7 +99,7 @@ impl Pose {
     /// It is *not* silently repaired beyond that: use [`Pose::from_basis_orthonormalized`] to
     /// accept any non-degenerate right-handed basis.
     pub fn from_basis(origin: [f64; 3], basis: [[f64; 3]; 3]) -> Result<Pose, Error> {
-        check_finite(&origin, "origin")?;
+        check_origin(&origin)?;
         let m = basis_matrix(basis)?;
         let gram = m.transpose() * m;
         let deviation = (gram - DMat3::IDENTITY)
@@ -104,7 +126,7 @@ impl Pose {
         origin: [f64; 3],
         basis: [[f64; 3]; 3],
     ) -> Result<Pose, Error> {
-        check_finite(&origin, "origin")?;
+        check_origin(&origin)?;
         let m = basis_matrix(basis)?;
         let det = m.determinant();
         let scale = m.x_axis.length() * m.y_axis.length() * m.z_axis.length();
@@ -207,6 +229,12 @@ pub fn quat_from_wxyz(q: [f64; 4]) -> Result<DQuat, Error> {
             at: String::new(),
             norm,
         });
+    }
+    // Quaternions already unit to rounding pass through untouched, so reading back a pose this
+    // crate wrote (a saved session, an exported document) gives the same bits, and validating
+    // twice changes nothing (the rule of `checked_pose`).
+    if (norm - 1.0).abs() <= 4.0 * f64::EPSILON {
+        return Ok(DQuat::from_xyzw(x, y, z, w));
     }
     Ok(DQuat::from_xyzw(x / norm, y / norm, z / norm, w / norm))
 }

@@ -5,6 +5,13 @@ use std::str::FromStr;
 
 use crate::error::Error;
 
+/// Largest accepted `|s|` of the J_s family ([`Scheme::J`]): `4`.
+///
+/// The family's useful range is `[0, 1]` (4-point to B-spline); beyond a few units the old-vertex
+/// rule `b + s(a − 2b + c)/8` amplifies differences by about `|s|/2` per level, so a huge `s`
+/// overflows to infinities within the level cap. `±4` keeps the growth below `3²⁰ ≈ 3.5·10⁹`.
+pub const MAX_J_PARAMETER: f64 = 4.0;
+
 /// A subdivision scheme (spec §4, §6; issue "J_s family").
 ///
 /// The three named schemes are the paper's; [`Scheme::J`] is the Rossignac–Schaefer J-spline

@@ -31,7 +31,9 @@ impl ScrewBender {
         let control = Polyscrew::new(control, closed)?.poses().to_vec();
         let poses = subdivision.apply(&control, closed)?;
         let h = 0.5f64.powi(subdivision.levels as i32);
-        let refined = Polyscrew::with_span_length(poses, closed, h)?;
+        // Unreachable for validated poses and options (they cannot overflow); named if it happens.
+        let refined =
+            Polyscrew::with_span_length(poses, closed, h).map_err(|e| e.within("refined"))?;
         Ok(ScrewBender {
             control,
             closed,

@@ -7,7 +7,7 @@
 
 use crate::blend::Blend;
 use crate::error::Error;
-use crate::scheme::{Rules, Scheme};
+use crate::scheme::{Rules, Scheme, MAX_J_PARAMETER};
 
 /// The largest number of elements a subdivision may produce or hold in between (the memory
 /// guard): `2²⁰ = 1 048 576` poses, about 59 MB. Asking for more returns
@@ -36,11 +36,22 @@ impl Subdivision {
     }
 
     /// Checks the options themselves (not the input): the J_s family exists only with the direct
-    /// rules, and its parameter must be finite.
+    /// rules, and its parameter must be finite and within [`MAX_J_PARAMETER`].
     pub fn validate(&self) -> Result<(), Error> {
         if let Scheme::J(s) = self.scheme {
             if !s.is_finite() {
                 return Err(Error::NonFinite { at: "s".into() });
+            }
+            if s.abs() > MAX_J_PARAMETER {
+                return Err(Error::OutOfRange {
+                    at: "s".into(),
+                    value: if s.abs() < 1e21 {
+                        s.to_string()
+                    } else {
+                        format!("{s:e}")
+                    },
+                    expected: format!("-{MAX_J_PARAMETER} to {MAX_J_PARAMETER}"),
+                });
             }
             if self.rules == Rules::SplitTweak {
                 return Err(Error::Unsupported {

@@ -14,7 +14,7 @@ use std::f64::consts::PI;
 
 use common::{max_pose_error, Rng};
 use glam::DQuat;
-use screwbender::{MotionDocument, Pose, Rules, Scheme, Subdivision};
+use screwbender::{MotionDocument, Pose, Rules, Scheme, Subdivision, MAX_REFINED_POSES};
 
 fn all_rules() -> Vec<Subdivision> {
     let mut v = Vec::new();
@@ -96,11 +96,11 @@ fn rotations_near_zero_and_near_pi() {
     }
 }
 
-/// Local-frame and world invariance with tolerances scaled to the scene size.
+/// Local-frame and world invariance with tolerances scaled to the scene size (1e-6 to 1e6).
 #[test]
 fn invariances_at_large_scale() {
     let mut rng = Rng::new(33);
-    for scale in [1e-4, 1e4] {
+    for scale in [1e-6, 1e-4, 1e4, 1e6] {
         let poses: Vec<Pose> = rng
             .cycle(6, 1.0)
             .iter()
@@ -137,6 +137,68 @@ fn long_cycles_and_the_level_cap() {
         .apply(&poses, true)
         .unwrap_err();
     assert_eq!(e.path(), "levels");
+}
+
+/// Every scale from 1e-6 to 1e6 combined with adjacent rotations near 0 and near π, open and
+/// closed, every scheme and rule set: outputs finite, unit to 1e-12, and scale covariant
+/// (refined origins scale by `k`, rotations do not change) to 1e-11 relative.
+#[test]
+fn scales_and_extreme_rotations_open_and_closed() {
+    let mut rng = Rng::new(36);
+    for angle in [1e-12, 1e-7, PI - 1e-7, PI] {
+        let step = DQuat::from_axis_angle(rng.direction(), angle);
+        let mut base = vec![rng.pose(1.0)];
+        for _ in 1..5 {
+            let last = *base.last().unwrap();
+            base.push(Pose::new(
+                last.origin + rng.direction(),
+                (step * last.rotation).normalize(),
+            ));
+        }
+        for sub in all_rules() {
+            for closed in [true, false] {
+                let reference = sub.apply(&base, closed).unwrap();
+                for k in [1e-6, 1e-3, 1e3, 1e6] {
+                    let scaled: Vec<Pose> = base
+                        .iter()
+                        .map(|p| Pose::new(p.origin * k, p.rotation))
+                        .collect();
+                    let q = sub.apply(&scaled, closed).unwrap();
+                    assert!(healthy(&q), "angle {angle} k {k} {sub:?} closed={closed}");
+                    let back: Vec<Pose> = q
+                        .iter()
+                        .map(|p| Pose::new(p.origin / k, p.rotation))
+                        .collect();
+                    let err = max_pose_error(&back, &reference);
+                    assert!(
+                        err < 1e-11,
+                        "angle {angle} k {k} {sub:?} closed={closed}: {err:e}"
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// Deep levels up to the memory guard: a 4-pose cycle (one span near a half turn) at level 18
+/// gives exactly `MAX_REFINED_POSES` healthy poses; one more level is refused. (Native only:
+/// a million screws are too slow for the browser test run.)
+#[cfg(not(target_arch = "wasm32"))]
+#[test]
+fn deep_levels_up_to_the_cap() {
+    let mut rng = Rng::new(37);
+    let mut poses = rng.cycle(4, 3.0);
+    // One span near a half turn.
+    poses[1] = Pose::new(
+        poses[1].origin,
+        (DQuat::from_axis_angle(rng.direction(), PI - 1e-9) * poses[0].rotation).normalize(),
+    );
+    let sub = Subdivision::new(Scheme::Jarek, Rules::Direct, 18);
+    let q = sub.apply(&poses, true).unwrap();
+    assert_eq!(q.len(), MAX_REFINED_POSES);
+    assert!(healthy(&q));
+    let deeper = Subdivision::new(Scheme::Jarek, Rules::Direct, 19);
+    assert_eq!(deeper.apply(&poses, true).unwrap_err().path(), "levels");
 }
 
 /// Random edits of a valid document (deleted, duplicated, swapped characters; spliced-in
@@ -209,6 +271,25 @@ fn mangled_documents_never_panic() {
         ok > 0 && err > 0,
         "the mutations should produce both ({ok} ok, {err} errors)"
     );
+}
+
+/// Validation is idempotent: a unit quaternion (to rounding) passes `Pose::from_wxyz` bit for
+/// bit, and any accepted quaternion is stable after one normalisation, so saving and reloading a
+/// motion (the page's autosave, share links) reproduces it exactly. Found by the page's share-link
+/// test: reloading a session changed the last bits of rotations.
+#[test]
+fn validation_keeps_unit_quaternions_bit_for_bit() {
+    let mut rng = Rng::new(38);
+    for _ in 0..10_000 {
+        let q = rng.rotation();
+        let wxyz = [q.w, q.x, q.y, q.z];
+        let p = Pose::from_wxyz([1.0, 2.0, 3.0], wxyz).unwrap();
+        assert_eq!(p.rotation_wxyz(), wxyz);
+        let off = wxyz.map(|c| c * (1.0 + 1e-4 * (rng.unit() - 0.5)));
+        let once = Pose::from_wxyz([0.0; 3], off).unwrap().rotation_wxyz();
+        let twice = Pose::from_wxyz([0.0; 3], once).unwrap().rotation_wxyz();
+        assert_eq!(once, twice, "{off:?}");
+    }
 }
 
 /// Pose constructors reject every non-finite component, naming where it is.

@@ -71,6 +71,24 @@ pub(crate) fn finite(value: &JsValue, at: &str) -> Result<f64, Error> {
     }
 }
 
+/// `v` as JavaScript prints it (`Infinity`, `NaN`, `1e+300`), for error messages about numbers
+/// that came from JavaScript (Rust would print `inf` and 300 digits).
+pub(crate) fn js_number(v: f64) -> String {
+    if v.is_nan() {
+        "NaN".into()
+    } else if v.is_infinite() {
+        if v > 0.0 { "Infinity" } else { "-Infinity" }.into()
+    } else if v != 0.0 && !(1e-6..1e21).contains(&v.abs()) {
+        let s = format!("{v:e}");
+        match s.split_once('e') {
+            Some((m, e)) if !e.starts_with('-') => format!("{m}e+{e}"),
+            _ => s,
+        }
+    } else {
+        v.to_string()
+    }
+}
+
 /// A whole number in `0..=max`, as `usize`.
 pub(crate) fn count(value: &JsValue, at: &str, max: usize) -> Result<usize, Error> {
     let v = number(value, at)?;
@@ -79,7 +97,7 @@ pub(crate) fn count(value: &JsValue, at: &str, max: usize) -> Result<usize, Erro
     } else {
         Err(Error::OutOfRange {
             at: at.to_string(),
-            value: v.to_string(),
+            value: js_number(v),
             expected: format!("a whole number from 0 to {max}"),
         })
     }
@@ -93,7 +111,7 @@ pub(crate) fn check_index(v: f64, at: &str, len: usize) -> Result<usize, Error> 
     } else {
         Err(Error::OutOfRange {
             at: at.to_string(),
-            value: v.to_string(),
+            value: js_number(v),
             expected: match len {
                 0 => "no index (the sequence is empty)".to_string(),
                 _ => format!("an integer from 0 to {}", len - 1),

@@ -441,13 +441,14 @@ impl MotionHandle {
         self.read(|s| s.subdivision.scheme.j_parameter())
     }
 
-    /// Switches to the J_s family with parameter `s` (needs the direct rules).
+    /// Switches to the J_s family with parameter `s`, from −4 to 4 ([`crate::MAX_J_PARAMETER`];
+    /// needs the direct rules).
     #[wasm_bindgen(js_name = setJ)]
     pub fn set_j(
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] s: JsValue,
     ) -> Result<(), JsError> {
-        let s = finite(&s, "j")?;
+        let s = options::check_j(finite(&s, "j")?)?;
         self.update(|st| {
             st.subdivision.scheme = crate::Scheme::J(s);
             Ok(())

@@ -87,18 +87,24 @@ pub(crate) fn parse_levels(v: f64) -> Result<u32, Error> {
     } else {
         Err(Error::OutOfRange {
             at: "levels".into(),
-            value: v.to_string(),
+            value: super::convert::js_number(v),
             expected: "a whole number ≥ 0".into(),
         })
     }
 }
 
 /// Checks a J_s parameter given on its own (`setJ`) or next to a scheme name.
-fn check_j(j: f64) -> Result<f64, Error> {
-    if j.is_finite() {
-        Ok(j)
-    } else {
+pub(crate) fn check_j(j: f64) -> Result<f64, Error> {
+    if !j.is_finite() {
         Err(Error::NonFinite { at: "j".into() })
+    } else if j.abs() > crate::MAX_J_PARAMETER {
+        Err(Error::OutOfRange {
+            at: "j".into(),
+            value: super::convert::js_number(j),
+            expected: format!("-{0} to {0}", crate::MAX_J_PARAMETER),
+        })
+    } else {
+        Ok(j)
     }
 }
 

@@ -26,9 +26,9 @@ export interface Pose {
 }
 
 /**
- * A pose as accepted by the API: the origin and either a unit quaternion `[w, x, y, z]` (norm
- * within 1e-3 of 1; normalised) or the basis vectors `I, J, K` (the columns of the rotation
- * matrix; orthonormal within 1e-4 and right-handed).
+ * A pose as accepted by the API: the origin (coordinates within ±1e100) and either a unit
+ * quaternion `[w, x, y, z]` (norm within 1e-3 of 1; normalised) or the basis vectors `I, J, K`
+ * (the columns of the rotation matrix; orthonormal within 1e-4 and right-handed).
  */
 export type PoseInput =
   | { origin: Vec3; rotation: Quat; basis?: undefined }
@@ -57,7 +57,7 @@ export type RulesName = 'direct' | 'split';
 /** The subdivision options of a `Motion`. */
 export interface SubdivisionOptions {
   scheme: SchemeName;
-  /** The J_s parameter (used by scheme `'j'`; for the named schemes their own value). */
+  /** The J_s parameter (used by scheme `'j'`; for the named schemes their own value), from -4 to 4. */
   j: number;
   rules: RulesName;
   /** Subdivision levels, a whole number >= 0 (limited by `limits().maxRefinedPoses`). */

@@ -1,0 +1,282 @@
+// Soak test of the playground: thousands of random edits through the App (pose edits, inserts,
+// deletes, undo/redo, option changes, preset switches) interleaved with real mouse drags of
+// handles, gizmo parts and the view, for a bounded time. Afterwards: no console error, no CSP
+// violation, no unexpected banner message, every pose finite, the exported session re-imports to
+// the same session, and a reload restores it.
+//
+//   E2E_BACKEND=webgl2 node --test tests/e2e/soak.test.mjs
+//   SOAK_SECONDS=300 SOAK_SEED=42 E2E_BACKEND=webgpu node --test tests/e2e/soak.test.mjs
+//
+// SOAK_SECONDS (default 90, per backend) bounds the run: batches of 100 App operations, each
+// followed by 4 real drags, until the time is up; the counts are printed. The seed is printed
+// and named in every failure message.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { spawn } from 'node:child_process';
+import fs from 'node:fs';
+import net from 'node:net';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { launch, openPage, waitFrames } from './lib.mjs';
+
+const BACKEND = process.env.E2E_BACKEND ?? 'webgpu';
+const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
+const VIEWPORT = { width: 1280, height: 800 };
+const SECONDS = Number(process.env.SOAK_SECONDS ?? 90);
+/** App operations per batch, and real mouse drags after each batch. */
+const OPS_PER_BATCH = 100;
+const DRAGS_PER_BATCH = 4;
+const SEED = Number(process.env.SOAK_SEED ?? (Date.now() % 2 ** 31));
+
+/** Banner messages that random operations may legitimately cause (refused edits). */
+const EXPECTED_MESSAGES = [
+  /^a motion keeps at least 2 poses$/,
+  /^rules: the J_s family is defined with the direct rules only$/,
+  /^levels: the result would have \d+ poses, more than the limit of \d+$/,
+];
+
+let server;
+let browser;
+let context;
+let page;
+let problems;
+let url;
+
+async function freePort() {
+  return new Promise((resolve) => {
+    const s = net.createServer();
+    s.listen(0, '127.0.0.1', () => {
+      const { port } = s.address();
+      s.close(() => resolve(port));
+    });
+  });
+}
+
+before(async () => {
+  assert.ok(fs.existsSync(path.join(ROOT, 'www/pkg/screwbender_bg.wasm')), 'build the wasm first (scripts/serve.sh)');
+  const port = await freePort();
+  server = spawn(process.execPath, [path.join(ROOT, 'scripts/serve.mjs'), path.join(ROOT, 'www')], {
+    env: { ...process.env, PORT: String(port), SERVE_QUIET: '1' },
+    stdio: ['ignore', 'pipe', 'inherit'],
+  });
+  await new Promise((resolve, reject) => {
+    server.stdout.on('data', (d) => d.toString().includes('http://') && resolve());
+    server.on('exit', (c) => reject(new Error(`server exited ${c}`)));
+  });
+  url = `http://127.0.0.1:${port}/`;
+  browser = await launch(BACKEND);
+  context = await browser.newContext({ viewport: VIEWPORT });
+  await context.addInitScript(() => {
+    window.__csp = [];
+    document.addEventListener('securitypolicyviolation', (e) => window.__csp.push(`${e.violatedDirective}: ${e.blockedURI}`));
+  });
+  ({ page, problems } = await openPage(context, url, BACKEND));
+});
+
+after(async () => {
+  await browser?.close();
+  server?.kill();
+});
+
+const sb = (f, arg) => page.evaluate(f, arg);
+
+/** mulberry32 (the same generator runs in the page for the App operations). */
+function prng(seed) {
+  let a = seed >>> 0;
+  return () => {
+    a = (a + 0x6d2b79f5) >>> 0;
+    let t = a;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}
+
+/**
+ * Runs `count` random App operations in the page (seeded by `seed`); returns what ran and the
+ * first problem found (a thrown exception, a non-finite pose), if any.
+ */
+function randomOps({ seed, count }) {
+  let a = seed >>> 0;
+  const rand = () => {
+    a = (a + 0x6d2b79f5) >>> 0;
+    let t = a;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+  const pick = (xs) => xs[Math.floor(rand() * xs.length)];
+  const app = window.screwbender.app;
+  const presets = app.scenes.map((s) => s.id);
+  const counts = {};
+  const unit = (q) => {
+    const n = Math.hypot(...q);
+    return q.map((x) => x / n);
+  };
+  const ops = {
+    setPose: 30,
+    select: 8,
+    insert: 8,
+    delete: 8,
+    undo: 10,
+    redo: 6,
+    levels: 5,
+    scheme: 4,
+    j: 2,
+    rules: 2,
+    closed: 2,
+    mode: 2,
+    preset: 2,
+  };
+  const table = Object.entries(ops).flatMap(([k, w]) => Array(w).fill(k));
+  for (let step = 0; step < count; step++) {
+    let op = pick(table);
+    const n = app.motion.poseCount;
+    if (op === 'insert' && n > 24) op = 'delete';
+    counts[op] = (counts[op] ?? 0) + 1;
+    try {
+      switch (op) {
+        case 'setPose': {
+          const i = Math.floor(rand() * n);
+          const p = app.motion.pose(i);
+          const origin = p.origin.map((x) => x + (rand() - 0.5) * 0.5);
+          const d = [1, (rand() - 0.5) * 0.4, (rand() - 0.5) * 0.4, (rand() - 0.5) * 0.4];
+          const [w, x, y, z] = p.rotation;
+          const q = [
+            d[0] * w - d[1] * x - d[2] * y - d[3] * z,
+            d[0] * x + d[1] * w + d[2] * z - d[3] * y,
+            d[0] * y - d[1] * z + d[2] * w + d[3] * x,
+            d[0] * z + d[1] * y - d[2] * x + d[3] * w,
+          ];
+          app.edit(() => app.motion.setPose(i, { origin, rotation: unit(q) }), rand() < 0.3 ? 'soak' : null);
+          break;
+        }
+        case 'select':
+          app.select(Math.floor(rand() * (n + 1)) - 1);
+          break;
+        case 'insert':
+          if (app.selected < 0) app.select(Math.floor(rand() * n));
+          app.insertAfterSelected();
+          break;
+        case 'delete':
+          if (app.selected < 0) app.select(Math.floor(rand() * n));
+          app.deleteSelected();
+          break;
+        case 'undo':
+          app.undo();
+          break;
+        case 'redo':
+          app.redo();
+          break;
+        case 'levels':
+          app.setOption('levels', Math.floor(rand() * 7));
+          break;
+        case 'scheme':
+          app.setScheme(pick(['bspline', 'fourpoint', 'jarek']));
+          break;
+        case 'j':
+          app.setJ(Math.round(rand() * 100) / 100);
+          break;
+        case 'rules':
+          app.setOption('rules', pick(['direct', 'split']));
+          break;
+        case 'closed':
+          app.setClosed(rand() < 0.5);
+          break;
+        case 'mode':
+          app.setMode(pick(['translate', 'rotate']));
+          break;
+        case 'preset':
+          app.loadPreset(pick(presets));
+          break;
+      }
+    } catch (e) {
+      return { counts, problem: `step ${step} (${op}) threw: ${e?.stack ?? e}` };
+    }
+    if (step % 25 === 0 || op === 'preset' || op === 'undo') {
+      const poses = app.motion.poses();
+      if (!poses.every(Number.isFinite)) return { counts, problem: `step ${step} (${op}): non-finite control pose` };
+    }
+  }
+  const refined = app.motion.subdivide();
+  if (!refined.every(Number.isFinite)) return { counts, problem: 'non-finite refined pose' };
+  return { counts, problem: null };
+}
+
+/** A real mouse drag from `from` by (dx, dy) in a few moves. */
+async function drag(from, dx, dy, steps = 3) {
+  await page.mouse.move(from.x, from.y);
+  await page.mouse.down();
+  for (let k = 1; k <= steps; k++) await page.mouse.move(from.x + (dx * k) / steps, from.y + (dy * k) / steps);
+  await page.mouse.up();
+}
+
+const onScreen = (p) => p && Number.isFinite(p.x) && Number.isFinite(p.y) && p.x > 20 && p.y > 80 && p.x < VIEWPORT.width - 300 && p.y < VIEWPORT.height - 60;
+
+test(`${BACKEND}: soak: random edits and drags keep the page healthy (seed ${SEED})`, async () => {
+  console.log(`# soak: seed ${SEED} (SOAK_SEED=${SEED} to reproduce), ${SECONDS} s`);
+  const rand = prng(SEED);
+  const where = () => `seed ${SEED}`;
+  const totals = {};
+  let ops = 0;
+  let drags = 0;
+  let batch = 0;
+  const end = Date.now() + SECONDS * 1000;
+  // Batches of App operations, each followed by a few real drags, until the time is up.
+  while (Date.now() < end) {
+    const { counts, problem } = await sb(randomOps, { seed: (SEED + 7919 * ++batch) >>> 0, count: OPS_PER_BATCH });
+    for (const [k, v] of Object.entries(counts)) totals[k] = (totals[k] ?? 0) + v;
+    ops += OPS_PER_BATCH;
+    assert.equal(problem, null, `${where()}, batch ${batch}: ${problem}`);
+    for (let k = 0; k < DRAGS_PER_BATCH; k++) {
+      const n = await sb(() => window.screwbender.app.motion.poseCount);
+      const i = Math.floor(rand() * n);
+      const kind = rand();
+      let from;
+      if (kind < 0.5) {
+        from = await sb((j) => window.screwbender.handleOnPage(j), i);
+      } else if (kind < 0.8) {
+        await sb((j) => window.screwbender.app.select(j), i);
+        await waitFrames(page, 1);
+        const mode = await sb(() => window.screwbender.app.mode);
+        const parts = mode === 'rotate' ? ['ring-x', 'ring-y', 'ring-z', 'trackball'] : ['axis-x', 'axis-y', 'axis-z', 'plane-x', 'plane-y', 'plane-z'];
+        from = await sb((part) => window.screwbender.gizmoOnPage(part), parts[Math.floor(rand() * parts.length)]);
+      } else {
+        from = { x: 100 + rand() * 600, y: 150 + rand() * 400 };
+      }
+      if (!onScreen(from)) {
+        await sb(() => window.screwbender.app.frameAll());
+        continue;
+      }
+      await drag(from, (rand() - 0.5) * 160, (rand() - 0.5) * 160);
+      drags++;
+    }
+  }
+  await waitFrames(page, 2);
+  console.log(`# soak: ${ops} App operations ${JSON.stringify(totals)}, ${drags} mouse drags`);
+  assert.ok(ops >= 200 && drags >= 8, `${where()}: too little done in ${SECONDS} s (${ops} operations, ${drags} drags)`);
+
+  // Health: no console error, no CSP violation, only expected banner messages, finite poses.
+  assert.deepEqual(problems, [], where());
+  assert.deepEqual(await sb(() => window.__csp), [], where());
+  const unexpected = (await sb(() => window.screwbender.errors())).filter((m) => !EXPECTED_MESSAGES.some((r) => r.test(m)));
+  assert.deepEqual(unexpected, [], where());
+  const poses = await sb(() => Array.from(window.screwbender.poses()));
+  const refined = await sb(() => Array.from(window.screwbender.refined()));
+  assert.ok(poses.length >= 14 && poses.every(Number.isFinite), `${where()}: control poses ${poses}`);
+  assert.ok(refined.every(Number.isFinite), `${where()}: a refined pose is not finite`);
+
+  // Export → import gives the same session (the camera is not part of an import).
+  const noCamera = (s) => JSON.stringify({ ...JSON.parse(s), camera: undefined });
+  const exported = await sb(() => JSON.stringify(window.screwbender.session()));
+  assert.equal(await sb((t) => window.screwbender.app.importJson(t), exported), true, `${where()}: re-import failed`);
+  const reimported = await sb(() => JSON.stringify(window.screwbender.session()));
+  assert.equal(noCamera(reimported), noCamera(exported), `${where()}: the re-imported session differs`);
+
+  // Reload restores it exactly (camera included).
+  await page.reload();
+  await page.evaluate(() => window.screwbender.ready);
+  await waitFrames(page, 1);
+  assert.equal(await sb(() => JSON.stringify(window.screwbender.session())), reimported, `${where()}: reload changed the session`);
+  assert.deepEqual(problems, [], where());
+});
