@@ -769,7 +769,13 @@ export class App {
     try {
       const trimmed = text.trim();
       // A full session (from Export) or a plain motion document.
-      const obj = JSON.parse(trimmed);
+      // Invalid JSON falls through to the core's parser, whose message names line and column.
+      let obj = null;
+      try {
+        obj = JSON.parse(trimmed);
+      } catch {
+        obj = null;
+      }
       if (obj && obj.version === SESSION_VERSION && obj.document) {
         new Motion(obj.document, obj.options).free();
         this.edit(() => this.applySession({ ...obj, camera: undefined }));

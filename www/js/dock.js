@@ -8,7 +8,9 @@
 // options or the view settings (reason 'edit'), during drags (reason 'drag', only for views
 // with `live: true`; the Motion then already holds the dragged pose), and when the view is
 // shown (reason 'show'). `show(false)` must remove the view's 3-D overlays (its LAYER / SLOT
-// entries of scene.js), so a hidden view costs nothing.
+// entries of scene.js), so a hidden view costs nothing. No inline `style` attributes in markup
+// (the page's CSP refuses them): set styles through `element.style`, or give colour swatches a
+// `data-color` attribute.
 import { VIEWS } from './views/index.js';
 
 export class Dock {
@@ -37,6 +39,14 @@ export class Dock {
       this.views.set(d.id, { d, el, tab, instance: null });
     }
     this.root.querySelector('.close').onclick = () => this.app.openView('');
+    // Colour swatches written as markup carry `data-color`: the page's Content-Security-Policy
+    // refuses inline style attributes, so the colour is applied through the CSSOM instead.
+    const paint = (root) => {
+      for (const e of root.querySelectorAll('[data-color]')) e.style.background = e.dataset.color;
+    };
+    new MutationObserver((records) => {
+      for (const r of records) for (const n of r.addedNodes) if (n.nodeType === 1) paint(n.parentElement ?? n);
+    }).observe(this.body, { childList: true, subtree: true });
   }
 
   /** Opens view `id` (null closes the dock). Returns the view instance. */

@@ -36,8 +36,8 @@ export default {
       <table class="frame-table">
         <thead><tr><th></th><th>max change of trajectories</th><th class="radial-h">max radial deviation</th></tr></thead>
         <tbody>
-          <tr><td><span class="swatch" style="background:#1f5fbf"></span>screw (ScrewBender)</td><td class="ds"></td><td class="rs"></td></tr>
-          <tr><td><span class="swatch" style="background:#e0602f"></span>decoupled</td><td class="dd"></td><td class="rd"></td></tr>
+          <tr><td><span class="swatch" data-color="#1f5fbf"></span>screw (ScrewBender)</td><td class="ds"></td><td class="rs"></td></tr>
+          <tr><td><span class="swatch" data-color="#e0602f"></span>decoupled</td><td class="dd"></td><td class="rd"></td></tr>
         </tbody>
       </table>
       <p class="note info"></p>`;

@@ -60,7 +60,7 @@ export default {
     const show = { bspline: true, fourpoint: true, jarek: true };
     for (const s of SCHEMES) {
       const lab = document.createElement('label');
-      lab.innerHTML = `<input type="checkbox" checked> <span class="swatch" style="background:${s.color}"></span>${s.name}`;
+      lab.innerHTML = `<input type="checkbox" checked> <span class="swatch" data-color="${s.color}"></span>${s.name}`;
       lab.querySelector('input').onchange = (e) => {
         show[s.id] = e.target.checked;
         draw();
@@ -69,7 +69,7 @@ export default {
     }
     const ctl = document.createElement('span');
     ctl.className = 'note';
-    ctl.innerHTML = `<span class="swatch" style="background:${CONTROL}"></span>control polygon`;
+    ctl.innerHTML = `<span class="swatch" data-color="${CONTROL}"></span>control polygon`;
     legend.append(ctl);
 
     const state = {

@@ -84,13 +84,13 @@ export default {
       </div>
       <p class="caption"></p>
       <p class="note legend">
-        <span class="swatch" style="background:#7d8597"></span>input poses
-        <span class="swatch" style="background:#2f8f3a"></span>split midpoints
-        <span class="swatch" style="background:#c9d3e3"></span>before tweak
-        <span class="swatch" style="background:#1f5fbf"></span>after tweak
-        <span class="swatch" style="background:#e0602f"></span>moved by the tweak
-        <span class="swatch" style="background:#d1202f"></span>tweak arrows
-        <span class="swatch" style="background:#9a6fd1"></span>helper poses (inner screws)
+        <span class="swatch" data-color="#7d8597"></span>input poses
+        <span class="swatch" data-color="#2f8f3a"></span>split midpoints
+        <span class="swatch" data-color="#c9d3e3"></span>before tweak
+        <span class="swatch" data-color="#1f5fbf"></span>after tweak
+        <span class="swatch" data-color="#e0602f"></span>moved by the tweak
+        <span class="swatch" data-color="#d1202f"></span>tweak arrows
+        <span class="swatch" data-color="#9a6fd1"></span>helper poses (inner screws)
       </p>
       <p class="note">Scheme and rule set come from the main panel. Keys: <b>[</b>/<b>]</b> or <b>,</b>/<b>.</b> step back/forward.</p>`;
     const caption = el.querySelector('.caption');
