@@ -87,7 +87,7 @@ export function fmt(v, digits = 3) {
   return a >= 1e-2 && a < 1e4 ? v.toPrecision(digits) : v.toExponential(digits - 1);
 }
 
-/** Builds an element with text content (never innerHTML: names may come from files). */
+/** Builds an element with text content (never HTML from strings: names may come from files). */
 export function el(tag, props = {}, ...children) {
   const e = document.createElement(tag);
   for (const [k, v] of Object.entries(props)) {

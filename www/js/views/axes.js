@@ -3,6 +3,7 @@
 // (right-hand rule), and listed with angle, slide, pitch and kind. Hovering a row highlights that
 // span's axis and labels it in the 3-D view.
 import { Motion, spanScrewsOf } from '../../pkg/screwbender.js';
+import { el as h } from '../plot.js';
 import { LAYER, Segments, mix, poseOf } from '../scene.js';
 import { add, sub, scale, cross, normalize, length, hexLinear } from '../math.js';
 
@@ -29,19 +30,8 @@ export default {
   hint: 'The screw axis of every span: direction, angle, slide and pitch (hover a row or an axis to highlight it)',
   live: true,
   create(app, el) {
-    el.innerHTML = `
-      <div class="row">
-        <label>Level <select class="level"></select></label>
-        <span class="note count"></span>
-      </div>
-      <p class="note">Each span <i>i → i+1</i> is a screw motion: a rotation by the angle about the
-        drawn axis (right-hand rule along the arrow ticks; colour runs dark → light along the axis
-        direction) combined with the slide along it. Pitch = slide / angle. Hover a row or an axis
-        to highlight it.</p>
-      <div class="scroll"><table>
-        <thead><tr><th>span</th><th>kind</th><th>angle °</th><th>slide</th><th>pitch</th></tr></thead>
-        <tbody></tbody>
-      </table></div>`;
+    // Static markup: index.html's <template id="view-axes"> (no HTML from strings).
+    el.append(document.getElementById('view-axes').content.cloneNode(true));
     const levelSel = el.querySelector('.level');
     for (let l = 0; l <= MAX_LEVEL; l++) {
       const o = document.createElement('option');
@@ -79,8 +69,13 @@ export default {
         const tr = document.createElement('tr');
         const j = closed ? (i + 1) % n : i + 1;
         const pitch = s.kind === 'general' ? fmt(s.pitch) : s.kind === 'translation' ? '∞' : '—';
-        tr.innerHTML = `<td><span class="swatch"></span>${i} → ${j}</td><td>${s.kind}</td>
-          <td>${fmt(deg(s.angle), 2)}</td><td>${fmt(s.slide)}</td><td>${pitch}</td>`;
+        tr.append(
+          h('td', {}, h('span', { class: 'swatch' }), `${i} → ${j}`),
+          h('td', {}, s.kind),
+          h('td', {}, fmt(deg(s.angle), 2)),
+          h('td', {}, fmt(s.slide)),
+          h('td', {}, pitch),
+        );
         const c = PALETTE[i % PALETTE.length];
         tr.querySelector('.swatch').style.background = `rgb(${c.map((v) => Math.round(Math.pow(v, 1 / 2.2) * 255)).join(',')})`;
         tr.title = `span ${i} → ${j}: angle ${fmt(deg(s.angle), 2)}°, slide ${fmt(s.slide)}`;

@@ -4,6 +4,7 @@
 // same rules on rotation-only poses; src/decoupled_blend.rs). The trajectories of the same body
 // points are drawn: the screw ones do not move when c changes, the decoupled ones do.
 import { compareFrames } from '../../pkg/screwbender.js';
+import { el as h } from '../plot.js';
 import { LAYER, Segments, poseOf } from '../scene.js';
 import { add, sub, length, qrot, hexLinear } from '../math.js';
 
@@ -23,29 +24,13 @@ export default {
   hint: 'Decoupled smoothing depends on the local frame, screw subdivision does not (paper Fig. 9 V1 / Fig. 8 V2)',
   live: true,
   create(app, el) {
-    el.innerHTML = `
-      <p class="note">The body point <b>c</b> (local coordinates) becomes the local origin: every
-        control pose P is replaced by P ∘ translate(c) — the object does not move. Both smoothings
-        run on the re-expressed poses; the traces are the same physical body points.</p>
-      <div class="row sliders"></div>
-      <div class="row">
-        <button type="button" class="act circle">Load circle4 (Fig. 9 / 8)</button>
-        <button type="button" class="act zero">c = 0</button>
-        <label><input type="checkbox" class="ref" checked> decoupled at c = 0 (faint)</label>
-      </div>
-      <table class="frame-table">
-        <thead><tr><th></th><th>max change of trajectories</th><th class="radial-h">max radial deviation</th></tr></thead>
-        <tbody>
-          <tr><td><span class="swatch" data-color="#1f5fbf"></span>screw (ScrewBender)</td><td class="ds"></td><td class="rs"></td></tr>
-          <tr><td><span class="swatch" data-color="#e0602f"></span>decoupled</td><td class="dd"></td><td class="rd"></td></tr>
-        </tbody>
-      </table>
-      <p class="note info"></p>`;
+    // Static markup: index.html's <template id="view-frame"> (no HTML from strings).
+    el.append(document.getElementById('view-frame').content.cloneNode(true));
     const sliders = el.querySelector('.sliders');
     const state = { c: [0, 0, 0], visible: false, result: null, ref: null, showRef: true };
     const inputs = ['x', 'y', 'z'].map((axis, a) => {
       const lab = document.createElement('label');
-      lab.innerHTML = `c<sub>${axis}</sub> <input type="range" min="${-RANGE}" max="${RANGE}" step="0.05" value="0"> <span class="val">0.00</span>`;
+      lab.append('c', h('sub', {}, axis), ' ', h('input', { type: 'range', min: String(-RANGE), max: String(RANGE), step: '0.05', value: '0' }), ' ', h('span', { class: 'val' }, '0.00'));
       const input = lab.querySelector('input');
       const val = lab.querySelector('.val');
       input.oninput = () => {

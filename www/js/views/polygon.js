@@ -4,6 +4,7 @@
 // polygons' vertices can be dragged; the control origins of the motion (projected to z = 0) are
 // shown read-only.
 import { polygonScenes, subdividePolygon, splitTweakStep } from '../../pkg/screwbender.js';
+import { el as h } from '../plot.js';
 
 const SCHEMES = [
   { id: 'bspline', name: 'B-spline', color: '#d1202f' },
@@ -33,20 +34,10 @@ export default {
   live: true,
   create(app, el) {
     const presets = polygonScenes();
-    el.innerHTML = `
-      <div class="row">
-        <label>Polygon <select class="source"></select></label>
-        <label>Levels <input class="levels" type="range" min="0" max="5" step="1" value="1"> <span class="lv">1</span></label>
-        <label title="Also draw each scheme after one step, dashed (paper Fig. 2 shows 1 and 5 steps)"><input class="once" type="checkbox" checked> + 1 step</label>
-        <label title="Show one split and the tweak of each scheme (paper Fig. 3)"><input class="fig3" type="checkbox"> split &amp; tweak (first step)</label>
-        <button type="button" class="act reset">Reset</button>
-      </div>
-      <div class="row legend"></div>
-      <canvas class="poly-canvas" height="${HEIGHT}"></canvas>
-      <p class="note mode"></p>
-      <details class="numbers"><summary>Numbers (refined vertices, old and new alternating from vertex 0)</summary>
-        <table><thead><tr><th>#</th>${SCHEMES.map((s) => `<th>${s.name}</th>`).join('')}</tr></thead><tbody></tbody></table>
-      </details>`;
+    // Static markup: index.html's <template id="view-polygon"> (no HTML from strings).
+    el.append(document.getElementById('view-polygon').content.cloneNode(true));
+    el.querySelector('canvas').height = HEIGHT;
+    el.querySelector('.numbers thead tr').append(...SCHEMES.map((s) => h('th', {}, s.name)));
     const source = el.querySelector('.source');
     for (const p of presets) source.append(new Option(`${p.id} (${p.figure})`, p.id));
     source.append(new Option('control origins (read-only)', 'origins'));
@@ -60,7 +51,7 @@ export default {
     const show = { bspline: true, fourpoint: true, jarek: true };
     for (const s of SCHEMES) {
       const lab = document.createElement('label');
-      lab.innerHTML = `<input type="checkbox" checked> <span class="swatch" data-color="${s.color}"></span>${s.name}`;
+      lab.append(h('input', { type: 'checkbox', checked: true }), ' ', h('span', { class: 'swatch', 'data-color': s.color }), s.name);
       lab.querySelector('input').onchange = (e) => {
         show[s.id] = e.target.checked;
         draw();
@@ -69,7 +60,7 @@ export default {
     }
     const ctl = document.createElement('span');
     ctl.className = 'note';
-    ctl.innerHTML = `<span class="swatch" data-color="${CONTROL}"></span>control polygon`;
+    ctl.append(h('span', { class: 'swatch', 'data-color': CONTROL }), 'control polygon');
     legend.append(ctl);
 
     const state = {
@@ -261,12 +252,12 @@ export default {
       for (let k = 0; k < Math.min(count, MAX_ROWS); k++) {
         const cells = SCHEMES.map((s) => {
           const r = state.results[s.id];
-          return `<td>(${fmt(r[2 * k])}, ${fmt(r[2 * k + 1])})</td>`;
+          return h('td', {}, `(${fmt(r[2 * k])}, ${fmt(r[2 * k + 1])})`);
         });
-        rows.push(`<tr><td>${k}</td>${cells.join('')}</tr>`);
+        rows.push(h('tr', {}, h('td', {}, k), ...cells));
       }
-      if (count > MAX_ROWS) rows.push(`<tr><td colspan="4">… ${count - MAX_ROWS} more</td></tr>`);
-      body.innerHTML = rows.join('');
+      if (count > MAX_ROWS) rows.push(h('tr', {}, h('td', { colSpan: 4 }, `… ${count - MAX_ROWS} more`)));
+      body.replaceChildren(...rows);
     }
     el.querySelector('.numbers').addEventListener('toggle', () => numbers());
 

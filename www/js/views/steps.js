@@ -74,25 +74,8 @@ export default {
   // Live: one step costs a few hundred screws, and the view then follows pose drags too.
   live: true,
   create(app, el) {
-    el.innerHTML = `
-      <div class="row">
-        <button type="button" class="act prev" title="Previous step ([ or ,)">◀ prev</button>
-        <button type="button" class="act next" title="Next step (] or .)">next ▶</button>
-        <label>Levels <select class="levels"></select></label>
-        <span class="note pos"></span>
-        <button type="button" class="act strobe" title="Show or hide the strobe of the smoothed motion (main panel: Display › Strobe)">strobe on/off</button>
-      </div>
-      <p class="caption"></p>
-      <p class="note legend">
-        <span class="swatch" data-color="#7d8597"></span>input poses
-        <span class="swatch" data-color="#2f8f3a"></span>split midpoints
-        <span class="swatch" data-color="#c9d3e3"></span>before tweak
-        <span class="swatch" data-color="#1f5fbf"></span>after tweak
-        <span class="swatch" data-color="#e0602f"></span>moved by the tweak
-        <span class="swatch" data-color="#d1202f"></span>tweak arrows
-        <span class="swatch" data-color="#9a6fd1"></span>helper poses (inner screws)
-      </p>
-      <p class="note">Scheme and rule set come from the main panel. Keys: <b>[</b>/<b>]</b> or <b>,</b>/<b>.</b> step back/forward.</p>`;
+    // Static markup: index.html's <template id="view-steps"> (no HTML from strings).
+    el.append(document.getElementById('view-steps').content.cloneNode(true));
     const caption = el.querySelector('.caption');
     const pos = el.querySelector('.pos');
     const levelsSel = el.querySelector('.levels');
