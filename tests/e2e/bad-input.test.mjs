@@ -9,59 +9,25 @@
 // or similar, and text from files (names, file names, values) is shown as text, never as HTML.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawn } from 'node:child_process';
 import fs from 'node:fs';
-import net from 'node:net';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { launch, openPage, waitFrames } from './lib.mjs';
+import { waitFrames, playgroundPage, ROOT, BACKEND } from './lib.mjs';
 
-const BACKEND = process.env.E2E_BACKEND ?? 'webgpu';
-const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 const VIEWPORT = { width: 1280, height: 800 };
 
-let server;
+let play;
 let url;
-let browser;
 let context;
 let page;
 let problems;
 
-async function freePort() {
-  return new Promise((resolve) => {
-    const s = net.createServer();
-    s.listen(0, '127.0.0.1', () => {
-      const { port } = s.address();
-      s.close(() => resolve(port));
-    });
-  });
-}
-
 before(async () => {
-  assert.ok(fs.existsSync(path.join(ROOT, 'www/pkg/screwbender_bg.wasm')), 'build the wasm first (scripts/serve.sh)');
-  const port = await freePort();
-  server = spawn(process.execPath, [path.join(ROOT, 'scripts/serve.mjs'), path.join(ROOT, 'www')], {
-    env: { ...process.env, PORT: String(port), SERVE_QUIET: '1' },
-    stdio: ['ignore', 'pipe', 'inherit'],
-  });
-  await new Promise((resolve, reject) => {
-    server.stdout.on('data', (d) => d.toString().includes('http://') && resolve());
-    server.on('exit', (c) => reject(new Error(`server exited ${c}`)));
-  });
-  url = `http://127.0.0.1:${port}/`;
-  browser = await launch(BACKEND);
-  context = await browser.newContext({ viewport: VIEWPORT });
-  // Record every CSP violation of every page of the context.
-  await context.addInitScript(() => {
-    window.__csp = [];
-    document.addEventListener('securitypolicyviolation', (e) => window.__csp.push(`${e.violatedDirective}: ${e.blockedURI}`));
-  });
-  ({ page, problems } = await openPage(context, url, BACKEND));
+  ({ play, page, problems } = await playgroundPage({ viewport: VIEWPORT }));
+  ({ url, context } = play);
 });
 
 after(async () => {
-  await browser?.close();
-  server?.kill();
+  await play?.close();
 });
 
 const sb = (f, arg) => page.evaluate(f, arg);

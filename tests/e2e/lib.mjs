@@ -46,6 +46,11 @@ export async function startPlayground({ viewport = { width: 1280, height: 800 },
   const { url, stop } = await serveWww();
   const browser = await launch(BACKEND);
   const context = await browser.newContext({ viewport, acceptDownloads });
+  // Every CSP violation of every page of the context is recorded in window.__csp.
+  await context.addInitScript(() => {
+    window.__csp = [];
+    document.addEventListener('securitypolicyviolation', (e) => window.__csp.push(`${e.violatedDirective}: ${e.blockedURI}`));
+  });
   return {
     url,
     browser,
