@@ -56,8 +56,10 @@ class MethodsView {
       return sel;
     });
     this.status = el('div', { class: 'note' });
+    // Methods that could not be drawn (drawOverlay), e.g. a method that rejects these poses.
+    this.overlayStatus = el('div', { class: 'note error' });
     this.table = el('table', { class: 'metrics' });
-    root.append(this.status, this.table);
+    root.append(this.status, this.overlayStatus, this.table);
     this.rbBox = el('div');
     root.append(this.rbBox);
   }
@@ -101,13 +103,14 @@ class MethodsView {
       s.value = this.chosen[k] ?? '';
       if (s.selectedOptions[0]?.disabled) s.value = '';
     });
-    // During a drag the variable frames of the last fit would be stale.
+    // During a drag the variable frames of the last fit would be stale; otherwise the fit
+    // (drawRb) comes first so that the overlay, with its triads, is sampled once.
     if (reason === 'drag') this.rbTriads = null;
-    this.drawOverlay();
-    if (reason !== 'drag') {
+    else {
       this.drawTable();
       this.drawRb();
     }
+    this.drawOverlay();
   }
 
   drawOverlay() {
@@ -135,7 +138,7 @@ class MethodsView {
     all.set(base);
     all.set(triads, base.length);
     app.renderer.setLines(LAYER.methods, all, false);
-    this.overlayErrors = errors;
+    this.overlayStatus.textContent = errors.length ? `Not drawn: ${errors.join(' ')}` : '';
   }
 
   drawTable() {
@@ -170,8 +173,7 @@ class MethodsView {
     const derivs = table.rows.map((r) => `${r.method}: ${r.derivatives}`).join('; ');
     this.status.textContent =
       `${table.pose_count} control poses, ${table.closed ? 'cycle' : 'open'}; computed in ${ms.toFixed(0)} ms. Derivatives: ${derivs}.` +
-      (notes.length ? ` Notes: ${notes.join(' ')}` : '') +
-      (this.overlayErrors.length ? ` Not drawn: ${this.overlayErrors.join(' ')}` : '');
+      (notes.length ? ` Notes: ${notes.join(' ')}` : '');
     this.lastTable = table;
   }
 
@@ -251,7 +253,6 @@ class MethodsView {
       });
     }
     this.rbTriads = seg.array().slice();
-    this.drawOverlay();
   }
 }
 
