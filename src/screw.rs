@@ -65,20 +65,24 @@ pub fn screw(a: &Pose, t: f64, b: &Pose) -> Pose {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Screw {
     start: Pose,
-    /// Unit axis `n` (meaningless, but finite, when `sin_half == 0`).
+    /// Unit axis `n` (`+z`, arbitrarily, when there is no rotation).
     axis: DVec3,
-    /// `θ/2`.
+    /// `θ/2` (`0` without rotation).
     half_angle: f64,
     sin_half: f64,
     cos_half: f64,
-    /// Slide `d` along `n`; for a pure translation the whole translation is in `translation`.
+    /// Slide `d` along `n` (`0` without rotation).
     slide: f64,
-    /// `u`, the part of the translation perpendicular to `n`.
+    /// `u`, the part of the translation perpendicular to `n`; without rotation, the whole
+    /// translation `t_D`.
     perp: DVec3,
-    /// `n × u`.
-    n_cross_perp: DVec3,
-    /// `t_D` (used only when there is no rotation at all).
-    translation: DVec3,
+    /// `E = cot(θ/2) u + n × (2 O₀ − t_D)`: the origin moves as
+    /// `O(t) = O₀ + t d n + sin(tθ/2) cos(tθ/2) E + sin²(tθ/2) (n × E)` (see [`Screw::at`]).
+    sweep: DVec3,
+    /// `n × E`.
+    sweep_normal: DVec3,
+    /// `(n, 0) · q₀`: the rotation moves as `q(t) = cos(tθ/2) q₀ + sin(tθ/2) (n, 0) q₀`.
+    axis_rotation: DQuat,
 }
 
 /// The classification and parameters of a screw, for display and teaching (spec §2.2, §2.5).
@@ -116,6 +120,11 @@ pub struct ScrewParameters {
     pub pitch: f64,
 }
 
+/// Sine of the half angle at or below which the relative rotation counts as none (angles below
+/// `2·10⁻¹⁵⁰` rad; the rotation part of such a screw moves no unit vector by a representable
+/// amount, and its translation is kept exactly). Below it `cot(θ/2)` could overflow.
+const MIN_ROTATION_SINE: f64 = 1e-150;
+
 impl Screw {
     /// The screw from `a` to `b` (the logarithm of `b ∘ a⁻¹`), with the half-turn tie-break.
     #[inline]
@@ -131,47 +140,38 @@ impl Screw {
     pub fn midpoint(a: &Pose, b: &Pose) -> Pose {
         let s = Screw::between_unmeasured(a, b);
         if s.sin_half == 0.0 {
-            return Pose::new(a.origin + 0.5 * s.translation, a.rotation);
+            return s.at_without_rotation(0.5);
         }
         let ca = (0.5 * (1.0 + s.cos_half)).sqrt();
         let sa = s.sin_half / (2.0 * ca);
         s.evaluate(0.5, sa, ca)
     }
 
-    /// Everything of [`Screw::between`] but `half_angle`, which is left NaN (the caller fills
-    /// it in, or evaluates only where the angle's sine and cosine suffice).
+    /// Everything of [`Screw::between`] but `half_angle`, which is left NaN when there is a
+    /// rotation (the caller fills it in, or evaluates only where the angle's sine and cosine
+    /// suffice).
+    ///
+    /// Branch-free on the common path: the branches left (identical rotations, no rotation,
+    /// half turns) go the same way for almost every pair, so they cost nothing when predicted.
     #[inline]
     fn between_unmeasured(a: &Pose, b: &Pose) -> Screw {
-        let mut qd = b.rotation * a.rotation.conjugate();
-        if qd.w < 0.0 {
-            qd = -qd;
-        }
+        let qd = b.rotation * a.rotation.conjugate();
+        // The short way round (w ≥ 0), as a multiplication rather than a branch: the sign of w is
+        // a coin toss for unrelated poses, and a mispredicted branch costs more than 4 products.
+        let qd = qd * 1f64.copysign(qd.w);
         // Identical rotations (either sign) give an exactly zero relative rotation, so identical
         // poses reproduce `a` bit for bit at every t instead of up to rounding.
         let same_rotation = a.rotation == b.rotation || a.rotation == -b.rotation;
-        let translation = if same_rotation {
-            b.origin - a.origin
-        } else {
-            b.origin - rotate(qd, a.origin)
-        };
+        let translation = b.origin - rotate(qd, a.origin);
         let v = DVec3::new(qd.x, qd.y, qd.z);
-        let mut w = qd.w;
-        let s = if same_rotation { 0.0 } else { v.length() };
-        if s == 0.0 {
-            return Screw {
-                start: *a,
-                axis: DVec3::Z,
-                half_angle: 0.0,
-                sin_half: 0.0,
-                cos_half: 1.0,
-                slide: 0.0,
-                perp: DVec3::ZERO,
-                n_cross_perp: DVec3::ZERO,
-                translation,
-            };
+        let s = v.length();
+        if same_rotation || s <= MIN_ROTATION_SINE {
+            return Screw::translation(a, b, same_rotation, translation);
         }
-        let mut axis = v * (1.0 / s);
+        let inv_s = 1.0 / s;
+        let mut axis = v * inv_s;
         let mut slide = axis.dot(translation);
+        let mut w = qd.w;
         if w <= HALF_TURN_EPSILON && half_turn_prefers_flip(axis, slide, a, b) {
             // The same rotation seen from the other side: θ' = 2π − θ about −n (exact, so the
             // end pose stays b even when θ is a hair below π).
@@ -180,10 +180,15 @@ impl Screw {
             slide = -slide;
         }
         // `qd` is a product of unit quaternions, unit to rounding: its parts are the half
-        // angle's sine and cosine without renormalising (a square root and two divisions saved
-        // on the hot path; the evaluated rotation is renormalised anyway).
+        // angle's sine and cosine without renormalising (the evaluated rotation is renormalised).
         let (sin_half, cos_half) = (s, w);
         let perp = translation - slide * axis;
+        // O(t) = Rot(n, tθ) O₀ + t d n + [sin(tθ/2)/sin(θ/2)] Rot(n, (t−1)θ/2) u (spec §2.4),
+        // expanded in sin(tθ/2) and cos(tθ/2): every term is a multiple of sin·cos or sin² times
+        // a vector fixed by the span, E or n × E. Precomputing E leaves an evaluation with no
+        // division and no dependent products beyond the sine and cosine themselves.
+        let cot_half = cos_half * inv_s;
+        let sweep = cot_half * perp + axis.cross(2.0 * a.origin - translation);
         Screw {
             start: *a,
             axis,
@@ -192,8 +197,32 @@ impl Screw {
             cos_half,
             slide,
             perp,
-            n_cross_perp: axis.cross(perp),
-            translation,
+            sweep,
+            sweep_normal: axis.cross(sweep),
+            axis_rotation: DQuat::from_xyzw(axis.x, axis.y, axis.z, 0.0) * a.rotation,
+        }
+    }
+
+    /// The screw without rotation: `O(t) = O₀ + t t_D`, `q(t) = q₀`.
+    #[cold]
+    fn translation(a: &Pose, b: &Pose, same_rotation: bool, translation: DVec3) -> Screw {
+        Screw {
+            start: *a,
+            axis: DVec3::Z,
+            half_angle: 0.0,
+            sin_half: 0.0,
+            cos_half: 1.0,
+            slide: 0.0,
+            // With identical rotations the difference of the origins is exact (no rotation of
+            // O₀ by a relative rotation that is the identity only up to rounding).
+            perp: if same_rotation {
+                b.origin - a.origin
+            } else {
+                translation
+            },
+            sweep: DVec3::ZERO,
+            sweep_normal: DVec3::ZERO,
+            axis_rotation: DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0),
         }
     }
 
@@ -208,30 +237,34 @@ impl Screw {
     }
 
     /// The pose at fraction `t` of the screw (any real `t`).
+    ///
+    /// With `s = sin(tθ/2)`, `c = cos(tθ/2)`: `q(t) = c q₀ + s (n, 0) q₀` and
+    /// `O(t) = O₀ + t d n + s c E + s² (n × E)`, where `E = cot(θ/2) u + n × (2 O₀ − t_D)` is
+    /// fixed by the span. (Expand `Rot(n, tθ) O₀` and the `u` term of spec §2.4 with the
+    /// half-angle identities; the `O₀` and `u` parts fold into the one vector `E`.)
     #[inline]
     pub fn at(&self, t: f64) -> Pose {
         if self.sin_half == 0.0 {
-            return Pose::new(
-                self.start.origin + t * self.translation,
-                self.start.rotation,
-            );
+            return self.at_without_rotation(t);
         }
         let (sa, ca) = trig::sin_cos(t * self.half_angle);
         self.evaluate(t, sa, ca)
+    }
+
+    /// [`Screw::at`] for a screw without rotation.
+    #[inline]
+    fn at_without_rotation(&self, t: f64) -> Pose {
+        Pose::new(self.start.origin + t * self.perp, self.start.rotation)
     }
 
     /// The pose at `t` given `sa = sin(tθ/2)` and `ca = cos(tθ/2)` (rotating case only).
     #[inline]
     fn evaluate(&self, t: f64, sa: f64, ca: f64) -> Pose {
         let a = &self.start;
-        let n = self.axis;
-        let qt = DQuat::from_xyzw(n.x * sa, n.y * sa, n.z * sa, ca);
-        // Rot(n, φ) u with φ = (t−1)θ/2 = tθ/2 − θ/2, by the angle-difference formulas.
-        let cphi = ca * self.cos_half + sa * self.sin_half;
-        let sphi = sa * self.cos_half - ca * self.sin_half;
-        let ratio = sa / self.sin_half;
-        let tt = (t * self.slide) * n + ratio * (cphi * self.perp + sphi * self.n_cross_perp);
-        Pose::new(rotate(qt, a.origin) + tt, renormalize(qt * a.rotation))
+        let (sc, ss) = (sa * ca, sa * sa);
+        let origin =
+            a.origin + (t * self.slide) * self.axis + sc * self.sweep + ss * self.sweep_normal;
+        Pose::new(origin, renormalize(a.rotation * ca + self.axis_rotation * sa))
     }
 
     /// The world-frame twist of the screw per unit `t`: angular velocity `ω = θ n` and the
@@ -242,13 +275,13 @@ impl Screw {
     /// screw). `v₀ = d n + (θ/2)(cot(θ/2) u − n × u)`, well conditioned for all `θ`.
     pub fn twist(&self) -> (DVec3, DVec3) {
         if self.sin_half == 0.0 {
-            return (DVec3::ZERO, self.translation);
+            return (DVec3::ZERO, self.perp);
         }
         let h = self.half_angle;
         let omega = (2.0 * h) * self.axis;
         // (θ/2)·cot(θ/2) = h·cos/sin, written so that it tends to 1 as h → 0.
         let hcot = h / self.sin_half * self.cos_half;
-        let v0 = self.slide * self.axis + hcot * self.perp - h * self.n_cross_perp;
+        let v0 = self.slide * self.axis + hcot * self.perp - h * self.axis.cross(self.perp);
         (omega, v0)
     }
 
@@ -258,22 +291,23 @@ impl Screw {
         let scale = 1f64.max(a.origin.length()).max(self.end().origin.length());
         let theta = self.angle();
         if theta <= ANGLE_EPSILON || self.sin_half == 0.0 {
-            let len = self.translation.length();
+            let translation = self.slide * self.axis + self.perp;
+            let len = translation.length();
             if len <= LENGTH_EPSILON * scale {
                 return ScrewKind::Identity;
             }
             return ScrewKind::Translation {
-                direction: self.translation / len,
+                direction: translation / len,
                 distance: len,
             };
         }
         // After a half-turn tie-break θ may exceed π by at most ~4e-12 (it is exactly the same
         // rotation seen from the chosen side): report the canonical π with the chosen axis.
         let angle = theta.min(std::f64::consts::PI);
-        let (axis, slide, perp, ncu) = (self.axis, self.slide, self.perp, self.n_cross_perp);
+        let (axis, slide, perp) = (self.axis, self.slide, self.perp);
         // Foot point relative to the axis through the world origin: P⊥ = (u + (n×u)/tan(θ/2))/2.
         let cot_half = (0.5 * angle).cos() / (0.5 * angle).sin();
-        let foot = 0.5 * (perp + ncu * cot_half);
+        let foot = 0.5 * (perp + axis.cross(perp) * cot_half);
         let mid = 0.5 * (a.origin + self.end().origin);
         let point = foot + axis * axis.dot(mid);
         ScrewKind::General(ScrewParameters {
@@ -301,15 +335,14 @@ fn rotate(q: DQuat, v: DVec3) -> DVec3 {
     v + q.w * t + u.cross(t)
 }
 
-/// `atan2(s, c)` for `s ≥ 0` (the half angle, in `[0, π]`), through the `atan` of the smaller
-/// ratio, which lies in `[0, 1]` where [`trig::atan_ratio`] is fast.
+/// The half angle `atan2(s, c)` in `[0, π/2]` for `s > 0`, `c ≥ 0` (in `(π/2, π/2 + 10⁻¹²]`
+/// after a half-turn tie-break, where `c` is a hair below zero).
 #[inline]
 fn half_angle(s: f64, c: f64) -> f64 {
-    use std::f64::consts::FRAC_PI_2;
-    if c >= s {
-        trig::atan_ratio(s, c)
+    if c >= 0.0 {
+        trig::atan2_quadrant(s, c)
     } else {
-        FRAC_PI_2 - trig::atan_ratio(c, s)
+        s.atan2(c)
     }
 }
 

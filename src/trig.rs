@@ -44,24 +44,39 @@ const COS: [f64; 8] = [
     1.0 / 20_922_789_888_000.0,
 ];
 
+/// `1.5 · 2⁵²`: adding and subtracting it rounds any `|y| < 2⁵¹` to the nearest integer (ties
+/// to even) in the current rounding mode, without the library call `f64::round` compiles to on
+/// x86-64 targets without SSE4.1.
+const ROUND_MAGIC: f64 = 6_755_399_441_055_744.0;
+
 /// `(sin x, cos x)`.
+///
+/// Branch-free for `|x| ≤ 10⁵`: the quadrant only swaps and negates the kernel's results, done
+/// with bit operations (the quadrant of `tθ/2` changes from one screw to the next when `t`
+/// leaves `[0, 1]`, and a branch on it would be mispredicted half the time).
 #[inline]
 pub(crate) fn sin_cos(x: f64) -> (f64, f64) {
-    // NaN and large or infinite arguments go to `std`.
-    if x.is_nan() || x.abs() > FAST_SIN_COS_LIMIT {
+    // NaN and large or infinite arguments go to `std` (false for NaN, hence the negation).
+    if !(x.abs() <= FAST_SIN_COS_LIMIT) {
         return x.sin_cos();
     }
-    let k = (x * std::f64::consts::FRAC_2_PI).round();
+    let k = (x * std::f64::consts::FRAC_2_PI + ROUND_MAGIC) - ROUND_MAGIC;
     let r = (x - k * PIO2_HI) - k * PIO2_LO;
     let r2 = r * r;
     let s = r + r * r2 * estrin8(r2, &SIN);
     let c = 1.0 + r2 * estrin8(r2, &COS);
-    match (k as i64).rem_euclid(4) {
-        0 => (s, c),
-        1 => (c, -s),
-        2 => (-s, -c),
-        _ => (-c, s),
-    }
+    // Quadrant q = k mod 4: (sin, cos) = (s, c), (c, −s), (−s, −c), (−c, s).
+    let q = k as i64 as u64;
+    let swap = (q & 1).wrapping_neg(); // all ones for odd q
+    let (sb, cb) = (s.to_bits(), c.to_bits());
+    let sin_bits = (sb & !swap) | (cb & swap);
+    let cos_bits = (cb & !swap) | (sb & swap);
+    let sin_sign = (q & 2) << 62;
+    let cos_sign = (q.wrapping_add(1) & 2) << 62;
+    (
+        f64::from_bits(sin_bits ^ sin_sign),
+        f64::from_bits(cos_bits ^ cos_sign),
+    )
 }
 
 /// `tan(π/12)`: beyond it [`atan_ratio`] shifts the argument by π/6.
@@ -88,23 +103,45 @@ const ATAN: [f64; 15] = [
     -1.0 / 31.0,
 ];
 
-/// `atan(n / d)` for `0 ≤ n ≤ d` (the angle of the point `(d, n)`, in `[0, π/4]`), with a
-/// single division. Other arguments use `f64::atan`.
+/// The two cases of the `atan` kernel's argument `(num, den) = (n·A − d·B, n·C + d·D)` and its
+/// offset: `[A, B, C, D, offset]`. Unshifted `(n, d)` with offset 0; beyond `tan(π/12)`,
+/// `atan(n/d) = π/6 + atan((n√3 − d)/(n + d√3))`.
+const ATAN_CASES: [[f64; 5]; 2] = [
+    [1.0, 0.0, 0.0, 1.0, 0.0],
+    [SQRT_3, 1.0, 1.0, SQRT_3, FRAC_PI_6],
+];
+
+/// `atan2(y, x)` for `y ≥ 0`, `x ≥ 0`, not both zero (an angle in `[0, π/2]`), branch-free.
+///
+/// The smaller of the two over the larger is in `[0, 1]`; one shift by π/6 brings it within
+/// `tan(π/12)` of zero, where the series converges fast. The angle of one screw tells nothing
+/// about the next one's, so the two choices (octant, shift) are table lookups rather than
+/// branches, which would be mispredicted half the time (LLVM turns plain selects that guard a
+/// division back into branches). Other arguments use `f64::atan2`.
 #[inline]
-pub(crate) fn atan_ratio(n: f64, d: f64) -> f64 {
-    let in_range = n >= 0.0 && n <= d && d > 0.0; // false for NaN
+pub(crate) fn atan2_quadrant(y: f64, x: f64) -> f64 {
+    let in_range = y >= 0.0 && x >= 0.0 && (y > 0.0 || x > 0.0); // false for NaN
     if !in_range {
-        return (n / d).atan();
+        return y.atan2(x);
     }
-    // atan x = π/6 + atan((x√3 − 1)/(x + √3)) maps (tan π/12, 1] into (0, tan π/12]; with
-    // x = n/d that argument is (n√3 − d)/(n + d√3), so one division serves both cases.
-    let (base, y) = if n > TAN_PI_12 * d {
-        (FRAC_PI_6, (n * SQRT_3 - d) / (n + d * SQRT_3))
-    } else {
-        (0.0, n / d)
-    };
-    let y2 = y * y;
-    base + (y + y * y2 * estrin15(y2, &ATAN))
+    // `+ 0.0` turns −0 into +0, whose bit pattern `greater` needs.
+    let (y, x) = (y + 0.0, x + 0.0);
+    let (n, d) = (y.min(x), y.max(x));
+    let [a, b, c, e, base] = ATAN_CASES[greater(n, TAN_PI_12 * d)];
+    let z = (n * a - d * b) / (n * c + d * e);
+    let z2 = z * z;
+    let angle = base + (z + z * z2 * estrin15(z2, &ATAN));
+    // Above the diagonal the angle is π/2 minus that of the mirrored point.
+    let [offset, sign] = [[0.0, 1.0], [FRAC_PI_2, -1.0]][greater(y, x)];
+    offset + sign * angle
+}
+
+/// `1` if `a > b`, else `0`, for non-negative finite `a` and `b`, computed on their bit patterns
+/// (which order like the numbers). Written as a subtraction so that the compiler cannot turn the
+/// lookup it indexes back into a branch, as it does with a `bool` index or a select.
+#[inline]
+fn greater(a: f64, b: f64) -> usize {
+    (b.to_bits().wrapping_sub(a.to_bits()) >> 63) as usize
 }
 
 /// `Σ c[i] xⁱ` for 8 coefficients by Estrin's scheme: the same terms as Horner's rule but a
@@ -182,15 +219,38 @@ mod tests {
         let mut worst: f64 = 0.0;
         for i in 0..=200_000 {
             let x = i as f64 / 200_000.0;
-            worst = worst.max(ulps(atan_ratio(x, 1.0), x.atan()));
-            // The same angle from a scaled pair.
-            worst = worst.max(ulps(atan_ratio(3.0 * x, 3.0), x.atan()));
+            // Both octants (y ≤ x and y ≥ x), and the same angle from a scaled pair.
+            worst = worst.max(ulps(atan2_quadrant(x, 1.0), x.atan()));
+            worst = worst.max(ulps(atan2_quadrant(3.0 * x, 3.0), x.atan()));
+            worst = worst.max(ulps(atan2_quadrant(1.0, x), 1f64.atan2(x)));
+            let (s, c) = (0.7 * x).sin_cos();
+            worst = worst.max(ulps(atan2_quadrant(s, c), s.atan2(c)));
         }
         assert!(worst <= 3.0, "worst error {worst} ulp");
         for x in [0.0, 1e-300, 1e-12, TAN_PI_12, 1.0] {
-            assert!(ulps(atan_ratio(x, 1.0), x.atan()) <= 1.0, "{x}");
+            assert!(ulps(atan2_quadrant(x, 1.0), x.atan()) <= 1.0, "{x}");
         }
-        assert_eq!(atan_ratio(3.0, 1.0), 3f64.atan());
-        assert_eq!(atan_ratio(-0.5, 1.0), (-0.5f64).atan());
+        assert_eq!(atan2_quadrant(1.0, 0.0), FRAC_PI_2);
+        assert_eq!(atan2_quadrant(1.0, -0.0), FRAC_PI_2);
+        assert_eq!(atan2_quadrant(-0.0, 1.0), 0.0);
+        assert_eq!(atan2_quadrant(0.0, 2.0), 0.0);
+        // Outside the first quadrant: `std`.
+        assert_eq!(atan2_quadrant(0.5, -1.0), 0.5f64.atan2(-1.0));
+        assert_eq!(atan2_quadrant(-0.5, 1.0), (-0.5f64).atan2(1.0));
+        assert!(atan2_quadrant(f64::NAN, 1.0).is_nan());
+        assert!(atan2_quadrant(0.0, 0.0) == 0.0);
+    }
+
+    #[test]
+    fn sin_cos_quadrants_are_exact_swaps() {
+        // Every quadrant, both signs: the kernel's results swapped and negated, nothing else.
+        for k in -8i32..8 {
+            for f in [0.1, 0.3, 0.49] {
+                let x = (k as f64 + f) * FRAC_PI_2;
+                let (s, c) = sin_cos(x);
+                let (es, ec) = x.sin_cos();
+                assert!((s - es).abs() < 4e-16 && (c - ec).abs() < 4e-16, "{x}");
+            }
+        }
     }
 }
