@@ -1,4 +1,4 @@
-//! Core benchmarks: screw evaluations (full and cached), subdivision of 32 poses × 6 levels per
+//! Core benchmarks: screw evaluations (full one at a time, full in a batch, and cached), subdivision of 32 poses × 6 levels per
 //! scheme and rule set, and nalgebra's `UnitDualQuaternion::sclerp` on the same pose pairs.
 //!
 //! Run: `cargo bench --bench core`. Before timing, the accuracy of both screw implementations is
@@ -9,7 +9,7 @@ use std::hint::black_box;
 use criterion::{criterion_group, criterion_main, BatchSize, Criterion, Throughput};
 use glam::{DQuat, DVec3};
 use nalgebra::{Isometry3, Quaternion, Translation3, UnitDualQuaternion, UnitQuaternion};
-use screwbender::{screw, Pose, Rules, Scheme, Screw, Subdivision};
+use screwbender::{screw, Blend, Pose, Rules, Scheme, Screw, Subdivision};
 
 /// Pairs per batch (fixed seed).
 const PAIRS: usize = 1024;
@@ -105,6 +105,16 @@ fn screws(c: &mut Criterion) {
             for (a, b, _) in &data {
                 black_box(screw(black_box(a), black_box(0.3), black_box(b)));
             }
+        })
+    });
+    // The same full screws through the batch route (two at a time on SIMD lanes), as the
+    // subdivision and JavaScript's `screwPairs` use it.
+    let mut out = Vec::with_capacity(PAIRS);
+    g.bench_function("batch Pose::blends (full screws)", |bench| {
+        bench.iter(|| {
+            out.clear();
+            Pose::blends(PAIRS, |i| (data[i].0, black_box(0.3), data[i].1), &mut out);
+            black_box(&out);
         })
     });
     let cached: Vec<Screw> = data.iter().map(|(a, b, _)| Screw::between(a, b)).collect();

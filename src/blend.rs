@@ -9,6 +9,8 @@ use glam::{DVec2, DVec3};
 
 use crate::pose::Pose;
 use crate::screw::Screw;
+#[cfg(lanes)]
+use crate::screw_batch;
 
 /// A space with an interpolation `blend(a, t, b)` defined for every real `t`, where `t = 0` gives
 /// `a` and `t = 1` gives `b`.
@@ -33,8 +35,47 @@ pub trait Blend: Copy {
     fn midpoint(a: &Self, b: &Self) -> Self {
         Self::blend(a, 0.5, b)
     }
+
+    /// Appends `midpoint(x, y)` for `(x, y) = pair(i)`, `i = 0..n`, to `out`. A space may
+    /// compute several at once (poses do, two at a time); the results are those of
+    /// [`Blend::midpoint`].
+    fn midpoints(n: usize, pair: impl Fn(usize) -> (Self, Self), out: &mut Vec<Self>) {
+        out.extend((0..n).map(|i| {
+            let (x, y) = pair(i);
+            Self::midpoint(&x, &y)
+        }));
+    }
+
+    /// Appends `blend(x, t, y)` for `(x, t, y) = item(i)`, `i = 0..n`, to `out` (several at once
+    /// where the space can; the results are those of [`Blend::blend`]).
+    fn blends(n: usize, item: impl Fn(usize) -> (Self, f64, Self), out: &mut Vec<Self>) {
+        out.extend((0..n).map(|i| {
+            let (x, t, y) = item(i);
+            Self::blend(&x, t, &y)
+        }));
+    }
+
+    /// For every span `p[i] → p[(i+1) mod n]` of the cycle `p` and every fraction `ts[j]`, sets
+    /// `out[j][i]` to the span's value at `ts[j]` (each `out[j]` is cleared first): all the
+    /// evaluations of one subdivision step, each span's interpolant computed once.
+    fn sample_cycle(p: &[Self], ts: &[f64], out: &mut [Vec<Self>]) {
+        for column in out.iter_mut() {
+            column.clear();
+        }
+        let n = p.len();
+        for i in 0..n {
+            let span = Self::span(&p[i], &p[(i + 1) % n]);
+            for (column, &t) in out.iter_mut().zip(ts) {
+                column.push(Self::span_at(&span, t));
+            }
+        }
+    }
 }
 
+/// Poses blend by screws. Their batch methods run two screws at a time on SIMD lanes
+/// (`screw_batch`) where that pays: natively, and on wasm32 built with `simd128`. Plain wasm32
+/// has no SIMD, the interleaved lanes gained nothing there in measurements, and their code
+/// would add 6 KB to the module, so it keeps the one-at-a-time defaults.
 impl Blend for Pose {
     type Span = Screw;
     #[inline]
@@ -48,6 +89,18 @@ impl Blend for Pose {
     #[inline]
     fn midpoint(a: &Self, b: &Self) -> Self {
         Screw::midpoint(a, b)
+    }
+    #[cfg(lanes)]
+    fn midpoints(n: usize, pair: impl Fn(usize) -> (Self, Self), out: &mut Vec<Self>) {
+        screw_batch::midpoints(n, pair, out);
+    }
+    #[cfg(lanes)]
+    fn blends(n: usize, item: impl Fn(usize) -> (Self, f64, Self), out: &mut Vec<Self>) {
+        screw_batch::screws(n, item, out);
+    }
+    #[cfg(lanes)]
+    fn sample_cycle(p: &[Self], ts: &[f64], out: &mut [Vec<Self>]) {
+        screw_batch::sample_cycle(p, ts, out);
     }
 }
 

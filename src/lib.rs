@@ -77,6 +77,7 @@ mod error;
 mod gltf_export;
 mod gltf_import;
 mod interop;
+mod lanes;
 pub mod mesh;
 pub mod methods;
 mod morph;
@@ -87,6 +88,9 @@ mod sampling;
 pub mod scenes;
 mod scheme;
 mod screw;
+#[cfg(lanes)]
+mod screw_batch;
+mod screw_kernel;
 mod screwbender;
 mod split_tweak;
 mod subdivision;

@@ -88,6 +88,13 @@ impl Pose {
     /// of 1; it is then normalised. The origin must be finite with coordinates within
     /// [`MAX_COORDINATE`]. Errors name `origin` or `rotation`.
     pub fn from_wxyz(origin: [f64; 3], rotation: [f64; 4]) -> Result<Pose, Error> {
+        // The common case first, without building a `Result` of an error that owns strings:
+        // batches of poses from JavaScript spend most of their validation time otherwise.
+        if origin.iter().all(|v| v.abs() <= MAX_COORDINATE) {
+            if let Some(q) = normalized_quat(rotation) {
+                return Ok(Pose::new(DVec3::from_array(origin), q));
+            }
+        }
         check_origin(&origin)?;
         let q = quat_from_wxyz(rotation).map_err(|e| e.within("rotation"))?;
         Ok(Pose::new(DVec3::from_array(origin), q))
@@ -218,25 +225,39 @@ impl Pose {
 
 /// Converts `[w, x, y, z]` to a unit quaternion, validating it (see [`Pose::from_wxyz`]).
 pub fn quat_from_wxyz(q: [f64; 4]) -> Result<DQuat, Error> {
+    if let Some(unit) = normalized_quat(q) {
+        return Ok(unit);
+    }
+    // Only errors are left: say which.
     check_finite(&q, "")?;
-    let [w, x, y, z] = q;
-    let norm = (w * w + x * x + y * y + z * z).sqrt();
+    let norm = q.iter().map(|c| c * c).sum::<f64>().sqrt();
     if norm == 0.0 {
         return Err(Error::ZeroQuaternion { at: String::new() });
     }
-    if (norm - 1.0).abs() > UNIT_QUATERNION_TOLERANCE {
-        return Err(Error::NonUnitQuaternion {
-            at: String::new(),
-            norm,
-        });
+    Err(Error::NonUnitQuaternion {
+        at: String::new(),
+        norm,
+    })
+}
+
+/// `[w, x, y, z]` normalised, or `None` when it is not finite or its norm is not within
+/// [`UNIT_QUATERNION_TOLERANCE`] of 1 (zero included).
+#[inline]
+fn normalized_quat(q: [f64; 4]) -> Option<DQuat> {
+    let [w, x, y, z] = q;
+    let norm = (w * w + x * x + y * y + z * z).sqrt();
+    // NaN comes from any non-finite component.
+    let off = (norm - 1.0).abs();
+    if off.is_nan() || off > UNIT_QUATERNION_TOLERANCE {
+        return None;
     }
     // Quaternions already unit to rounding pass through untouched, so reading back a pose this
     // crate wrote (a saved session, an exported document) gives the same bits, and validating
     // twice changes nothing (the rule of `checked_pose`).
-    if (norm - 1.0).abs() <= 4.0 * f64::EPSILON {
-        return Ok(DQuat::from_xyzw(x, y, z, w));
+    if off <= 4.0 * f64::EPSILON {
+        return Some(DQuat::from_xyzw(x, y, z, w));
     }
-    Ok(DQuat::from_xyzw(x / norm, y / norm, z / norm, w / norm))
+    Some(DQuat::from_xyzw(x / norm, y / norm, z / norm, w / norm))
 }
 
 /// The quaternion as `[w, x, y, z]` — the one place where glam's `x, y, z, w` storage order is

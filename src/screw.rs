@@ -8,7 +8,9 @@
 
 use glam::{DQuat, DVec3};
 
-use crate::pose::{renormalize, Pose};
+use crate::lanes::{Q, V3};
+use crate::pose::Pose;
+use crate::screw_kernel::{self as kernel, Coefficients};
 use crate::trig;
 
 /// Rotation angles at or below this (radians) are reported as "no rotation" by
@@ -65,24 +67,13 @@ pub fn screw(a: &Pose, t: f64, b: &Pose) -> Pose {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Screw {
     start: Pose,
-    /// Unit axis `n` (`+z`, arbitrarily, when there is no rotation).
-    axis: DVec3,
     /// `θ/2` (`0` without rotation).
     half_angle: f64,
     sin_half: f64,
     cos_half: f64,
-    /// Slide `d` along `n` (`0` without rotation).
-    slide: f64,
-    /// `u`, the part of the translation perpendicular to `n`; without rotation, the whole
-    /// translation `t_D`.
-    perp: DVec3,
-    /// `E = cot(θ/2) u + n × (2 O₀ − t_D)`: the origin moves as
-    /// `O(t) = O₀ + t d n + sin(tθ/2) cos(tθ/2) E + sin²(tθ/2) (n × E)` (see [`Screw::at`]).
-    sweep: DVec3,
-    /// `n × E`.
-    sweep_normal: DVec3,
-    /// `(n, 0) · q₀`: the rotation moves as `q(t) = cos(tθ/2) q₀ + sin(tθ/2) (n, 0) q₀`.
-    axis_rotation: DQuat,
+    /// Axis, slide and the evaluation vectors (see `screw_kernel`). Without rotation: axis `+z`
+    /// (arbitrary), slide 0, and `perp` holds the whole translation.
+    coefficients: Coefficients<f64>,
 }
 
 /// The classification and parameters of a screw, for display and teaching (spec §2.2, §2.5).
@@ -123,7 +114,7 @@ pub struct ScrewParameters {
 /// Sine of the half angle at or below which the relative rotation counts as none (angles below
 /// `2·10⁻¹⁵⁰` rad; the rotation part of such a screw moves no unit vector by a representable
 /// amount, and its translation is kept exactly). Below it `cot(θ/2)` could overflow.
-const MIN_ROTATION_SINE: f64 = 1e-150;
+pub(crate) const MIN_ROTATION_SINE: f64 = 1e-150;
 
 impl Screw {
     /// The screw from `a` to `b` (the logarithm of `b ∘ a⁻¹`), with the half-turn tie-break.
@@ -142,8 +133,8 @@ impl Screw {
         if s.sin_half == 0.0 {
             return s.at_without_rotation(0.5);
         }
-        let ca = (0.5 * (1.0 + s.cos_half)).sqrt();
-        let sa = s.sin_half / (2.0 * ca);
+        // After a half-turn tie-break cos(θ/2) is a hair below 0; (1 + w)/2 stays near ½.
+        let (sa, ca) = kernel::half_of_half(s.sin_half, s.cos_half);
         s.evaluate(0.5, sa, ca)
     }
 
@@ -151,78 +142,65 @@ impl Screw {
     /// rotation (the caller fills it in, or evaluates only where the angle's sine and cosine
     /// suffice).
     ///
-    /// Branch-free on the common path: the branches left (identical rotations, no rotation,
-    /// half turns) go the same way for almost every pair, so they cost nothing when predicted.
+    /// The branches (identical rotations, no rotation, half turns) go the same way for almost
+    /// every pair, so they cost nothing when predicted.
     #[inline]
     fn between_unmeasured(a: &Pose, b: &Pose) -> Screw {
-        let qd = b.rotation * a.rotation.conjugate();
-        // The short way round (w ≥ 0), as a multiplication rather than a branch: the sign of w is
-        // a coin toss for unrelated poses, and a mispredicted branch costs more than 4 products.
-        let qd = qd * 1f64.copysign(qd.w);
+        let (oa, qa) = (a.origin.into(), a.rotation.into());
+        let rel = kernel::relative(oa, qa, b.origin.into(), b.rotation.into());
         // Identical rotations (either sign) give an exactly zero relative rotation, so identical
         // poses reproduce `a` bit for bit at every t instead of up to rounding.
         let same_rotation = a.rotation == b.rotation || a.rotation == -b.rotation;
-        let translation = b.origin - rotate(qd, a.origin);
-        let v = DVec3::new(qd.x, qd.y, qd.z);
-        let s = v.length();
-        if same_rotation || s <= MIN_ROTATION_SINE {
-            return Screw::translation(a, b, same_rotation, translation);
+        if same_rotation || rel.s <= MIN_ROTATION_SINE {
+            return Screw::translation(a, b, same_rotation, rel.translation.into());
         }
-        let inv_s = 1.0 / s;
-        let mut axis = v * inv_s;
-        let mut slide = axis.dot(translation);
-        let mut w = qd.w;
-        if w <= HALF_TURN_EPSILON && half_turn_prefers_flip(axis, slide, a, b) {
+        let inv_s = 1.0 / rel.s;
+        let mut axis = rel.v.scale(inv_s);
+        let mut slide = axis.dot(rel.translation);
+        let mut w = rel.w;
+        if w <= HALF_TURN_EPSILON && half_turn_prefers_flip(axis.into(), slide, a, b) {
             // The same rotation seen from the other side: θ' = 2π − θ about −n (exact, so the
             // end pose stays b even when θ is a hair below π).
             w = -w;
-            axis = -axis;
+            axis = V3::new(-axis.x, -axis.y, -axis.z);
             slide = -slide;
         }
-        // `qd` is a product of unit quaternions, unit to rounding: its parts are the half
-        // angle's sine and cosine without renormalising (the evaluated rotation is renormalised).
-        let (sin_half, cos_half) = (s, w);
-        let perp = translation - slide * axis;
-        // O(t) = Rot(n, tθ) O₀ + t d n + [sin(tθ/2)/sin(θ/2)] Rot(n, (t−1)θ/2) u (spec §2.4),
-        // expanded in sin(tθ/2) and cos(tθ/2): every term is a multiple of sin·cos or sin² times
-        // a vector fixed by the span, E or n × E. Precomputing E leaves an evaluation with no
-        // division and no dependent products beyond the sine and cosine themselves.
-        let cot_half = cos_half * inv_s;
-        let sweep = cot_half * perp + axis.cross(2.0 * a.origin - translation);
+        // The relative rotation is a product of unit quaternions, unit to rounding: its parts
+        // are the half angle's sine and cosine without renormalising (the evaluated rotation is
+        // renormalised).
         Screw {
             start: *a,
-            axis,
             half_angle: f64::NAN,
-            sin_half,
-            cos_half,
-            slide,
-            perp,
-            sweep,
-            sweep_normal: axis.cross(sweep),
-            axis_rotation: DQuat::from_xyzw(axis.x, axis.y, axis.z, 0.0) * a.rotation,
+            sin_half: rel.s,
+            cos_half: w,
+            coefficients: kernel::coefficients(oa, qa, axis, slide, w * inv_s, rel.translation),
         }
     }
 
     /// The screw without rotation: `O(t) = O₀ + t t_D`, `q(t) = q₀`.
     #[cold]
     fn translation(a: &Pose, b: &Pose, same_rotation: bool, translation: DVec3) -> Screw {
+        // With identical rotations the difference of the origins is exact (no rotation of O₀
+        // by a relative rotation that is the identity only up to rounding).
+        let perp = if same_rotation {
+            b.origin - a.origin
+        } else {
+            translation
+        };
+        let zero = V3::new(0.0, 0.0, 0.0);
         Screw {
             start: *a,
-            axis: DVec3::Z,
             half_angle: 0.0,
             sin_half: 0.0,
             cos_half: 1.0,
-            slide: 0.0,
-            // With identical rotations the difference of the origins is exact (no rotation of
-            // O₀ by a relative rotation that is the identity only up to rounding).
-            perp: if same_rotation {
-                b.origin - a.origin
-            } else {
-                translation
+            coefficients: Coefficients {
+                axis: V3::new(0.0, 0.0, 1.0),
+                slide: 0.0,
+                perp: perp.into(),
+                sweep: zero,
+                sweep_normal: zero,
+                axis_rotation: Q::new(0.0, 0.0, 0.0, 0.0),
             },
-            sweep: DVec3::ZERO,
-            sweep_normal: DVec3::ZERO,
-            axis_rotation: DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0),
         }
     }
 
@@ -254,17 +232,23 @@ impl Screw {
     /// [`Screw::at`] for a screw without rotation.
     #[inline]
     fn at_without_rotation(&self, t: f64) -> Pose {
-        Pose::new(self.start.origin + t * self.perp, self.start.rotation)
+        let translation: DVec3 = self.coefficients.perp.into();
+        Pose::new(self.start.origin + t * translation, self.start.rotation)
     }
 
     /// The pose at `t` given `sa = sin(tθ/2)` and `ca = cos(tθ/2)` (rotating case only).
     #[inline]
     fn evaluate(&self, t: f64, sa: f64, ca: f64) -> Pose {
         let a = &self.start;
-        let (sc, ss) = (sa * ca, sa * sa);
-        let origin =
-            a.origin + (t * self.slide) * self.axis + sc * self.sweep + ss * self.sweep_normal;
-        Pose::new(origin, renormalize(a.rotation * ca + self.axis_rotation * sa))
+        let (origin, rotation) = kernel::evaluate(
+            a.origin.into(),
+            a.rotation.into(),
+            &self.coefficients,
+            t,
+            sa,
+            ca,
+        );
+        Pose::new(origin.into(), rotation.into())
     }
 
     /// The world-frame twist of the screw per unit `t`: angular velocity `ω = θ n` and the
@@ -274,14 +258,16 @@ impl Screw {
     /// `ω × (ω × x + v₀)`, the same at every `t` of the span (the twist is constant along a
     /// screw). `v₀ = d n + (θ/2)(cot(θ/2) u − n × u)`, well conditioned for all `θ`.
     pub fn twist(&self) -> (DVec3, DVec3) {
+        let (axis, perp): (DVec3, DVec3) =
+            (self.coefficients.axis.into(), self.coefficients.perp.into());
         if self.sin_half == 0.0 {
-            return (DVec3::ZERO, self.perp);
+            return (DVec3::ZERO, perp);
         }
         let h = self.half_angle;
-        let omega = (2.0 * h) * self.axis;
+        let omega = (2.0 * h) * axis;
         // (θ/2)·cot(θ/2) = h·cos/sin, written so that it tends to 1 as h → 0.
         let hcot = h / self.sin_half * self.cos_half;
-        let v0 = self.slide * self.axis + hcot * self.perp - h * self.axis.cross(self.perp);
+        let v0 = self.coefficients.slide * axis + hcot * perp - h * axis.cross(perp);
         (omega, v0)
     }
 
@@ -290,8 +276,13 @@ impl Screw {
         let a = &self.start;
         let scale = 1f64.max(a.origin.length()).max(self.end().origin.length());
         let theta = self.angle();
+        let (axis, slide, perp): (DVec3, f64, DVec3) = (
+            self.coefficients.axis.into(),
+            self.coefficients.slide,
+            self.coefficients.perp.into(),
+        );
         if theta <= ANGLE_EPSILON || self.sin_half == 0.0 {
-            let translation = self.slide * self.axis + self.perp;
+            let translation = slide * axis + perp;
             let len = translation.length();
             if len <= LENGTH_EPSILON * scale {
                 return ScrewKind::Identity;
@@ -304,7 +295,6 @@ impl Screw {
         // After a half-turn tie-break θ may exceed π by at most ~4e-12 (it is exactly the same
         // rotation seen from the chosen side): report the canonical π with the chosen axis.
         let angle = theta.min(std::f64::consts::PI);
-        let (axis, slide, perp) = (self.axis, self.slide, self.perp);
         // Foot point relative to the axis through the world origin: P⊥ = (u + (n×u)/tan(θ/2))/2.
         let cot_half = (0.5 * angle).cos() / (0.5 * angle).sin();
         let foot = 0.5 * (perp + axis.cross(perp) * cot_half);
@@ -324,15 +314,6 @@ impl Screw {
     pub fn end(&self) -> Pose {
         self.at(1.0)
     }
-}
-
-/// Rotates `v` by the unit quaternion `q`: `v + 2w (u × v) + 2 u × (u × v)` with `u = q.xyz`,
-/// written with one shared cross product (cheaper than the general formula for any norm).
-#[inline]
-fn rotate(q: DQuat, v: DVec3) -> DVec3 {
-    let u = DVec3::new(q.x, q.y, q.z);
-    let t = 2.0 * u.cross(v);
-    v + q.w * t + u.cross(t)
 }
 
 /// The half angle `atan2(s, c)` in `[0, π/2]` for `s > 0`, `c ≥ 0` (in `(π/2, π/2 + 10⁻¹²]`

@@ -209,25 +209,44 @@ impl Subdivision {
     pub fn step_cyclic<T: Blend>(&self, input: &[T], out: &mut Vec<T>) -> Result<(), Error> {
         self.validate()?;
         Subdivision { levels: 1, ..*self }.output_len(input.len(), true)?;
-        self.step_unchecked(input, out);
+        self.step_unchecked(input, out, &mut Scratch::default());
         Ok(())
     }
 
-    fn step_unchecked<T: Blend>(&self, input: &[T], out: &mut Vec<T>) {
+    fn step_unchecked<T: Blend>(&self, input: &[T], out: &mut Vec<T>, scratch: &mut Scratch<T>) {
         out.clear();
         match self.rules {
-            Rules::Direct => direct_step(input, self.scheme, out),
-            Rules::SplitTweak => split_tweak_step(input, self.scheme, out),
+            Rules::Direct => direct_step(input, self.scheme, out, scratch),
+            Rules::SplitTweak => split_tweak_step(input, self.scheme, out, scratch),
         }
     }
 
     fn refine_cycle<T: Blend>(&self, mut current: Vec<T>) -> Vec<T> {
         let mut next = Vec::with_capacity(current.len() << self.levels);
+        let mut scratch = Scratch::default();
         for _ in 0..self.levels {
-            self.step_unchecked(&current, &mut next);
+            self.step_unchecked(&current, &mut next, &mut scratch);
             std::mem::swap(&mut current, &mut next);
         }
         current
+    }
+}
+
+/// Buffers reused from one subdivision step to the next (a step's temporaries at the finest
+/// levels are hundreds of kilobytes: allocating them afresh each step costs page faults).
+struct Scratch<T> {
+    samples: Vec<Vec<T>>,
+    left: Vec<T>,
+    right: Vec<T>,
+}
+
+impl<T> Default for Scratch<T> {
+    fn default() -> Self {
+        Scratch {
+            samples: Vec::new(),
+            left: Vec::new(),
+            right: Vec::new(),
+        }
     }
 }
 
@@ -244,58 +263,79 @@ pub(crate) fn extend_open<T: Blend>(input: &[T], k: usize) -> Vec<T> {
     e
 }
 
-/// The direct rules (spec §6.1) and the J_s family, with each coarse span's interpolant computed
-/// once. `L_i` is the span `P_i → P_{i+1}`; reversed arguments use `blend(b, t, a) =
-/// blend(a, 1 − t, b)`.
-fn direct_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>) {
+/// The direct rules (spec §6.1) and the J_s family. `L_i` is the span `P_i → P_{i+1}`; reversed
+/// arguments use `blend(b, t, a) = blend(a, 1 − t, b)`:
+///
+/// - old pose: `s(s(b, s/4, a), ½, s(b, s/4, c))` = `mid(L_{i−1}(1 − s/4), L_i(s/4))`, or `P_i`
+///   itself for `s = 0` (4-point);
+/// - new pose: `s(s(a, w, b), ½, s(d, w, c))` = `mid(L_{i−1}(w), L_{i+1}(1 − w))` with
+///   `w = 1 + (1 − s)/8`, or `L_i(½)` for the B-spline (`s = 1`, where the rule collapses).
+///
+/// So B-spline: `L(¾), L(¼), L(½)`; 4-point: `L(9/8), L(−1/8)`; Jarek: `L(7/8), L(1/8),
+/// L(17/16), L(−1/16)`. Every span is sampled at those fractions in one batch (its logarithm
+/// computed once), then the midpoints are taken in a second batch.
+fn direct_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>, scratch: &mut Scratch<T>) {
     let n = p.len();
-    let spans: Vec<T::Span> = (0..n).map(|i| T::span(&p[i], &p[(i + 1) % n])).collect();
-    let at = |i: usize, t: f64| T::span_at(&spans[i % n], t);
+    let s = scheme.j_parameter();
+    let prev = |i: usize| if i == 0 { n - 1 } else { i - 1 };
+    let next = |i: usize| if i + 1 == n { 0 } else { i + 1 };
+    let bspline = scheme == Scheme::BSpline;
+    let w = 1.0 + (1.0 - s) / 8.0;
+    let mut ts = Vec::with_capacity(4);
+    if s != 0.0 {
+        ts.extend([1.0 - s / 4.0, s / 4.0]);
+    }
+    if bspline {
+        ts.push(0.5);
+    } else {
+        ts.extend([w, 1.0 - w]);
+    }
+    let Scratch {
+        samples,
+        left: olds,
+        right: news,
+    } = scratch;
+    samples.resize_with(ts.len(), Vec::new);
+    let samples = &mut samples[..ts.len()];
+    T::sample_cycle(p, &ts, samples);
+    olds.clear();
+    news.clear();
+    if s != 0.0 {
+        let (left, right) = (&samples[0], &samples[1]);
+        T::midpoints(n, |i| (left[prev(i)], right[i]), olds);
+    }
+    let olds: &[T] = if s != 0.0 { olds } else { p };
+    let news: &[T] = if bspline {
+        &samples[2]
+    } else {
+        let (left, right) = (&samples[ts.len() - 2], &samples[ts.len() - 1]);
+        T::midpoints(n, |i| (left[prev(i)], right[next(i)]), news);
+        news
+    };
     out.reserve(2 * n);
-    for (i, pi) in p.iter().enumerate() {
-        let prev = (i + n - 1) % n; // span a → b
-        let next = (i + 1) % n; // span c → d
-        let (old, new) = match scheme {
-            // old s(s(b,¼,a), ½, s(b,¼,c)); new s(b,½,c)
-            Scheme::BSpline => (T::midpoint(&at(prev, 0.75), &at(i, 0.25)), at(i, 0.5)),
-            // old b; new s(s(a,9/8,b), ½, s(d,9/8,c))
-            Scheme::FourPoint => (
-                *pi,
-                T::midpoint(&at(prev, 9.0 / 8.0), &at(next, -1.0 / 8.0)),
-            ),
-            // old s(s(a,7/8,b), ½, s(c,7/8,b)); new s(s(a,17/16,b), ½, s(d,17/16,c))
-            Scheme::Jarek => (
-                T::midpoint(&at(prev, 7.0 / 8.0), &at(i, 1.0 / 8.0)),
-                T::midpoint(&at(prev, 17.0 / 16.0), &at(next, -1.0 / 16.0)),
-            ),
-            // old s(s(b,s/4,a), ½, s(b,s/4,c)); new s(s(a,w,b), ½, s(d,w,c)), w = 1 + (1−s)/8
-            Scheme::J(s) => {
-                let old = if s == 0.0 {
-                    *pi
-                } else {
-                    T::midpoint(&at(prev, 1.0 - s / 4.0), &at(i, s / 4.0))
-                };
-                let w = 1.0 + (1.0 - s) / 8.0;
-                (old, T::midpoint(&at(prev, w), &at(next, 1.0 - w)))
-            }
-        };
-        out.push(old);
-        out.push(new);
+    for (old, new) in olds.iter().zip(news) {
+        out.push(*old);
+        out.push(*new);
     }
 }
 
 /// The first version's rules (spec §6.2): split, then tweak the split sequence `Z`, all right-hand
 /// sides reading `Z`. The 4-point and Jarek new-pose tweaks use the corrected argument order
 /// `s(s(Z_{j−2}, ½, Z_{j+2}), 5/4 resp. 9/8, Z_j)`.
-fn split_tweak_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>) {
+fn split_tweak_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>, scratch: &mut Scratch<T>) {
     let n = p.len();
     let m = 2 * n;
-    let mut z = Vec::with_capacity(m);
-    for i in 0..n {
-        z.push(p[i]);
-        z.push(T::midpoint(&p[i], &p[(i + 1) % n]));
-    }
-    let zz = |j: usize| &z[j % m];
+    let Scratch {
+        left: split,
+        right: z,
+        ..
+    } = scratch;
+    split.clear();
+    T::midpoints(n, |i| (p[i], p[(i + 1) % n]), split);
+    z.clear();
+    z.extend(p.iter().zip(split.iter()).flat_map(|(a, b)| [*a, *b]));
+    let z: &[T] = z;
+    let zz = |j: usize| z[j % m];
     // (old-pose weight, new-pose weight): how far each tweak goes. The J_s family has no
     // split-tweak form (options are validated before a step runs); its named members map here.
     let s = scheme.j_parameter();
@@ -306,22 +346,38 @@ fn split_tweak_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>) {
     } else {
         (Some(0.25), Some(9.0 / 8.0))
     };
-    out.reserve(m);
-    for (j, zj) in z.iter().enumerate() {
-        let q = if j % 2 == 0 {
-            match old_w {
-                // Q_j = s(Z_j, w, s(Z_{j−1}, ½, Z_{j+1}))
-                Some(w) => T::blend(zj, w, &T::midpoint(zz(j + m - 1), zz(j + 1))),
-                None => *zj,
+    let weight = |j: usize| if j % 2 == 0 { old_w } else { new_w };
+    let tweaked: Vec<usize> = (0..m).filter(|&j| weight(j).is_some()).collect();
+    // Q_j = s(Z_j, w, s(Z_{j−1}, ½, Z_{j+1})) for old poses (even j),
+    // Q_j = s(s(Z_{j−2}, ½, Z_{j+2}), w, Z_j) for new poses (odd j).
+    let mut mids = Vec::with_capacity(tweaked.len());
+    T::midpoints(
+        tweaked.len(),
+        |k| {
+            let j = tweaked[k];
+            let r = if j % 2 == 0 { 1 } else { 2 };
+            (zz(j + m - r), zz(j + r))
+        },
+        &mut mids,
+    );
+    let mut moved = Vec::with_capacity(tweaked.len());
+    T::blends(
+        tweaked.len(),
+        |k| {
+            let j = tweaked[k];
+            let w = weight(j).unwrap_or(0.0);
+            if j % 2 == 0 {
+                (z[j], w, mids[k])
+            } else {
+                (mids[k], w, z[j])
             }
-        } else {
-            match new_w {
-                // Q_j = s(s(Z_{j−2}, ½, Z_{j+2}), w, Z_j)
-                Some(w) => T::blend(&T::midpoint(zz(j + m - 2), zz(j + 2)), w, zj),
-                None => *zj,
-            }
-        };
-        out.push(q);
+        },
+        &mut moved,
+    );
+    out.clear();
+    out.extend_from_slice(z);
+    for (&j, q) in tweaked.iter().zip(moved) {
+        out[j] = q;
     }
 }
 

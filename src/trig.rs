@@ -11,6 +11,8 @@
 
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_6};
 
+use crate::lanes::Real;
+
 /// `|x|` up to which [`sin_cos`] reduces by multiples of π/2 itself (the reduction below is
 /// exact for `|k| < 2²⁷`, far beyond this); larger arguments use `f64::sin_cos`.
 const FAST_SIN_COS_LIMIT: f64 = 1.0e5;
@@ -49,34 +51,35 @@ const COS: [f64; 8] = [
 /// x86-64 targets without SSE4.1.
 const ROUND_MAGIC: f64 = 6_755_399_441_055_744.0;
 
-/// `(sin x, cos x)`.
-///
-/// Branch-free for `|x| ≤ 10⁵`: the quadrant only swaps and negates the kernel's results, done
-/// with bit operations (the quadrant of `tθ/2` changes from one screw to the next when `t`
-/// leaves `[0, 1]`, and a branch on it would be mispredicted half the time).
+/// `(sin x, cos x)`: the branch-free [`sin_cos_kernel`] for `|x| ≤ 10⁵`, `std` beyond (and for
+/// NaN).
 #[inline]
 pub(crate) fn sin_cos(x: f64) -> (f64, f64) {
-    // NaN and large or infinite arguments go to `std` (false for NaN, hence the negation).
-    if !(x.abs() <= FAST_SIN_COS_LIMIT) {
+    if !in_sin_cos_range(x) {
         return x.sin_cos();
     }
-    let k = (x * std::f64::consts::FRAC_2_PI + ROUND_MAGIC) - ROUND_MAGIC;
-    let r = (x - k * PIO2_HI) - k * PIO2_LO;
+    sin_cos_kernel(x)
+}
+
+/// Whether [`sin_cos_kernel`] applies to `x` (false for NaN).
+#[inline]
+pub(crate) fn in_sin_cos_range(x: f64) -> bool {
+    x.abs() <= FAST_SIN_COS_LIMIT
+}
+
+/// `(sin x, cos x)` for `|x| ≤ 10⁵`, on one or two lanes, without a branch: an exact reduction
+/// by the nearest multiple `k` of π/2, two short series, then the quadrant `k mod 4` only swaps
+/// and negates them, done with bit operations (the quadrant of `tθ/2` changes from one screw to
+/// the next when `t` leaves `[0, 1]`, and a branch on it would be mispredicted half the time).
+#[inline(always)]
+pub(crate) fn sin_cos_kernel<R: Real>(x: R) -> (R, R) {
+    let rounded = x * R::splat(std::f64::consts::FRAC_2_PI) + R::splat(ROUND_MAGIC);
+    let k = rounded - R::splat(ROUND_MAGIC);
+    let r = (x - k * R::splat(PIO2_HI)) - k * R::splat(PIO2_LO);
     let r2 = r * r;
     let s = r + r * r2 * estrin8(r2, &SIN);
-    let c = 1.0 + r2 * estrin8(r2, &COS);
-    // Quadrant q = k mod 4: (sin, cos) = (s, c), (c, −s), (−s, −c), (−c, s).
-    let q = k as i64 as u64;
-    let swap = (q & 1).wrapping_neg(); // all ones for odd q
-    let (sb, cb) = (s.to_bits(), c.to_bits());
-    let sin_bits = (sb & !swap) | (cb & swap);
-    let cos_bits = (cb & !swap) | (sb & swap);
-    let sin_sign = (q & 2) << 62;
-    let cos_sign = (q.wrapping_add(1) & 2) << 62;
-    (
-        f64::from_bits(sin_bits ^ sin_sign),
-        f64::from_bits(cos_bits ^ cos_sign),
-    )
+    let c = R::splat(1.0) + r2 * estrin8(r2, &COS);
+    R::quadrant(rounded, s, c)
 }
 
 /// `tan(π/12)`: beyond it [`atan_ratio`] shifts the argument by π/6.
@@ -103,68 +106,71 @@ const ATAN: [f64; 15] = [
     -1.0 / 31.0,
 ];
 
-/// The two cases of the `atan` kernel's argument `(num, den) = (n·A − d·B, n·C + d·D)` and its
-/// offset: `[A, B, C, D, offset]`. Unshifted `(n, d)` with offset 0; beyond `tan(π/12)`,
-/// `atan(n/d) = π/6 + atan((n√3 − d)/(n + d√3))`.
-const ATAN_CASES: [[f64; 5]; 2] = [
-    [1.0, 0.0, 0.0, 1.0, 0.0],
-    [SQRT_3, 1.0, 1.0, SQRT_3, FRAC_PI_6],
-];
-
-/// `atan2(y, x)` for `y ≥ 0`, `x ≥ 0`, not both zero (an angle in `[0, π/2]`), branch-free.
-///
-/// The smaller of the two over the larger is in `[0, 1]`; one shift by π/6 brings it within
-/// `tan(π/12)` of zero, where the series converges fast. The angle of one screw tells nothing
-/// about the next one's, so the two choices (octant, shift) are table lookups rather than
-/// branches, which would be mispredicted half the time (LLVM turns plain selects that guard a
-/// division back into branches). Other arguments use `f64::atan2`.
+/// `atan2(y, x)` for `y ≥ 0`, `x ≥ 0`, not both zero (an angle in `[0, π/2]`): the branch-free
+/// [`atan2_kernel`] when both are finite, `std` otherwise.
 #[inline]
 pub(crate) fn atan2_quadrant(y: f64, x: f64) -> f64 {
-    let in_range = y >= 0.0 && x >= 0.0 && (y > 0.0 || x > 0.0); // false for NaN
-    if !in_range {
+    if !in_atan2_range(y, x) {
         return y.atan2(x);
     }
-    // `+ 0.0` turns −0 into +0, whose bit pattern `greater` needs.
-    let (y, x) = (y + 0.0, x + 0.0);
-    let (n, d) = (y.min(x), y.max(x));
-    let [a, b, c, e, base] = ATAN_CASES[greater(n, TAN_PI_12 * d)];
-    let z = (n * a - d * b) / (n * c + d * e);
-    let z2 = z * z;
-    let angle = base + (z + z * z2 * estrin15(z2, &ATAN));
-    // Above the diagonal the angle is π/2 minus that of the mirrored point.
-    let [offset, sign] = [[0.0, 1.0], [FRAC_PI_2, -1.0]][greater(y, x)];
-    offset + sign * angle
+    atan2_kernel(y, x)
 }
 
-/// `1` if `a > b`, else `0`, for non-negative finite `a` and `b`, computed on their bit patterns
-/// (which order like the numbers). Written as a subtraction so that the compiler cannot turn the
-/// lookup it indexes back into a branch, as it does with a `bool` index or a select.
+/// Whether [`atan2_kernel`] applies to `(y, x)` (false for NaN).
 #[inline]
-fn greater(a: f64, b: f64) -> usize {
-    (b.to_bits().wrapping_sub(a.to_bits()) >> 63) as usize
+pub(crate) fn in_atan2_range(y: f64, x: f64) -> bool {
+    y >= 0.0 && x >= 0.0 && (y > 0.0 || x > 0.0) && y < f64::INFINITY && x < f64::INFINITY
+}
+
+/// `atan2(y, x)` for finite `y ≥ 0`, `x ≥ 0`, not both zero, on one or two lanes, without a
+/// branch.
+///
+/// The smaller of the two over the larger is in `[0, 1]`; beyond `tan(π/12)` the identity
+/// `atan(n/d) = π/6 + atan((n√3 − d)/(n + d√3))` brings it within `tan(π/12)` of zero, where
+/// the series converges fast. Both choices (which octant, whether to shift) are `0`/`1` steps
+/// that weight the two cases exactly, not branches: the angle of one screw tells nothing about
+/// the next one's (and compilers turn plain selects that guard a division back into branches).
+#[inline(always)]
+pub(crate) fn atan2_kernel<R: Real>(y: R, x: R) -> R {
+    let one = R::splat(1.0);
+    // `+ 0` turns −0 into +0, whose bit pattern `gt_step` needs.
+    let (y, x) = (y + R::splat(0.0), x + R::splat(0.0));
+    let (n, d) = (y.min(x), y.max(x));
+    // shift = 1: (n√3 − d)/(n + d√3) and π/6; shift = 0: n/d and 0. `√3 − 1` and `1 + (√3 − 1)`
+    // are exact, so both cases are computed with exactly the roundings of their own formula.
+    let shift = n.gt_step(d * R::splat(TAN_PI_12));
+    let root = one + shift * R::splat(SQRT_3 - 1.0);
+    let z = (n * root - d * shift) / (n * shift + d * root);
+    let z2 = z * z;
+    let angle = shift * R::splat(FRAC_PI_6) + (z + z * z2 * estrin15(z2, &ATAN));
+    // Above the diagonal the angle is π/2 minus that of the mirrored point.
+    let steep = y.gt_step(x);
+    steep * R::splat(FRAC_PI_2) + (one - steep - steep) * angle
 }
 
 /// `Σ c[i] xⁱ` for 8 coefficients by Estrin's scheme: the same terms as Horner's rule but a
 /// dependency chain of depth 3 instead of 8 (the polynomials sit on the screw's critical path).
-#[inline]
-fn estrin8(x: f64, c: &[f64; 8]) -> f64 {
+#[inline(always)]
+fn estrin8<R: Real>(x: R, c: &[f64; 8]) -> R {
+    let k = |i: usize| R::splat(c[i]);
     let x2 = x * x;
     let x4 = x2 * x2;
-    let a = (c[0] + c[1] * x) + (c[2] + c[3] * x) * x2;
-    let b = (c[4] + c[5] * x) + (c[6] + c[7] * x) * x2;
+    let a = (k(0) + k(1) * x) + (k(2) + k(3) * x) * x2;
+    let b = (k(4) + k(5) * x) + (k(6) + k(7) * x) * x2;
     a + b * x4
 }
 
 /// `Σ c[i] xⁱ` for 15 coefficients by Estrin's scheme (depth 4 instead of 15).
-#[inline]
-fn estrin15(x: f64, c: &[f64; 15]) -> f64 {
+#[inline(always)]
+fn estrin15<R: Real>(x: R, c: &[f64; 15]) -> R {
+    let k = |i: usize| R::splat(c[i]);
     let x2 = x * x;
     let x4 = x2 * x2;
     let x8 = x4 * x4;
-    let a = (c[0] + c[1] * x) + (c[2] + c[3] * x) * x2;
-    let b = (c[4] + c[5] * x) + (c[6] + c[7] * x) * x2;
-    let d = (c[8] + c[9] * x) + (c[10] + c[11] * x) * x2;
-    let e = (c[12] + c[13] * x) + c[14] * x2;
+    let a = (k(0) + k(1) * x) + (k(2) + k(3) * x) * x2;
+    let b = (k(4) + k(5) * x) + (k(6) + k(7) * x) * x2;
+    let d = (k(8) + k(9) * x) + (k(10) + k(11) * x) * x2;
+    let e = (k(12) + k(13) * x) + k(14) * x2;
     (a + b * x4) + (d + e * x4) * x8
 }
 

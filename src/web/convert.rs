@@ -539,13 +539,13 @@ pub(crate) fn poses_from_array(data: &[f64], at: &str) -> Result<Vec<Pose>, Erro
             ),
         });
     }
-    data.chunks_exact(POSE_STRIDE)
-        .enumerate()
-        .map(|(i, c)| {
-            Pose::from_wxyz([c[0], c[1], c[2]], [c[3], c[4], c[5], c[6]])
-                .map_err(|e| e.within(&format!("{at}[{i}]")))
-        })
-        .collect()
+    let mut poses = Vec::with_capacity(data.len() / POSE_STRIDE);
+    for (i, c) in data.chunks_exact(POSE_STRIDE).enumerate() {
+        let pose = Pose::from_wxyz([c[0], c[1], c[2]], [c[3], c[4], c[5], c[6]])
+            .map_err(|e| e.within(&format!("{at}[{i}]")))?;
+        poses.push(pose);
+    }
+    Ok(poses)
 }
 
 /// Appends one kinematics sample in the [`KINEMATICS_STRIDE`] layout.

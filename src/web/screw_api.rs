@@ -4,11 +4,11 @@
 use wasm_bindgen::prelude::*;
 
 use super::convert::{
-    f64_array, finite, pose_from_js, pose_to_js, poses_from_array, poses_from_fn,
+    f64_array, finite, pose_from_js, pose_to_js, poses_from_array, poses_from_fn, poses_to_array,
     poses_to_matrices, to_js, ScrewInfo, POSE_STRIDE,
 };
 use super::motion_api::batch;
-use crate::{Error, Screw, MAX_REFINED_POSES};
+use crate::{Blend, Error, Pose, Screw, MAX_REFINED_POSES};
 
 /// `screw(a, t, b)`: the pose after the fraction `t` of the screw motion from `a` to `b`
 /// (`t = 0` gives `a`, `t = 1` gives `b`, any real `t` extrapolates).
@@ -66,9 +66,10 @@ pub fn screw_pairs(
         }
         .into());
     }
-    Ok(poses_from_fn(ts.len(), |k| {
-        crate::screw(&starts[k], ts[k], &ends[k])
-    }))
+    // The batch route: two screws at a time on SIMD lanes, bit for bit the same as `screw`.
+    let mut poses = Vec::with_capacity(ts.len());
+    Pose::blends(ts.len(), |k| (starts[k], ts[k], ends[k]), &mut poses);
+    Ok(poses_to_array(&poses))
 }
 
 /// The display parameters of the screw from `a` to `b`: its kind (`identity`, `translation`,

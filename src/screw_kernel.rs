@@ -1,0 +1,126 @@
+//! The screw's arithmetic (spec §2.4), written once over [`Real`] lanes: [`crate::Screw`] runs it
+//! on one `f64`, the batch routines of `screw_batch` on two screws at a time.
+//!
+//! Only the regular case lives here; the rare cases that need a decision (no rotation, a half
+//! turn, arguments outside the fast trigonometric range) are decided by the callers, which check
+//! for them and take the careful scalar route when they occur.
+//!
+//! With `D = b ∘ a⁻¹` (rotation by `θ` about unit `n`, translation `t_D`), `d = n·t_D` and
+//! `u = t_D − d n`, the screw is
+//!
+//! ```text
+//! q(t) = cos(tθ/2) q₀ + sin(tθ/2) (n, 0) q₀
+//! O(t) = O₀ + t d n + sin(tθ/2) cos(tθ/2) E + sin²(tθ/2) (n × E),
+//!        E = cot(θ/2) u + n × (2 O₀ − t_D)
+//! ```
+//!
+//! which is spec §2.4's `O(t) = Rot(n, tθ) O₀ + t d n + [sin(tθ/2)/sin(θ/2)] Rot(n, (t−1)θ/2) u`
+//! with `Rot(n, tθ) O₀` and the `u` term expanded by the half-angle identities: everything that
+//! depends only on the span folds into `E`, and an evaluation needs no division.
+
+use crate::lanes::{Real, Q, V3};
+
+/// The relative displacement `D = b ∘ a⁻¹` of two poses, before any decision.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Relative<R> {
+    /// `sin(θ/2) n`: the vector part of the relative rotation, taken with `w ≥ 0`.
+    pub v: V3<R>,
+    /// `cos(θ/2) ≥ 0`.
+    pub w: R,
+    /// `|v| = sin(θ/2)`.
+    pub s: R,
+    /// `t_D = O_b − R_D O_a`.
+    pub translation: V3<R>,
+}
+
+/// The relative displacement from pose `(oa, qa)` to pose `(ob, qb)`.
+///
+/// The relative rotation is taken the short way round (`w ≥ 0`) by multiplying by `±1` rather
+/// than branching on the sign of `w`, which is a coin toss for unrelated poses.
+#[inline(always)]
+pub(crate) fn relative<R: Real>(oa: V3<R>, qa: Q<R>, ob: V3<R>, qb: Q<R>) -> Relative<R> {
+    let qd = qb.mul(qa.conjugate());
+    let qd = qd.scale(qd.w.sign_one());
+    let v = qd.xyz();
+    Relative {
+        v,
+        w: qd.w,
+        s: v.dot(v).sqrt(),
+        translation: ob - qd.rotate(oa),
+    }
+}
+
+/// What an evaluation needs of a span with a rotation (see the module documentation).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Coefficients<R> {
+    /// Unit axis `n`.
+    pub axis: V3<R>,
+    /// Slide `d`.
+    pub slide: R,
+    /// `u = t_D − d n`.
+    pub perp: V3<R>,
+    /// `E`.
+    pub sweep: V3<R>,
+    /// `n × E`.
+    pub sweep_normal: V3<R>,
+    /// `(n, 0) q₀`.
+    pub axis_rotation: Q<R>,
+}
+
+/// The coefficients of the span from `(oa, qa)` with unit axis `axis`, slide `slide`, half-angle
+/// cotangent `cot_half` and translation `t_D`.
+#[inline(always)]
+pub(crate) fn coefficients<R: Real>(
+    oa: V3<R>,
+    qa: Q<R>,
+    axis: V3<R>,
+    slide: R,
+    cot_half: R,
+    translation: V3<R>,
+) -> Coefficients<R> {
+    let perp = translation - axis.scale(slide);
+    let sweep = perp.scale(cot_half) + axis.cross(oa.scale(R::splat(2.0)) - translation);
+    Coefficients {
+        axis,
+        slide,
+        perp,
+        sweep,
+        sweep_normal: axis.cross(sweep),
+        axis_rotation: qa.premul_vector(axis),
+    }
+}
+
+/// The pose at `t` of the span from `(oa, qa)`, given `sa = sin(tθ/2)` and `ca = cos(tθ/2)`.
+/// The rotation is renormalised (one Newton step), so that errors do not build up over
+/// subdivision levels.
+#[inline(always)]
+pub(crate) fn evaluate<R: Real>(
+    oa: V3<R>,
+    qa: Q<R>,
+    c: &Coefficients<R>,
+    t: R,
+    sa: R,
+    ca: R,
+) -> (V3<R>, Q<R>) {
+    let (sc, ss) = (sa * ca, sa * sa);
+    let origin = oa + c.axis.scale(t * c.slide) + c.sweep.scale(sc) + c.sweep_normal.scale(ss);
+    let q = qa.scale(ca).add(c.axis_rotation.scale(sa));
+    (origin, renormalize(q))
+}
+
+/// `sin(θ/4)` and `cos(θ/4)` from `sin(θ/2) = s` and `cos(θ/2) = w ≥ 0`, without a
+/// transcendental function: `cos(θ/4) = √((1 + w)/2)` is well conditioned since `θ/2 ≤ π/2`.
+#[inline(always)]
+pub(crate) fn half_of_half<R: Real>(s: R, w: R) -> (R, R) {
+    let ca = (R::splat(0.5) * (R::splat(1.0) + w)).sqrt();
+    (s / (ca + ca), ca)
+}
+
+/// `q` scaled back to unit length by one Newton step of `1/√n²` around 1: exact to
+/// `O((n² − 1)²)`, enough for inputs that are unit to rounding, and cheaper than a square root
+/// and a division.
+#[inline(always)]
+pub(crate) fn renormalize<R: Real>(q: Q<R>) -> Q<R> {
+    let n2 = q.length_squared();
+    q.scale(R::splat(1.5) - R::splat(0.5) * n2)
+}
