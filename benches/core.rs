@@ -2,7 +2,8 @@
 //! scheme and rule set, and nalgebra's `UnitDualQuaternion::sclerp` on the same pose pairs.
 //!
 //! Run: `cargo bench --bench core`. Before timing, the accuracy of both screw implementations is
-//! printed against screws constructed exactly (rotation about a known axis + slide).
+//! printed against screws constructed exactly (rotation about a known axis + slide), and the
+//! three full-screw routes are timed in alternating bursts (ratios robust to a drifting machine).
 
 use std::hint::black_box;
 
@@ -94,10 +95,54 @@ fn report_accuracy(data: &[(Pose, Pose, Pose)]) {
     println!("accuracy at t = 0.3 over {PAIRS} pairs (max |Δo| + angle): screwbender {ours:.2e}, nalgebra sclerp {theirs:.2e}");
 }
 
+/// Times the three full-screw routes in alternating bursts of `PAIRS` screws and prints the
+/// median time per screw of each and their ratios. On a shared machine whose speed drifts from
+/// one second to the next, back-to-back bursts compare like with like where criterion's
+/// sequential groups (seconds apart) may not.
+fn report_interleaved(data: &[(Pose, Pose, Pose)]) {
+    use std::time::Instant;
+    let dqs: Vec<_> = data.iter().map(|(a, b, _)| (to_dq(a), to_dq(b))).collect();
+    let mut out = Vec::with_capacity(PAIRS);
+    let mut times = [Vec::new(), Vec::new(), Vec::new()];
+    for _ in 0..400 {
+        let t0 = Instant::now();
+        for (a, b, _) in data {
+            black_box(screw(black_box(a), black_box(0.3), black_box(b)));
+        }
+        let t1 = Instant::now();
+        out.clear();
+        Pose::blends(PAIRS, |i| (data[i].0, black_box(0.3), data[i].1), &mut out);
+        black_box(&out);
+        let t2 = Instant::now();
+        for (a, b) in &dqs {
+            black_box(black_box(a).sclerp(black_box(b), black_box(0.3)));
+        }
+        let t3 = Instant::now();
+        for (k, (from, to)) in [(t0, t1), (t1, t2), (t2, t3)].into_iter().enumerate() {
+            times[k].push((to - from).as_secs_f64() * 1e9 / PAIRS as f64);
+        }
+    }
+    let [single, batch, sclerp] = times.map(|mut v| {
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2]
+    });
+    println!(
+        "interleaved medians per screw: screw(a, t, b) {single:.1} ns ({:.2} M/s), batch {batch:.1} ns \
+         ({:.2} M/s), nalgebra sclerp {sclerp:.1} ns ({:.2} M/s); ratios vs sclerp: {:.2}x single, \
+         {:.2}x batch",
+        1e3 / single,
+        1e3 / batch,
+        1e3 / sclerp,
+        sclerp / single,
+        sclerp / batch
+    );
+}
+
 fn screws(c: &mut Criterion) {
     let mut rng = Rng(42);
     let data = pairs(&mut rng);
     report_accuracy(&data);
+    report_interleaved(&data);
     let mut g = c.benchmark_group("screw");
     g.throughput(Throughput::Elements(PAIRS as u64));
     g.bench_function("full screw(a, t, b)", |bench| {

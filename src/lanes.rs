@@ -26,6 +26,8 @@ pub(crate) trait Real:
 {
     /// The value `v` in every lane.
     fn splat(v: f64) -> Self;
+    /// Whether `f` holds in every lane.
+    fn all(self, f: impl Fn(f64) -> bool) -> bool;
     /// Square root.
     fn sqrt(self) -> Self;
     /// Minimum (of non-NaN values; with a NaN, the second operand).
@@ -69,6 +71,10 @@ impl Real for f64 {
     #[inline]
     fn splat(v: f64) -> f64 {
         v
+    }
+    #[inline]
+    fn all(self, f: impl Fn(f64) -> bool) -> bool {
+        f(self)
     }
     #[inline]
     fn sqrt(self) -> f64 {
@@ -156,6 +162,10 @@ impl Real for F2 {
     #[inline(always)]
     fn splat(v: f64) -> F2 {
         F2([v, v])
+    }
+    #[inline(always)]
+    fn all(self, f: impl Fn(f64) -> bool) -> bool {
+        f(self.0[0]) && f(self.0[1])
     }
     #[inline(always)]
     fn sqrt(self) -> F2 {

@@ -44,7 +44,15 @@ pub const HALF_TURN_EPSILON: f64 = 1e-12;
 /// ```
 #[inline]
 pub fn screw(a: &Pose, t: f64, b: &Pose) -> Pose {
-    Screw::between(a, b).at(t)
+    // The regular case straight through the kernel (the same operations as the two calls
+    // below, without a `Screw` in memory between them); the rare cases decide in `Screw`.
+    let (oa, qa) = (a.origin.into(), a.rotation.into());
+    let regular = kernel::regular_span(oa, qa, b.origin.into(), b.rotation.into())
+        .and_then(|span| kernel::regular_at(&span, t));
+    match regular {
+        Some((origin, rotation)) => Pose::new(origin.into(), rotation.into()),
+        None => Screw::between(a, b).at(t),
+    }
 }
 
 /// The screw from one pose to another, with its logarithm precomputed so that [`Screw::at`] costs

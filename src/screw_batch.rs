@@ -7,9 +7,8 @@
 
 use crate::lanes::{Real, F2, Q, V3};
 use crate::pose::Pose;
-use crate::screw::{Screw, HALF_TURN_EPSILON, MIN_ROTATION_SINE};
-use crate::screw_kernel::{self as kernel, Coefficients};
-use crate::trig;
+use crate::screw::Screw;
+use crate::screw_kernel::{self as kernel, RegularSpan};
 
 /// Two poses, lane `k` holding pose `k`.
 #[inline(always)]
@@ -38,58 +37,25 @@ fn store(o: V3<F2>, q: Q<F2>) -> [Pose; 2] {
     [lane(0), lane(1)]
 }
 
-/// Two spans with a rotation, ready for evaluation.
-struct SpanPair {
-    oa: V3<F2>,
-    qa: Q<F2>,
-    s: F2,
-    w: F2,
-    coefficients: Coefficients<F2>,
-}
-
-/// The spans `a[k] → b[k]`, or `None` when either is a rare case for the scalar route: no
-/// rotation (which includes identical rotations, whose relative rotation is exactly zero), a
-/// rotation within [`HALF_TURN_EPSILON`] of a half turn, or non-finite values.
+/// The spans `a[k] → b[k]` in the regular case (see [`kernel::regular_span`]).
 ///
 /// Inlined natively (the lanes then stay in registers across the calls); out of line on
-/// wasm32, where the callers are instantiated once per closure type and an inlined copy in
-/// each would add kilobytes to the module (whose size is budgeted) for little speed.
+/// wasm32 with SIMD, where the callers are instantiated once per closure type and an inlined
+/// copy in each would add kilobytes to the module (whose size is budgeted).
 #[cfg_attr(target_arch = "wasm32", inline(never))]
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn span_pair(a: [&Pose; 2], b: [&Pose; 2]) -> Option<SpanPair> {
+fn span_pair(a: [&Pose; 2], b: [&Pose; 2]) -> Option<RegularSpan<F2>> {
     let (oa, qa) = load(a[0], a[1]);
     let (ob, qb) = load(b[0], b[1]);
-    let rel = kernel::relative(oa, qa, ob, qb);
-    let regular = |k: usize| {
-        let (s, w) = (rel.s.0[k], rel.w.0[k]);
-        s > MIN_ROTATION_SINE && w > HALF_TURN_EPSILON && trig::in_atan2_range(s, w)
-    };
-    if !(regular(0) && regular(1)) {
-        return None;
-    }
-    let inv_s = F2::splat(1.0) / rel.s;
-    let axis = rel.v.scale(inv_s);
-    let slide = axis.dot(rel.translation);
-    Some(SpanPair {
-        oa,
-        qa,
-        s: rel.s,
-        w: rel.w,
-        coefficients: kernel::coefficients(oa, qa, axis, slide, rel.w * inv_s, rel.translation),
-    })
+    kernel::regular_span(oa, qa, ob, qb)
 }
 
-/// The poses at `t` of a span pair with half angles `h`, or `None` when `t·h` is outside the
-/// fast sine range in either lane. Inlined or not as [`span_pair`].
+/// The poses at `t` of a regular span pair (see [`kernel::regular_at`]). Inlined or not as
+/// [`span_pair`].
 #[cfg_attr(target_arch = "wasm32", inline(never))]
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn at_pair(span: &SpanPair, h: F2, t: F2) -> Option<[Pose; 2]> {
-    let x = t * h;
-    if !(trig::in_sin_cos_range(x.0[0]) && trig::in_sin_cos_range(x.0[1])) {
-        return None;
-    }
-    let (sa, ca) = trig::sin_cos_kernel(x);
-    let (o, q) = kernel::evaluate(span.oa, span.qa, &span.coefficients, t, sa, ca);
+fn at_pair(span: &RegularSpan<F2>, t: F2) -> Option<[Pose; 2]> {
+    let (o, q) = kernel::regular_at(span, t)?;
     Some(store(o, q))
 }
 
@@ -113,16 +79,13 @@ pub(crate) fn screws(n: usize, item: impl Fn(usize) -> (Pose, f64, Pose), out: &
 /// `screw(a[k], t[k], b[k])` for both lanes, or `None` for a rare case.
 #[inline(never)]
 fn screw_pair(a: [&Pose; 2], t: F2, b: [&Pose; 2]) -> Option<[Pose; 2]> {
-    let span = span_pair(a, b)?;
-    at_pair(&span, trig::atan2_kernel(span.s, span.w), t)
+    at_pair(&span_pair(a, b)?, t)
 }
 
 /// `screw(a, ½, b)` for both lanes, or `None` for a rare case.
 #[inline(never)]
 fn midpoint_pair(a: [&Pose; 2], b: [&Pose; 2]) -> Option<[Pose; 2]> {
-    let span = span_pair(a, b)?;
-    let (sa, ca) = kernel::half_of_half(span.s, span.w);
-    let (o, q) = kernel::evaluate(span.oa, span.qa, &span.coefficients, F2::splat(0.5), sa, ca);
+    let (o, q) = kernel::regular_midpoint(&span_pair(a, b)?);
     Some(store(o, q))
 }
 
@@ -175,10 +138,9 @@ pub(crate) fn sample_cycle(p: &[Pose], ts: &[f64], out: &mut [Vec<Pose>]) {
     while i + 1 < n {
         let lanes = if ts.len() <= MAX_SAMPLES {
             span_pair([&p[i], &p[i + 1]], [&p[i + 1], &p[next(i + 1)]]).and_then(|span| {
-                let h = trig::atan2_kernel(span.s, span.w);
                 let mut poses = [[Pose::IDENTITY; 2]; MAX_SAMPLES];
                 for (slot, &t) in poses.iter_mut().zip(ts) {
-                    *slot = at_pair(&span, h, F2::splat(t))?;
+                    *slot = at_pair(&span, F2::splat(t))?;
                 }
                 Some(poses)
             })

@@ -1,9 +1,9 @@
 //! The screw's arithmetic (spec §2.4), written once over [`Real`] lanes: [`crate::Screw`] runs it
 //! on one `f64`, the batch routines of `screw_batch` on two screws at a time.
 //!
-//! Only the regular case lives here; the rare cases that need a decision (no rotation, a half
-//! turn, arguments outside the fast trigonometric range) are decided by the callers, which check
-//! for them and take the careful scalar route when they occur.
+//! Only the regular case lives here ([`regular_span`], [`regular_at`] say `None` otherwise); the
+//! rare cases that need a decision (no rotation, a half turn, arguments outside the fast
+//! trigonometric range, non-finite values) are left to [`crate::Screw`]'s careful route.
 //!
 //! With `D = b ∘ a⁻¹` (rotation by `θ` about unit `n`, translation `t_D`), `d = n·t_D` and
 //! `u = t_D − d n`, the screw is
@@ -19,6 +19,8 @@
 //! depends only on the span folds into `E`, and an evaluation needs no division.
 
 use crate::lanes::{Real, Q, V3};
+use crate::screw::{HALF_TURN_EPSILON, MIN_ROTATION_SINE};
+use crate::trig;
 
 /// The relative displacement `D = b ∘ a⁻¹` of two poses, before any decision.
 #[derive(Clone, Copy, Debug)]
@@ -48,6 +50,76 @@ pub(crate) fn relative<R: Real>(oa: V3<R>, qa: Q<R>, ob: V3<R>, qb: Q<R>) -> Rel
         s: v.dot(v).sqrt(),
         translation: ob - qd.rotate(oa),
     }
+}
+
+/// A span with a rotation, in the regular case, ready for evaluation.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct RegularSpan<R> {
+    /// Start origin `O₀`.
+    pub oa: V3<R>,
+    /// Start rotation `q₀`.
+    pub qa: Q<R>,
+    /// The half angle `θ/2`.
+    pub half_angle: R,
+    /// `sin(θ/2)`.
+    pub s: R,
+    /// `cos(θ/2)`.
+    pub w: R,
+    /// The evaluation coefficients.
+    pub coefficients: Coefficients<R>,
+}
+
+/// The span from `(oa, qa)` to `(ob, qb)` (in every lane), or `None` when any lane is a rare
+/// case: no rotation (which includes identical rotations, whose relative rotation is exactly
+/// zero), a rotation within [`HALF_TURN_EPSILON`] of a half turn, or non-finite values. In the
+/// regular case the screw needs no decision, and the result is that of [`crate::Screw::between`]
+/// bit for bit.
+#[inline(always)]
+pub(crate) fn regular_span<R: Real>(
+    oa: V3<R>,
+    qa: Q<R>,
+    ob: V3<R>,
+    qb: Q<R>,
+) -> Option<RegularSpan<R>> {
+    let rel = relative(oa, qa, ob, qb);
+    let regular = rel.s.all(|s| s > MIN_ROTATION_SINE)
+        && rel.w.all(|w| w > HALF_TURN_EPSILON)
+        && rel.s.all(|s| s < f64::INFINITY)
+        && rel.w.all(|w| w < f64::INFINITY);
+    if !regular {
+        return None;
+    }
+    let inv_s = R::splat(1.0) / rel.s;
+    let axis = rel.v.scale(inv_s);
+    let slide = axis.dot(rel.translation);
+    Some(RegularSpan {
+        oa,
+        qa,
+        half_angle: trig::atan2_kernel(rel.s, rel.w),
+        s: rel.s,
+        w: rel.w,
+        coefficients: coefficients(oa, qa, axis, slide, rel.w * inv_s, rel.translation),
+    })
+}
+
+/// The pose at `t` of a regular span, or `None` when `t·θ/2` is outside the fast sine range in
+/// any lane (the result is that of [`crate::Screw::at`] bit for bit).
+#[inline(always)]
+pub(crate) fn regular_at<R: Real>(span: &RegularSpan<R>, t: R) -> Option<(V3<R>, Q<R>)> {
+    let x = t * span.half_angle;
+    if !x.all(trig::in_sin_cos_range) {
+        return None;
+    }
+    let (sa, ca) = trig::sin_cos_kernel(x);
+    Some(evaluate(span.oa, span.qa, &span.coefficients, t, sa, ca))
+}
+
+/// The midpoint (`t = ½`) of a regular span, without a transcendental function (as
+/// [`crate::Screw::midpoint`], bit for bit).
+#[inline(always)]
+pub(crate) fn regular_midpoint<R: Real>(span: &RegularSpan<R>) -> (V3<R>, Q<R>) {
+    let (sa, ca) = half_of_half(span.s, span.w);
+    evaluate(span.oa, span.qa, &span.coefficients, R::splat(0.5), sa, ca)
 }
 
 /// What an evaluation needs of a span with a rotation (see the module documentation).

@@ -222,7 +222,11 @@ impl Subdivision {
     }
 
     fn refine_cycle<T: Blend>(&self, mut current: Vec<T>) -> Vec<T> {
-        let mut next = Vec::with_capacity(current.len() << self.levels);
+        // Both buffers at their final size from the start: each level then writes in place
+        // instead of growing (and copying) the one it is swapped with.
+        let size = current.len() << self.levels;
+        current.reserve(size.saturating_sub(current.len()));
+        let mut next = Vec::with_capacity(size);
         let mut scratch = Scratch::default();
         for _ in 0..self.levels {
             self.step_unchecked(&current, &mut next, &mut scratch);
