@@ -137,6 +137,13 @@ impl Screw {
     /// comes from `cos(θ/4) = √((1 + cos(θ/2))/2)`, well conditioned since `θ/2 ≤ π/2`.
     #[inline]
     pub fn midpoint(a: &Pose, b: &Pose) -> Pose {
+        // The regular case straight through the kernel (its half angle, unused, is optimised
+        // away); the rare cases decide below.
+        let (oa, qa) = (a.origin.into(), a.rotation.into());
+        if let Some(span) = kernel::regular_span(oa, qa, b.origin.into(), b.rotation.into()) {
+            let (origin, rotation) = kernel::regular_midpoint(&span);
+            return Pose::new(origin.into(), rotation.into());
+        }
         let s = Screw::between_unmeasured(a, b);
         if s.sin_half == 0.0 {
             return s.at_without_rotation(0.5);
