@@ -87,6 +87,10 @@ impl Blend for Pose {
         span.at(t)
     }
     #[inline]
+    fn blend(a: &Self, t: f64, b: &Self) -> Self {
+        crate::screw(a, t, b)
+    }
+    #[inline]
     fn midpoint(a: &Self, b: &Self) -> Self {
         Screw::midpoint(a, b)
     }
