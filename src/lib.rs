@@ -61,6 +61,12 @@
 //! * Open sequences: paper §4 ("extend with dummy screws … remove 3 or 5 spans"), made precise by
 //!   extrapolating the end screws (spec §7).
 //!
+//! ## Many screws at once
+//!
+//! [`Blend::blends`], [`Blend::midpoints`] and [`Blend::sample_cycle`] evaluate batches; for
+//! poses they run two independent screws at a time on SIMD lanes (natively), with results
+//! identical bit for bit to one-at-a-time calls. Subdivision steps are written as such batches.
+//!
 //! ## Robustness
 //!
 //! Input from users goes through validating constructors ([`Pose::from_wxyz`],
