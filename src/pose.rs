@@ -312,13 +312,10 @@ pub(crate) fn quat_from_matrix(m: &DMat3) -> DQuat {
 }
 
 /// Renormalises a quaternion that is unit up to rounding (keeps composition chains from
-/// drifting away from unit length).
+/// drifting away from unit length), with the screw kernel's Newton step.
 #[inline]
 pub(crate) fn renormalize(q: DQuat) -> DQuat {
-    let n2 = q.length_squared();
-    // One Newton step of 1/sqrt around 1 is exact to O((n2-1)^2): cheaper than a sqrt + divide
-    // and enough because inputs are unit to ~1e-15.
-    q * (1.5 - 0.5 * n2)
+    crate::screw_kernel::renormalize(q.into()).into()
 }
 
 #[cfg(test)]
