@@ -13,6 +13,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { waitFrames, playgroundPage, BACKEND } from './lib.mjs';
+import { prng } from '../js/prng.mjs';
 
 const VIEWPORT = { width: 1280, height: 800 };
 const SECONDS = Number(process.env.SOAK_SECONDS ?? 90);
@@ -42,17 +43,6 @@ after(async () => {
 
 const sb = (f, arg) => page.evaluate(f, arg);
 
-/** mulberry32 (the same generator runs in the page for the App operations). */
-function prng(seed) {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 /**
  * Runs `count` random App operations in the page (seeded by `seed`); returns what ran and the

@@ -10,11 +10,8 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { describe, it } from 'node:test';
 
-const entry = process.env.SCREWBENDER_PKG
-  ? new URL(process.env.SCREWBENDER_PKG, `file://${process.cwd()}/`)
-  : new URL('../../pkg/node.js', import.meta.url);
-const sb = await import(entry.href);
-await sb.default();
+import { entry, sb } from './package.mjs';
+
 const { Motion } = sb;
 
 // ---- helpers ----------------------------------------------------------------------------------

@@ -7,11 +7,8 @@
 import assert from 'node:assert/strict';
 import { describe, it } from 'node:test';
 
-const entry = process.env.SCREWBENDER_PKG
-  ? new URL(process.env.SCREWBENDER_PKG, `file://${process.cwd()}/`)
-  : new URL('../../pkg/node.js', import.meta.url);
-const sb = await import(entry.href);
-await sb.default();
+import { sb } from './package.mjs';
+
 const { Motion } = sb;
 
 const ID = [1, 0, 0, 0];

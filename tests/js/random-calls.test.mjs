@@ -10,27 +10,13 @@
 import assert from 'node:assert/strict';
 import { it } from 'node:test';
 
-const entry = process.env.SCREWBENDER_PKG
-  ? new URL(process.env.SCREWBENDER_PKG, `file://${process.cwd()}/`)
-  : new URL('../../pkg/node.js', import.meta.url);
-const sb = await import(entry.href);
-await sb.default();
+import { sb } from './package.mjs';
+import { prng } from './prng.mjs';
+
 const { Motion } = sb;
 
 const SECONDS = Number(process.env.RANDOM_CALLS_SECONDS ?? 20);
 const SEED = Number(process.env.RANDOM_CALLS_SEED ?? (Date.now() % 2 ** 31));
-
-/** mulberry32: a small seeded PRNG, uniform in [0, 1). */
-function prng(seed) {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 const rand = prng(SEED);
 const pick = (xs) => xs[Math.floor(rand() * xs.length)];
