@@ -37,7 +37,7 @@ pub trait Blend: Copy {
     }
 
     /// Appends `midpoint(x, y)` for `(x, y) = pair(i)`, `i = 0..n`, to `out`. A space may
-    /// compute several at once (poses do, two at a time); the results are those of
+    /// compute several at once (poses do, on SIMD lanes); the results are those of
     /// [`Blend::midpoint`].
     fn midpoints(n: usize, pair: impl Fn(usize) -> (Self, Self), out: &mut Vec<Self>) {
         out.extend((0..n).map(|i| {
@@ -72,8 +72,9 @@ pub trait Blend: Copy {
     }
 }
 
-/// Poses blend by screws. Their batch methods run two screws at a time on SIMD lanes
-/// (`screw_batch`) where that pays: natively, and on wasm32 built with `simd128`. Plain wasm32
+/// Poses blend by screws. Their batch methods run several screws at a time on SIMD lanes
+/// (`screw_batch`: four with AVX2, two with SSE2, NEON or wasm SIMD) where that pays: natively,
+/// and on wasm32 built with `simd128`. Plain wasm32
 /// has no SIMD, the interleaved lanes gained nothing there in measurements, and their code
 /// would add 6 KB to the module, so it keeps the one-at-a-time defaults.
 impl Blend for Pose {

@@ -1,11 +1,13 @@
-//! Arithmetic on one `f64` or on two side by side ([`F2`]), so that the screw kernel is written
-//! once and runs either on one screw or on two independent screws at a time.
+//! Arithmetic on one `f64` or on several side by side (SIMD lanes: [`Lanes`], and four on AVX in
+//! `lanes_avx`), so that the screw kernel is written once and runs either on one screw or on
+//! several independent screws at a time.
 //!
-//! Why two at a time: one screw is a long chain of dependent operations (a square root, two
+//! Why several at a time: one screw is a long chain of dependent operations (a square root, two
 //! divisions, an arctangent and a sine/cosine in a row), so a single evaluation leaves most of
-//! the processor idle. Two independent screws interleaved fill it, and on x86-64 (SSE2) and
-//! wasm32 with SIMD each [`F2`] operation is one instruction for both. Batches of screws (the
-//! subdivision's spans, `screwPairs` in JavaScript) go through [`F2`]; a single call uses `f64`.
+//! the processor idle. Independent screws side by side fill it, and each lane operation is one
+//! SIMD instruction for all of them (SSE2, NEON and wasm SIMD hold two `f64`, AVX four).
+//! Batches of screws (the subdivision's spans, `screwPairs` in JavaScript) go through
+//! [`run_widest`]; a single call uses `f64`.
 //!
 //! The kernel needs no branch on the data: comparisons produce `0.0`/`1.0` steps or bit masks
 //! ([`Real::gt_step`], [`Real::quadrant`]) instead, because the angle of one screw says nothing
@@ -24,8 +26,9 @@ pub(crate) trait Real:
     + Div<Output = Self>
     + Neg<Output = Self>
 {
-    /// The value `v` in every lane.
-    fn splat(v: f64) -> Self;
+    /// The value `v` in every lane, of the same kind as `self` (whose value is not used): lanes
+    /// that carry a processor-feature token (`lanes_avx`) take it from there.
+    fn constant(self, v: f64) -> Self;
     /// Whether `f` holds in every lane.
     fn all(self, f: impl Fn(f64) -> bool) -> bool;
     /// Square root.
@@ -48,7 +51,9 @@ pub(crate) trait Real:
 /// `0.0` or `1.0` from a bit: `1.0` when the top bit of `bits` is set.
 #[inline]
 fn step_from_sign_bit(bits: u64) -> f64 {
-    f64::from_bits((bits >> 63) * 1f64.to_bits())
+    // A mask (all ones or zero) and an `and`, not a multiply: 64-bit lane multiplies do not
+    // exist before AVX-512, so a multiply here would stop the lanes from being vectorised.
+    f64::from_bits((bits >> 63).wrapping_neg() & 1f64.to_bits())
 }
 
 /// [`Real::quadrant`] on one lane, with bit operations only.
@@ -69,7 +74,7 @@ fn quadrant_lane(rounded: f64, s: f64, c: f64) -> (f64, f64) {
 
 impl Real for f64 {
     #[inline]
-    fn splat(v: f64) -> f64 {
+    fn constant(self, v: f64) -> f64 {
         v
     }
     #[inline]
@@ -112,87 +117,167 @@ impl Real for f64 {
     }
 }
 
-/// Two `f64` lanes, computed together (one SSE2 / wasm SIMD instruction per operation where the
-/// target has them; two independent instruction streams otherwise).
+/// `N` `f64` lanes, computed together: one SIMD instruction per operation where the target has
+/// registers that wide (SSE2 and wasm SIMD hold two, AVX2 four), several independent
+/// instruction streams otherwise.
 #[cfg(lanes)]
 #[derive(Clone, Copy, Debug, PartialEq)]
-#[repr(C, align(16))]
-pub(crate) struct F2(pub [f64; 2]);
+#[repr(transparent)]
+pub(crate) struct Lanes<const N: usize>(pub [f64; N]);
 
+/// Lanes of a given width `N`, moved to and from plain `f64`s.
 #[cfg(lanes)]
-impl F2 {
-    /// Applies `f` to each lane.
-    #[inline(always)]
-    fn map(self, f: impl Fn(f64) -> f64) -> F2 {
-        F2([f(self.0[0]), f(self.0[1])])
-    }
-    /// Applies `f` lane by lane to two operands.
-    #[inline(always)]
-    fn zip(self, other: F2, f: impl Fn(f64, f64) -> f64) -> F2 {
-        F2([f(self.0[0], other.0[0]), f(self.0[1], other.0[1])])
-    }
+pub(crate) trait Width<const N: usize>: Real {
+    /// `f(k)` in every lane `k`, of the same kind as `self` (whose value is not used).
+    fn gather(self, f: impl Fn(usize) -> f64) -> Self;
+    /// Lane `k`.
+    fn lane(self, k: usize) -> f64;
 }
 
+// Written out lane by lane for each width (rather than with `array::from_fn`, whose loop and
+// stack traffic keep the compiler from packing the lanes into SIMD registers).
 #[cfg(lanes)]
-macro_rules! f2_binary {
-    ($($trait:ident $method:ident $op:tt),*) => {$(
-        impl $trait for F2 {
-            type Output = F2;
+macro_rules! lanes_of_width {
+    ($n:literal: $($k:literal)*) => {
+        impl Width<$n> for Lanes<$n> {
             #[inline(always)]
-            fn $method(self, o: F2) -> F2 {
-                self.zip(o, |a, b| a $op b)
+            fn gather(self, f: impl Fn(usize) -> f64) -> Self {
+                Lanes([$(f($k)),*])
+            }
+            #[inline(always)]
+            fn lane(self, k: usize) -> f64 {
+                self.0[k]
             }
         }
-    )*};
+
+        impl Lanes<$n> {
+            /// Applies `f` to each lane.
+            #[inline(always)]
+            fn map(self, f: impl Fn(f64) -> f64) -> Self {
+                Lanes([$(f(self.0[$k])),*])
+            }
+            /// Applies `f` lane by lane to two operands.
+            #[inline(always)]
+            fn zip(self, other: Self, f: impl Fn(f64, f64) -> f64) -> Self {
+                Lanes([$(f(self.0[$k], other.0[$k])),*])
+            }
+        }
+
+        impl Add for Lanes<$n> {
+            type Output = Self;
+            #[inline(always)]
+            fn add(self, o: Self) -> Self {
+                self.zip(o, |a, b| a + b)
+            }
+        }
+        impl Sub for Lanes<$n> {
+            type Output = Self;
+            #[inline(always)]
+            fn sub(self, o: Self) -> Self {
+                self.zip(o, |a, b| a - b)
+            }
+        }
+        impl Mul for Lanes<$n> {
+            type Output = Self;
+            #[inline(always)]
+            fn mul(self, o: Self) -> Self {
+                self.zip(o, |a, b| a * b)
+            }
+        }
+        impl Div for Lanes<$n> {
+            type Output = Self;
+            #[inline(always)]
+            fn div(self, o: Self) -> Self {
+                self.zip(o, |a, b| a / b)
+            }
+        }
+        impl Neg for Lanes<$n> {
+            type Output = Self;
+            #[inline(always)]
+            fn neg(self) -> Self {
+                self.map(|a| -a)
+            }
+        }
+
+        impl Real for Lanes<$n> {
+            #[inline(always)]
+            fn constant(self, v: f64) -> Self {
+                Lanes([v; $n])
+            }
+            // Every lane is tested (no early exit): one branch on the combined answer.
+            #[inline(always)]
+            fn all(self, f: impl Fn(f64) -> bool) -> bool {
+                true $(& f(self.0[$k]))*
+            }
+            #[inline(always)]
+            fn sqrt(self) -> Self {
+                self.map(f64::sqrt)
+            }
+            #[inline(always)]
+            fn min(self, other: Self) -> Self {
+                self.zip(other, <f64 as Real>::min)
+            }
+            #[inline(always)]
+            fn max(self, other: Self) -> Self {
+                self.zip(other, <f64 as Real>::max)
+            }
+            #[inline(always)]
+            fn sign_one(self) -> Self {
+                self.map(<f64 as Real>::sign_one)
+            }
+            #[inline(always)]
+            fn gt_step(self, other: Self) -> Self {
+                self.zip(other, <f64 as Real>::gt_step)
+            }
+            #[inline(always)]
+            fn quadrant(rounded: Self, s: Self, c: Self) -> (Self, Self) {
+                let lanes = [$(quadrant_lane(rounded.0[$k], s.0[$k], c.0[$k])),*];
+                (Lanes([$(lanes[$k].0),*]), Lanes([$(lanes[$k].1),*]))
+            }
+        }
+    };
 }
 #[cfg(lanes)]
-f2_binary!(Add add +, Sub sub -, Mul mul *, Div div /);
-
+lanes_of_width!(2: 0 1);
 #[cfg(lanes)]
-impl Neg for F2 {
-    type Output = F2;
-    #[inline(always)]
-    fn neg(self) -> F2 {
-        self.map(|a| -a)
-    }
+lanes_of_width!(4: 0 1 2 3);
+
+/// A computation written for any lanes (see [`run_widest`]).
+#[cfg(lanes)]
+pub(crate) trait LanesOp {
+    /// What the computation returns.
+    type Output;
+    /// Runs the computation on lanes of kind `L` and width `N`; `proto` is any value of that
+    /// kind (for [`Real::constant`] and [`Width::gather`]).
+    fn run<L: Width<N>, const N: usize>(self, proto: L) -> Self::Output;
 }
 
+/// Runs `op` on the widest lanes the processor has: four ([`crate::lanes_avx::Avx4`]) where
+/// x86-64 has AVX2 (checked at run time; `pulp` compiles the code for it and keeps the `unsafe`
+/// of calling it on its side), two ([`Lanes<2>`]: SSE2, NEON, wasm SIMD) everywhere else. Every
+/// kind of lane computes the same IEEE operations in the same order (no fused multiply-add is
+/// formed), so the results do not depend on the processor.
 #[cfg(lanes)]
-impl Real for F2 {
-    #[inline(always)]
-    fn splat(v: f64) -> F2 {
-        F2([v, v])
+#[inline(always)]
+pub(crate) fn run_widest<Op: LanesOp>(op: Op) -> Op::Output {
+    #[cfg(target_arch = "x86_64")]
+    if !forced_two_lanes() {
+        if let Some(avx) = crate::lanes_avx::Avx4::detect() {
+            return avx.vectorize(op);
+        }
     }
-    #[inline(always)]
-    fn all(self, f: impl Fn(f64) -> bool) -> bool {
-        f(self.0[0]) && f(self.0[1])
-    }
-    #[inline(always)]
-    fn sqrt(self) -> F2 {
-        self.map(f64::sqrt)
-    }
-    #[inline(always)]
-    fn min(self, other: F2) -> F2 {
-        self.zip(other, <f64 as Real>::min)
-    }
-    #[inline(always)]
-    fn max(self, other: F2) -> F2 {
-        self.zip(other, <f64 as Real>::max)
-    }
-    #[inline(always)]
-    fn sign_one(self) -> F2 {
-        self.map(<f64 as Real>::sign_one)
-    }
-    #[inline(always)]
-    fn gt_step(self, other: F2) -> F2 {
-        self.zip(other, <f64 as Real>::gt_step)
-    }
-    #[inline(always)]
-    fn quadrant(rounded: F2, s: F2, c: F2) -> (F2, F2) {
-        let (s0, c0) = quadrant_lane(rounded.0[0], s.0[0], c.0[0]);
-        let (s1, c1) = quadrant_lane(rounded.0[1], s.0[1], c.0[1]);
-        (F2([s0, s1]), F2([c0, c1]))
-    }
+    op.run(Lanes([0.0; 2]))
+}
+
+/// Whether the batches must stay on two lanes: only inside tests' `with_two_lanes`, so that the
+/// two-lane route is covered on machines with AVX2 too.
+#[cfg(all(lanes, target_arch = "x86_64"))]
+#[inline(always)]
+fn forced_two_lanes() -> bool {
+    #[cfg(test)]
+    return tests::forced_two_lanes();
+    #[cfg(not(test))]
+    false
 }
 
 /// A 3-vector of [`Real`]s (one vector per lane).
@@ -308,7 +393,7 @@ impl<R: Real> Q<R> {
     #[inline(always)]
     pub fn rotate(self, v: V3<R>) -> V3<R> {
         let u = self.xyz();
-        let t = u.cross(v).scale(R::splat(2.0));
+        let t = u.cross(v).scale(self.w.constant(2.0));
         v + t.scale(self.w) + u.cross(t)
     }
 }
@@ -342,8 +427,27 @@ impl From<Q<f64>> for DQuat {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
+    use std::cell::Cell;
+
+    thread_local! {
+        static TWO_LANES: Cell<bool> = const { Cell::new(false) };
+    }
+
+    /// Runs `f` with the batches on two lanes even where AVX2 is present, so that tests cover
+    /// the two-lane route on every machine.
+    pub(crate) fn with_two_lanes<T>(f: impl FnOnce() -> T) -> T {
+        TWO_LANES.with(|two| two.set(true));
+        let result = f();
+        TWO_LANES.with(|two| two.set(false));
+        result
+    }
+
+    /// Whether [`with_two_lanes`] is in effect on this thread.
+    pub(crate) fn forced_two_lanes() -> bool {
+        TWO_LANES.with(Cell::get)
+    }
 
     #[test]
     fn steps_and_signs() {
@@ -359,9 +463,9 @@ mod tests {
     #[cfg(lanes)]
     #[test]
     fn lane_steps_and_signs() {
-        let two = F2([3.0, 0.5]).gt_step(F2([1.0, 1.0]));
-        assert_eq!(two, F2([1.0, 0.0]));
-        assert_eq!(F2([-2.0, 2.0]).sign_one(), F2([-1.0, 1.0]));
+        let two = Lanes([3.0, 0.5]).gt_step(Lanes([1.0, 1.0]));
+        assert_eq!(two, Lanes([1.0, 0.0]));
+        assert_eq!(Lanes([-2.0, 2.0]).sign_one(), Lanes([-1.0, 1.0]));
     }
 
     #[test]
@@ -380,7 +484,7 @@ mod tests {
     #[cfg(lanes)]
     #[test]
     fn lanes_agree_with_scalars() {
-        let (a, b) = (F2([1.5, -2.0]), F2([0.25, 3.0]));
+        let (a, b) = (Lanes([1.5, -2.0]), Lanes([0.25, 3.0]));
         for (lane, (x, y)) in [(1.5, 0.25), (-2.0, 3.0)].into_iter().enumerate() {
             assert_eq!((a + b).0[lane], x + y);
             assert_eq!((a - b).0[lane], x - y);

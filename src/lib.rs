@@ -64,8 +64,9 @@
 //! ## Many screws at once
 //!
 //! [`Blend::blends`], [`Blend::midpoints`] and [`Blend::sample_cycle`] evaluate batches; for
-//! poses they run two independent screws at a time on SIMD lanes (natively), with results
-//! identical bit for bit to one-at-a-time calls. Subdivision steps are written as such batches.
+//! poses they run independent screws side by side on SIMD lanes natively (four at a time where
+//! x86-64 has AVX2, detected at run time; two elsewhere), with results identical bit for bit
+//! to one-at-a-time calls, whatever the processor. Subdivision steps are written as such batches.
 //!
 //! ## Robustness
 //!
@@ -84,6 +85,8 @@ mod gltf_export;
 mod gltf_import;
 mod interop;
 mod lanes;
+#[cfg(all(lanes, target_arch = "x86_64"))]
+mod lanes_avx;
 pub mod mesh;
 pub mod methods;
 mod morph;

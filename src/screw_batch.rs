@@ -1,92 +1,105 @@
-//! Many screws at once, two at a time on [`F2`] lanes (see `lanes` for why).
+//! Many screws at once, several at a time on SIMD lanes (see `lanes` for why): four on x86-64
+//! with AVX2, two elsewhere ([`run_widest`]).
 //!
 //! Every routine here gives *bit for bit* what the one-at-a-time [`Screw`] calls give: the lanes
-//! run the same kernel (`screw_kernel`) with the same operations in the same order. A pair that
+//! run the same kernel (`screw_kernel`) with the same operations in the same order. A group that
 //! holds a rare case (no rotation, a half turn, an argument outside the fast sine range, a
 //! non-finite value) is handed to the scalar route, which decides those cases.
 
-use crate::lanes::{Real, F2, Q, V3};
+use crate::lanes::{run_widest, LanesOp, Width, Q, V3};
 use crate::pose::Pose;
 use crate::screw::Screw;
 use crate::screw_kernel::{self as kernel, RegularSpan};
 
-/// Two poses, lane `k` holding pose `k`.
+/// `N` poses, lane `k` holding pose `k` (lanes of the kind of `proto`).
 #[inline(always)]
-fn load(a: &Pose, b: &Pose) -> (V3<F2>, Q<F2>) {
-    let (o, p, q, r) = (a.origin, b.origin, a.rotation, b.rotation);
+fn load<L: Width<N>, const N: usize>(proto: L, p: [&Pose; N]) -> (V3<L>, Q<L>) {
     (
-        V3::new(F2([o.x, p.x]), F2([o.y, p.y]), F2([o.z, p.z])),
+        V3::new(
+            proto.gather(|k| p[k].origin.x),
+            proto.gather(|k| p[k].origin.y),
+            proto.gather(|k| p[k].origin.z),
+        ),
         Q::new(
-            F2([q.x, r.x]),
-            F2([q.y, r.y]),
-            F2([q.z, r.z]),
-            F2([q.w, r.w]),
+            proto.gather(|k| p[k].rotation.x),
+            proto.gather(|k| p[k].rotation.y),
+            proto.gather(|k| p[k].rotation.z),
+            proto.gather(|k| p[k].rotation.w),
         ),
     )
 }
 
-/// The two poses held in the lanes.
+/// Appends the `N` poses held in the lanes to `out`.
 #[inline(always)]
-fn store(o: V3<F2>, q: Q<F2>) -> [Pose; 2] {
-    let lane = |k: usize| {
-        Pose::new(
-            glam::DVec3::new(o.x.0[k], o.y.0[k], o.z.0[k]),
-            glam::DQuat::from_xyzw(q.x.0[k], q.y.0[k], q.z.0[k], q.w.0[k]),
-        )
-    };
-    [lane(0), lane(1)]
+fn push<L: Width<N>, const N: usize>(out: &mut Vec<Pose>, (o, q): (V3<L>, Q<L>)) {
+    // One `push` per lane: `extend` went through an iterator `fold` that was not inlined, so
+    // it ran outside the code compiled for the detected features.
+    for k in 0..N {
+        out.push(Pose::new(
+            glam::DVec3::new(o.x.lane(k), o.y.lane(k), o.z.lane(k)),
+            glam::DQuat::from_xyzw(q.x.lane(k), q.y.lane(k), q.z.lane(k), q.w.lane(k)),
+        ));
+    }
+}
+
+/// `N` items from `item(i)`, `i = first..first + N`, written in place (an `array::from_fn`
+/// here moved the poses through the stack several times).
+#[inline(always)]
+fn group<T: Copy, const N: usize>(first: usize, empty: T, item: impl Fn(usize) -> T) -> [T; N] {
+    let mut group = [empty; N];
+    for (k, slot) in group.iter_mut().enumerate() {
+        *slot = item(first + k);
+    }
+    group
 }
 
 /// The spans `a[k] → b[k]` in the regular case (see [`kernel::regular_span`]).
 ///
-/// Inlined natively (the lanes then stay in registers across the calls); out of line on
-/// wasm32 with SIMD, where the callers are instantiated once per closure type and an inlined
-/// copy in each would add kilobytes to the module (whose size is budgeted).
+/// Inlined natively (the lanes then stay in registers across the calls, and the code is
+/// compiled for the features [`run_widest`] detected); out of line on wasm32 with SIMD, where
+/// the callers are instantiated once per closure type and an inlined copy in each would add
+/// kilobytes to the module (whose size is budgeted).
 #[cfg_attr(target_arch = "wasm32", inline(never))]
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn span_pair(a: [&Pose; 2], b: [&Pose; 2]) -> Option<RegularSpan<F2>> {
-    let (oa, qa) = load(a[0], a[1]);
-    let (ob, qb) = load(b[0], b[1]);
+fn span_lanes<L: Width<N>, const N: usize>(
+    proto: L,
+    a: [&Pose; N],
+    b: [&Pose; N],
+) -> Option<RegularSpan<L>> {
+    let (oa, qa) = load(proto, a);
+    let (ob, qb) = load(proto, b);
     kernel::regular_span(oa, qa, ob, qb)
 }
 
-/// The poses at `t` of a regular span pair (see [`kernel::regular_at`]). Inlined or not as
-/// [`span_pair`].
+/// The poses at `t` of regular spans (see [`kernel::regular_at`]). Inlined or not as
+/// [`span_lanes`].
 #[cfg_attr(target_arch = "wasm32", inline(never))]
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn at_pair(span: &RegularSpan<F2>, t: F2) -> Option<[Pose; 2]> {
-    let (o, q) = kernel::regular_at(span, t)?;
-    Some(store(o, q))
+fn at_lanes<L: Width<N>, const N: usize>(span: &RegularSpan<L>, t: L) -> Option<(V3<L>, Q<L>)> {
+    kernel::regular_at(span, t)
 }
 
-/// Appends `screw(a, t, b)` for `(a, t, b) = item(i)`, `i = 0..n`, to `out`.
-pub(crate) fn screws(n: usize, item: impl Fn(usize) -> (Pose, f64, Pose), out: &mut Vec<Pose>) {
-    out.reserve(n);
-    let mut i = 0;
-    while i + 1 < n {
-        let ((a0, t0, b0), (a1, t1, b1)) = (item(i), item(i + 1));
-        let pair = screw_pair([&a0, &a1], F2([t0, t1]), [&b0, &b1])
-            .unwrap_or_else(|| [scalar_screw(&a0, t0, &b0), scalar_screw(&a1, t1, &b1)]);
-        out.extend_from_slice(&pair);
-        i += 2;
-    }
-    if i < n {
-        let (a, t, b) = item(i);
-        out.push(scalar_screw(&a, t, &b));
-    }
+/// `screw(a[k], t[k], b[k])` in every lane, or `None` for a rare case.
+#[cfg_attr(target_arch = "wasm32", inline(never))]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
+fn screw_lanes<L: Width<N>, const N: usize>(
+    proto: L,
+    a: [&Pose; N],
+    t: [f64; N],
+    b: [&Pose; N],
+) -> Option<(V3<L>, Q<L>)> {
+    at_lanes(&span_lanes(proto, a, b)?, proto.gather(|k| t[k]))
 }
 
-/// `screw(a[k], t[k], b[k])` for both lanes, or `None` for a rare case.
-#[inline(never)]
-fn screw_pair(a: [&Pose; 2], t: F2, b: [&Pose; 2]) -> Option<[Pose; 2]> {
-    at_pair(&span_pair(a, b)?, t)
-}
-
-/// `screw(a, ½, b)` for both lanes, or `None` for a rare case.
-#[inline(never)]
-fn midpoint_pair(a: [&Pose; 2], b: [&Pose; 2]) -> Option<[Pose; 2]> {
-    let (o, q) = kernel::regular_midpoint(&span_pair(a, b)?);
-    Some(store(o, q))
+/// `screw(a[k], ½, b[k])` in every lane, or `None` for a rare case.
+#[cfg_attr(target_arch = "wasm32", inline(never))]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
+fn midpoint_lanes<L: Width<N>, const N: usize>(
+    proto: L,
+    a: [&Pose; N],
+    b: [&Pose; N],
+) -> Option<(V3<L>, Q<L>)> {
+    Some(kernel::regular_midpoint(&span_lanes(proto, a, b)?))
 }
 
 /// The scalar routes, out of line: they are rare, and one copy serves every caller.
@@ -100,74 +113,114 @@ fn scalar_midpoint(a: &Pose, b: &Pose) -> Pose {
     Screw::midpoint(a, b)
 }
 
+/// Appends `screw(a, t, b)` for `(a, t, b) = item(i)`, `i = 0..n`, to `out`.
+pub(crate) fn screws(n: usize, item: impl Fn(usize) -> (Pose, f64, Pose), out: &mut Vec<Pose>) {
+    struct Screws<'a, F>(usize, F, &'a mut Vec<Pose>);
+    impl<F: Fn(usize) -> (Pose, f64, Pose)> LanesOp for Screws<'_, F> {
+        type Output = ();
+        #[inline(always)]
+        fn run<L: Width<N>, const N: usize>(self, proto: L) {
+            let Screws(n, item, out) = self;
+            out.reserve(n);
+            let mut i = 0;
+            while i + N <= n {
+                let group: [_; N] = group(i, (Pose::IDENTITY, 0.0, Pose::IDENTITY), &item);
+                let a: [&Pose; N] = std::array::from_fn(|k| &group[k].0);
+                let b = std::array::from_fn(|k| &group[k].2);
+                match screw_lanes(proto, a, std::array::from_fn(|k| group[k].1), b) {
+                    Some(lanes) => push(out, lanes),
+                    None => out.extend(group.iter().map(|(a, t, b)| scalar_screw(a, *t, b))),
+                }
+                i += N;
+            }
+            out.extend((i..n).map(|i| {
+                let (a, t, b) = item(i);
+                scalar_screw(&a, t, &b)
+            }));
+        }
+    }
+    run_widest(Screws(n, item, out));
+}
+
 /// Appends `screw(a, ½, b)` for `(a, b) = pair(i)`, `i = 0..n`, to `out` (as
 /// [`Screw::midpoint`]: no transcendental function).
 pub(crate) fn midpoints(n: usize, pair: impl Fn(usize) -> (Pose, Pose), out: &mut Vec<Pose>) {
-    out.reserve(n);
-    let mut i = 0;
-    while i + 1 < n {
-        let ((a0, b0), (a1, b1)) = (pair(i), pair(i + 1));
-        let pair = midpoint_pair([&a0, &a1], [&b0, &b1])
-            .unwrap_or_else(|| [scalar_midpoint(&a0, &b0), scalar_midpoint(&a1, &b1)]);
-        out.extend_from_slice(&pair);
-        i += 2;
+    struct Midpoints<'a, F>(usize, F, &'a mut Vec<Pose>);
+    impl<F: Fn(usize) -> (Pose, Pose)> LanesOp for Midpoints<'_, F> {
+        type Output = ();
+        #[inline(always)]
+        fn run<L: Width<N>, const N: usize>(self, proto: L) {
+            let Midpoints(n, pair, out) = self;
+            out.reserve(n);
+            let mut i = 0;
+            while i + N <= n {
+                let group: [_; N] = group(i, (Pose::IDENTITY, Pose::IDENTITY), &pair);
+                let a: [&Pose; N] = std::array::from_fn(|k| &group[k].0);
+                let b = std::array::from_fn(|k| &group[k].1);
+                match midpoint_lanes(proto, a, b) {
+                    Some(lanes) => push(out, lanes),
+                    None => out.extend(group.iter().map(|(a, b)| scalar_midpoint(a, b))),
+                }
+                i += N;
+            }
+            out.extend((i..n).map(|i| {
+                let (a, b) = pair(i);
+                scalar_midpoint(&a, &b)
+            }));
+        }
     }
-    if i < n {
-        let (a, b) = pair(i);
-        out.push(scalar_midpoint(&a, &b));
-    }
+    run_widest(Midpoints(n, pair, out));
 }
 
 /// For every span `p[i] → p[(i+1) mod n]` of the cycle `p` and every fraction `ts[j]`, sets
 /// `out[j][i]` to the span's pose at `ts[j]` (`out[j]` is cleared first). Each span's logarithm
 /// is computed once for all the fractions.
 pub(crate) fn sample_cycle(p: &[Pose], ts: &[f64], out: &mut [Vec<Pose>]) {
-    let n = p.len();
-    for column in out.iter_mut() {
-        column.clear();
-        column.reserve(n);
-    }
-    let next = |i: usize| if i + 1 == n { 0 } else { i + 1 };
-    let scalar = |i: usize, out: &mut [Vec<Pose>]| {
-        let span = Screw::between(&p[i], &p[next(i)]);
-        for (column, &t) in out.iter_mut().zip(ts) {
-            column.push(span.at(t));
-        }
-    };
-    let mut i = 0;
-    while i + 1 < n {
-        let lanes = if ts.len() <= MAX_SAMPLES {
-            span_pair([&p[i], &p[i + 1]], [&p[i + 1], &p[next(i + 1)]]).and_then(|span| {
-                let mut poses = [[Pose::IDENTITY; 2]; MAX_SAMPLES];
-                for (slot, &t) in poses.iter_mut().zip(ts) {
-                    *slot = at_pair(&span, F2::splat(t))?;
-                }
-                Some(poses)
-            })
-        } else {
-            None
-        };
-        match lanes {
-            Some(poses) => {
-                for (column, pair) in out.iter_mut().zip(poses) {
-                    column.extend_from_slice(&pair);
-                }
+    struct SampleCycle<'a>(&'a [Pose], &'a [f64], &'a mut [Vec<Pose>]);
+    impl LanesOp for SampleCycle<'_> {
+        type Output = ();
+        #[inline(always)]
+        fn run<L: Width<N>, const N: usize>(self, proto: L) {
+            let SampleCycle(p, ts, out) = self;
+            let n = p.len();
+            for column in out.iter_mut() {
+                column.clear();
+                column.reserve(n);
             }
-            _ => {
-                scalar(i, out);
-                scalar(i + 1, out);
+            let next = |i: usize| if i + 1 == n { 0 } else { i + 1 };
+            let scalar = |i: usize, out: &mut [Vec<Pose>]| {
+                let span = Screw::between(&p[i], &p[next(i)]);
+                for (column, &t) in out.iter_mut().zip(ts) {
+                    column.push(span.at(t));
+                }
+            };
+            let mut i = 0;
+            while i + N <= n {
+                let a: [&Pose; N] = std::array::from_fn(|k| &p[i + k]);
+                let b = std::array::from_fn(|k| &p[next(i + k)]);
+                // Every fraction is checked before any pose is written, so that a rare case
+                // sends the whole group to the scalar route.
+                let span = span_lanes(proto, a, b).filter(|span| {
+                    ts.iter()
+                        .all(|&t| kernel::regular_at_fits(span, span.s.constant(t)))
+                });
+                match span {
+                    Some(span) => {
+                        for (column, &t) in out.iter_mut().zip(ts) {
+                            if let Some(lanes) = at_lanes(&span, span.s.constant(t)) {
+                                push(column, lanes);
+                            }
+                        }
+                    }
+                    None => (i..i + N).for_each(|i| scalar(i, out)),
+                }
+                i += N;
             }
+            (i..n).for_each(|i| scalar(i, out));
         }
-        i += 2;
     }
-    if i < n {
-        scalar(i, out);
-    }
+    run_widest(SampleCycle(p, ts, out));
 }
-
-/// The most fractions [`sample_cycle`] evaluates in lanes per span (a subdivision step needs
-/// at most four); more go through the scalar route.
-const MAX_SAMPLES: usize = 4;
 
 #[cfg(test)]
 mod tests {
@@ -211,6 +264,11 @@ mod tests {
 
     #[test]
     fn lanes_reproduce_the_scalar_route_bit_for_bit() {
+        same_as_scalar();
+        crate::lanes::tests::with_two_lanes(same_as_scalar);
+    }
+
+    fn same_as_scalar() {
         let p = poses();
         let n = p.len();
         let ts = [-1.0 / 16.0, 0.3, 9.0 / 8.0, 2.5e5];

@@ -1,5 +1,5 @@
 //! The screw's arithmetic (spec §2.4), written once over [`Real`] lanes: [`crate::Screw`] runs it
-//! on one `f64`, the batch routines of `screw_batch` on two screws at a time.
+//! on one `f64`, the batch routines of `screw_batch` on several screws at a time.
 //!
 //! Only the regular case lives here ([`regular_span`], [`regular_at`] say `None` otherwise); the
 //! rare cases that need a decision (no rotation, a half turn, arguments outside the fast
@@ -89,7 +89,7 @@ pub(crate) fn regular_span<R: Real>(
     if !regular {
         return None;
     }
-    let inv_s = R::splat(1.0) / rel.s;
+    let inv_s = rel.s.constant(1.0) / rel.s;
     let axis = rel.v.scale(inv_s);
     let slide = axis.dot(rel.translation);
     Some(RegularSpan {
@@ -106,12 +106,18 @@ pub(crate) fn regular_span<R: Real>(
 /// any lane (the result is that of [`crate::Screw::at`] bit for bit).
 #[inline(always)]
 pub(crate) fn regular_at<R: Real>(span: &RegularSpan<R>, t: R) -> Option<(V3<R>, Q<R>)> {
-    let x = t * span.half_angle;
-    if !x.all(trig::in_sin_cos_range) {
+    if !regular_at_fits(span, t) {
         return None;
     }
-    let (sa, ca) = trig::sin_cos_kernel(x);
+    let (sa, ca) = trig::sin_cos_kernel(t * span.half_angle);
     Some(evaluate(span.oa, span.qa, &span.coefficients, t, sa, ca))
+}
+
+/// Whether [`regular_at`] evaluates the span at `t` (`t·θ/2` in the fast sine range in every
+/// lane), so that callers can check all their fractions before producing any result.
+#[inline(always)]
+pub(crate) fn regular_at_fits<R: Real>(span: &RegularSpan<R>, t: R) -> bool {
+    (t * span.half_angle).all(trig::in_sin_cos_range)
 }
 
 /// The midpoint (`t = ½`) of a regular span, without a transcendental function (as
@@ -119,7 +125,14 @@ pub(crate) fn regular_at<R: Real>(span: &RegularSpan<R>, t: R) -> Option<(V3<R>,
 #[inline(always)]
 pub(crate) fn regular_midpoint<R: Real>(span: &RegularSpan<R>) -> (V3<R>, Q<R>) {
     let (sa, ca) = half_of_half(span.s, span.w);
-    evaluate(span.oa, span.qa, &span.coefficients, R::splat(0.5), sa, ca)
+    evaluate(
+        span.oa,
+        span.qa,
+        &span.coefficients,
+        span.s.constant(0.5),
+        sa,
+        ca,
+    )
 }
 
 /// What an evaluation needs of a span with a rotation (see the module documentation).
@@ -151,7 +164,7 @@ pub(crate) fn coefficients<R: Real>(
     translation: V3<R>,
 ) -> Coefficients<R> {
     let perp = translation - axis.scale(slide);
-    let sweep = perp.scale(cot_half) + axis.cross(oa.scale(R::splat(2.0)) - translation);
+    let sweep = perp.scale(cot_half) + axis.cross(oa.scale(cot_half.constant(2.0)) - translation);
     Coefficients {
         axis,
         slide,
@@ -184,7 +197,7 @@ pub(crate) fn evaluate<R: Real>(
 /// transcendental function: `cos(θ/4) = √((1 + w)/2)` is well conditioned since `θ/2 ≤ π/2`.
 #[inline(always)]
 pub(crate) fn half_of_half<R: Real>(s: R, w: R) -> (R, R) {
-    let ca = (R::splat(0.5) * (R::splat(1.0) + w)).sqrt();
+    let ca = (w.constant(0.5) * (w.constant(1.0) + w)).sqrt();
     (s / (ca + ca), ca)
 }
 
@@ -194,5 +207,5 @@ pub(crate) fn half_of_half<R: Real>(s: R, w: R) -> (R, R) {
 #[inline(always)]
 pub(crate) fn renormalize<R: Real>(q: Q<R>) -> Q<R> {
     let n2 = q.length_squared();
-    q.scale(R::splat(1.5) - R::splat(0.5) * n2)
+    q.scale(n2.constant(1.5) - n2.constant(0.5) * n2)
 }

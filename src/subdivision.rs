@@ -227,7 +227,7 @@ impl Subdivision {
         let size = current.len() << self.levels;
         current.reserve(size.saturating_sub(current.len()));
         let mut next = Vec::with_capacity(size);
-        let mut scratch = Scratch::default();
+        let mut scratch = Scratch::with_capacity(size / 2);
         for _ in 0..self.levels {
             self.step_unchecked(&current, &mut next, &mut scratch);
             std::mem::swap(&mut current, &mut next);
@@ -246,10 +246,18 @@ struct Scratch<T> {
 
 impl<T> Default for Scratch<T> {
     fn default() -> Self {
+        Scratch::with_capacity(0)
+    }
+}
+
+impl<T> Scratch<T> {
+    /// Buffers for steps of up to `n` inputs, allocated once: growing them level by level
+    /// would copy each one at every level.
+    fn with_capacity(n: usize) -> Self {
         Scratch {
             samples: Vec::new(),
-            left: Vec::new(),
-            right: Vec::new(),
+            left: Vec::with_capacity(n),
+            right: Vec::with_capacity(n),
         }
     }
 }
@@ -299,7 +307,8 @@ fn direct_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>, scratch: &mu
         left: olds,
         right: news,
     } = scratch;
-    samples.resize_with(ts.len(), Vec::new);
+    let capacity = olds.capacity().max(n);
+    samples.resize_with(ts.len(), || Vec::with_capacity(capacity));
     let samples = &mut samples[..ts.len()];
     T::sample_cycle(p, &ts, samples);
     olds.clear();

@@ -73,12 +73,12 @@ pub(crate) fn in_sin_cos_range(x: f64) -> bool {
 /// the next when `t` leaves `[0, 1]`, and a branch on it would be mispredicted half the time).
 #[inline(always)]
 pub(crate) fn sin_cos_kernel<R: Real>(x: R) -> (R, R) {
-    let rounded = x * R::splat(std::f64::consts::FRAC_2_PI) + R::splat(ROUND_MAGIC);
-    let k = rounded - R::splat(ROUND_MAGIC);
-    let r = (x - k * R::splat(PIO2_HI)) - k * R::splat(PIO2_LO);
+    let rounded = x * x.constant(std::f64::consts::FRAC_2_PI) + x.constant(ROUND_MAGIC);
+    let k = rounded - rounded.constant(ROUND_MAGIC);
+    let r = (x - k * k.constant(PIO2_HI)) - k * k.constant(PIO2_LO);
     let r2 = r * r;
     let s = r + r * r2 * estrin8(r2, &SIN);
-    let c = R::splat(1.0) + r2 * estrin8(r2, &COS);
+    let c = r2.constant(1.0) + r2 * estrin8(r2, &COS);
     R::quadrant(rounded, s, c)
 }
 
@@ -132,27 +132,27 @@ pub(crate) fn in_atan2_range(y: f64, x: f64) -> bool {
 /// the next one's (and compilers turn plain selects that guard a division back into branches).
 #[inline(always)]
 pub(crate) fn atan2_kernel<R: Real>(y: R, x: R) -> R {
-    let one = R::splat(1.0);
+    let one = y.constant(1.0);
     // `+ 0` turns −0 into +0, whose bit pattern `gt_step` needs.
-    let (y, x) = (y + R::splat(0.0), x + R::splat(0.0));
+    let (y, x) = (y + y.constant(0.0), x + x.constant(0.0));
     let (n, d) = (y.min(x), y.max(x));
     // shift = 1: (n√3 − d)/(n + d√3) and π/6; shift = 0: n/d and 0. `√3 − 1` and `1 + (√3 − 1)`
     // are exact, so both cases are computed with exactly the roundings of their own formula.
-    let shift = n.gt_step(d * R::splat(TAN_PI_12));
-    let root = one + shift * R::splat(SQRT_3 - 1.0);
+    let shift = n.gt_step(d * d.constant(TAN_PI_12));
+    let root = one + shift * shift.constant(SQRT_3 - 1.0);
     let z = (n * root - d * shift) / (n * shift + d * root);
     let z2 = z * z;
-    let angle = shift * R::splat(FRAC_PI_6) + (z + z * z2 * estrin15(z2, &ATAN));
+    let angle = shift * shift.constant(FRAC_PI_6) + (z + z * z2 * estrin15(z2, &ATAN));
     // Above the diagonal the angle is π/2 minus that of the mirrored point.
     let steep = y.gt_step(x);
-    steep * R::splat(FRAC_PI_2) + (one - steep - steep) * angle
+    steep * steep.constant(FRAC_PI_2) + (one - steep - steep) * angle
 }
 
 /// `Σ c[i] xⁱ` for 8 coefficients by Estrin's scheme: the same terms as Horner's rule but a
 /// dependency chain of depth 3 instead of 8 (the polynomials sit on the screw's critical path).
 #[inline(always)]
 fn estrin8<R: Real>(x: R, c: &[f64; 8]) -> R {
-    let k = |i: usize| R::splat(c[i]);
+    let k = |i: usize| x.constant(c[i]);
     let x2 = x * x;
     let x4 = x2 * x2;
     let a = (k(0) + k(1) * x) + (k(2) + k(3) * x) * x2;
@@ -163,7 +163,7 @@ fn estrin8<R: Real>(x: R, c: &[f64; 8]) -> R {
 /// `Σ c[i] xⁱ` for 15 coefficients by Estrin's scheme (depth 4 instead of 15).
 #[inline(always)]
 fn estrin15<R: Real>(x: R, c: &[f64; 15]) -> R {
-    let k = |i: usize| R::splat(c[i]);
+    let k = |i: usize| x.constant(c[i]);
     let x2 = x * x;
     let x4 = x2 * x2;
     let x8 = x4 * x4;
