@@ -111,7 +111,11 @@ fn report_interleaved(data: &[(Pose, Pose, Pose)]) {
         }
         let t1 = Instant::now();
         out.clear();
-        Pose::blends(PAIRS, |i| (data[i].0, black_box(0.3), data[i].1), &mut out);
+        Pose::blends(
+            PAIRS,
+            |i| (&data[i].0, black_box(0.3), &data[i].1),
+            &mut out,
+        );
         black_box(&out);
         let t2 = Instant::now();
         for (a, b) in &dqs {
@@ -158,7 +162,11 @@ fn screws(c: &mut Criterion) {
     g.bench_function("batch Pose::blends (full screws)", |bench| {
         bench.iter(|| {
             out.clear();
-            Pose::blends(PAIRS, |i| (data[i].0, black_box(0.3), data[i].1), &mut out);
+            Pose::blends(
+                PAIRS,
+                |i| (&data[i].0, black_box(0.3), &data[i].1),
+                &mut out,
+            );
             black_box(&out);
         })
     });

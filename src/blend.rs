@@ -38,20 +38,27 @@ pub trait Blend: Copy {
 
     /// Appends `midpoint(x, y)` for `(x, y) = pair(i)`, `i = 0..n`, to `out`. A space may
     /// compute several at once (poses do, on SIMD lanes); the results are those of
-    /// [`Blend::midpoint`].
-    fn midpoints(n: usize, pair: impl Fn(usize) -> (Self, Self), out: &mut Vec<Self>) {
+    /// [`Blend::midpoint`]. `pair` hands out references, so that a batch reads its inputs where
+    /// they are instead of copying them.
+    fn midpoints<'a>(n: usize, pair: impl Fn(usize) -> (&'a Self, &'a Self), out: &mut Vec<Self>)
+    where
+        Self: 'a,
+    {
         out.extend((0..n).map(|i| {
             let (x, y) = pair(i);
-            Self::midpoint(&x, &y)
+            Self::midpoint(x, y)
         }));
     }
 
     /// Appends `blend(x, t, y)` for `(x, t, y) = item(i)`, `i = 0..n`, to `out` (several at once
     /// where the space can; the results are those of [`Blend::blend`]).
-    fn blends(n: usize, item: impl Fn(usize) -> (Self, f64, Self), out: &mut Vec<Self>) {
+    fn blends<'a>(n: usize, item: impl Fn(usize) -> (&'a Self, f64, &'a Self), out: &mut Vec<Self>)
+    where
+        Self: 'a,
+    {
         out.extend((0..n).map(|i| {
             let (x, t, y) = item(i);
-            Self::blend(&x, t, &y)
+            Self::blend(x, t, y)
         }));
     }
 
@@ -96,11 +103,15 @@ impl Blend for Pose {
         Screw::midpoint(a, b)
     }
     #[cfg(lanes)]
-    fn midpoints(n: usize, pair: impl Fn(usize) -> (Self, Self), out: &mut Vec<Self>) {
+    fn midpoints<'a>(n: usize, pair: impl Fn(usize) -> (&'a Self, &'a Self), out: &mut Vec<Self>) {
         screw_batch::midpoints(n, pair, out);
     }
     #[cfg(lanes)]
-    fn blends(n: usize, item: impl Fn(usize) -> (Self, f64, Self), out: &mut Vec<Self>) {
+    fn blends<'a>(
+        n: usize,
+        item: impl Fn(usize) -> (&'a Self, f64, &'a Self),
+        out: &mut Vec<Self>,
+    ) {
         screw_batch::screws(n, item, out);
     }
     #[cfg(lanes)]

@@ -42,8 +42,7 @@ fn push<L: Width<N>, const N: usize>(out: &mut Vec<Pose>, (o, q): (V3<L>, Q<L>))
     }
 }
 
-/// `N` items from `item(i)`, `i = first..first + N`, written in place (an `array::from_fn`
-/// here moved the poses through the stack several times).
+/// `N` items from `item(i)`, `i = first..first + N`, written in place.
 #[inline(always)]
 fn group<T: Copy, const N: usize>(first: usize, empty: T, item: impl Fn(usize) -> T) -> [T; N] {
     let mut group = [empty; N];
@@ -114,9 +113,13 @@ fn scalar_midpoint(a: &Pose, b: &Pose) -> Pose {
 }
 
 /// Appends `screw(a, t, b)` for `(a, t, b) = item(i)`, `i = 0..n`, to `out`.
-pub(crate) fn screws(n: usize, item: impl Fn(usize) -> (Pose, f64, Pose), out: &mut Vec<Pose>) {
+pub(crate) fn screws<'p>(
+    n: usize,
+    item: impl Fn(usize) -> (&'p Pose, f64, &'p Pose),
+    out: &mut Vec<Pose>,
+) {
     struct Screws<'a, F>(usize, F, &'a mut Vec<Pose>);
-    impl<F: Fn(usize) -> (Pose, f64, Pose)> LanesOp for Screws<'_, F> {
+    impl<'p, F: Fn(usize) -> (&'p Pose, f64, &'p Pose)> LanesOp for Screws<'_, F> {
         type Output = ();
         #[inline(always)]
         fn run<L: Width<N>, const N: usize>(self, proto: L) {
@@ -124,10 +127,10 @@ pub(crate) fn screws(n: usize, item: impl Fn(usize) -> (Pose, f64, Pose), out: &
             out.reserve(n);
             let mut i = 0;
             while i + N <= n {
-                let group: [_; N] = group(i, (Pose::IDENTITY, 0.0, Pose::IDENTITY), &item);
-                let a: [&Pose; N] = std::array::from_fn(|k| &group[k].0);
-                let b = std::array::from_fn(|k| &group[k].2);
-                match screw_lanes(proto, a, std::array::from_fn(|k| group[k].1), b) {
+                let group: [_; N] = group(i, (&Pose::IDENTITY, 0.0, &Pose::IDENTITY), &item);
+                let a = group.map(|g| g.0);
+                let b = group.map(|g| g.2);
+                match screw_lanes(proto, a, group.map(|g| g.1), b) {
                     Some(lanes) => push(out, lanes),
                     None => out.extend(group.iter().map(|(a, t, b)| scalar_screw(a, *t, b))),
                 }
@@ -135,7 +138,7 @@ pub(crate) fn screws(n: usize, item: impl Fn(usize) -> (Pose, f64, Pose), out: &
             }
             out.extend((i..n).map(|i| {
                 let (a, t, b) = item(i);
-                scalar_screw(&a, t, &b)
+                scalar_screw(a, t, b)
             }));
         }
     }
@@ -144,9 +147,13 @@ pub(crate) fn screws(n: usize, item: impl Fn(usize) -> (Pose, f64, Pose), out: &
 
 /// Appends `screw(a, ½, b)` for `(a, b) = pair(i)`, `i = 0..n`, to `out` (as
 /// [`Screw::midpoint`]: no transcendental function).
-pub(crate) fn midpoints(n: usize, pair: impl Fn(usize) -> (Pose, Pose), out: &mut Vec<Pose>) {
+pub(crate) fn midpoints<'p>(
+    n: usize,
+    pair: impl Fn(usize) -> (&'p Pose, &'p Pose),
+    out: &mut Vec<Pose>,
+) {
     struct Midpoints<'a, F>(usize, F, &'a mut Vec<Pose>);
-    impl<F: Fn(usize) -> (Pose, Pose)> LanesOp for Midpoints<'_, F> {
+    impl<'p, F: Fn(usize) -> (&'p Pose, &'p Pose)> LanesOp for Midpoints<'_, F> {
         type Output = ();
         #[inline(always)]
         fn run<L: Width<N>, const N: usize>(self, proto: L) {
@@ -154,9 +161,9 @@ pub(crate) fn midpoints(n: usize, pair: impl Fn(usize) -> (Pose, Pose), out: &mu
             out.reserve(n);
             let mut i = 0;
             while i + N <= n {
-                let group: [_; N] = group(i, (Pose::IDENTITY, Pose::IDENTITY), &pair);
-                let a: [&Pose; N] = std::array::from_fn(|k| &group[k].0);
-                let b = std::array::from_fn(|k| &group[k].1);
+                let group: [_; N] = group(i, (&Pose::IDENTITY, &Pose::IDENTITY), &pair);
+                let a = group.map(|g| g.0);
+                let b = group.map(|g| g.1);
                 match midpoint_lanes(proto, a, b) {
                     Some(lanes) => push(out, lanes),
                     None => out.extend(group.iter().map(|(a, b)| scalar_midpoint(a, b))),
@@ -165,7 +172,7 @@ pub(crate) fn midpoints(n: usize, pair: impl Fn(usize) -> (Pose, Pose), out: &mu
             }
             out.extend((i..n).map(|i| {
                 let (a, b) = pair(i);
-                scalar_midpoint(&a, &b)
+                scalar_midpoint(a, b)
             }));
         }
     }
@@ -274,14 +281,14 @@ mod tests {
         let ts = [-1.0 / 16.0, 0.3, 9.0 / 8.0, 2.5e5];
         for &t in &ts {
             let mut got = Vec::new();
-            screws(n, |i| (p[i], t, p[(i * 7 + 3) % n]), &mut got);
+            screws(n, |i| (&p[i], t, &p[(i * 7 + 3) % n]), &mut got);
             for (i, g) in got.iter().enumerate() {
                 let want = crate::screw(&p[i], t, &p[(i * 7 + 3) % n]);
                 assert!(same_bits(g, &want), "screw {i} at {t}: {g:?} vs {want:?}");
             }
         }
         let mut mids = Vec::new();
-        midpoints(n, |i| (p[i], p[(i + 1) % n]), &mut mids);
+        midpoints(n, |i| (&p[i], &p[(i + 1) % n]), &mut mids);
         for (i, m) in mids.iter().enumerate() {
             assert!(
                 same_bits(m, &Screw::midpoint(&p[i], &p[(i + 1) % n])),

@@ -257,7 +257,8 @@ impl<T> Scratch<T> {
         Scratch {
             samples: Vec::new(),
             left: Vec::with_capacity(n),
-            right: Vec::with_capacity(n),
+            // The split rules' midpoints: one per output pose for Jarek.
+            right: Vec::with_capacity(2 * n),
         }
     }
 }
@@ -311,24 +312,38 @@ fn direct_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>, scratch: &mu
     samples.resize_with(ts.len(), || Vec::with_capacity(capacity));
     let samples = &mut samples[..ts.len()];
     T::sample_cycle(p, &ts, samples);
-    olds.clear();
-    news.clear();
-    if s != 0.0 {
-        let (left, right) = (&samples[0], &samples[1]);
-        T::midpoints(n, |i| (left[prev(i)], right[i]), olds);
-    }
-    let olds: &[T] = if s != 0.0 { olds } else { p };
-    let news: &[T] = if bspline {
-        &samples[2]
-    } else {
+    let samples = &*samples;
+    let old_pair = |i: usize| (&samples[0][prev(i)], &samples[1][i]);
+    let new_pair = |i: usize| {
         let (left, right) = (&samples[ts.len() - 2], &samples[ts.len() - 1]);
-        T::midpoints(n, |i| (left[prev(i)], right[next(i)]), news);
-        news
+        (&left[prev(i)], &right[next(i)])
     };
     out.reserve(2 * n);
-    for (old, new) in olds.iter().zip(news) {
-        out.push(*old);
-        out.push(*new);
+    if bspline {
+        olds.clear();
+        T::midpoints(n, old_pair, olds);
+        interleave(olds, &samples[2], out);
+    } else if s == 0.0 {
+        news.clear();
+        T::midpoints(n, new_pair, news);
+        interleave(p, news, out);
+    } else {
+        // Old and new poses are both midpoints: one batch, written in output order. (One
+        // copy path for both parities keeps the closure small enough to be inlined.)
+        let pair = |j: usize| {
+            let (i, new) = (j / 2, j % 2);
+            let (left, right) = (&samples[2 * new], &samples[2 * new + 1]);
+            (&left[prev(i)], &right[if new == 1 { next(i) } else { i }])
+        };
+        T::midpoints(2 * n, pair, out);
+    }
+}
+
+/// Appends `evens[0], odds[0], evens[1], odds[1], …` to `out`.
+fn interleave<T: Copy>(evens: &[T], odds: &[T], out: &mut Vec<T>) {
+    for (even, odd) in evens.iter().zip(odds) {
+        out.push(*even);
+        out.push(*odd);
     }
 }
 
@@ -338,17 +353,25 @@ fn direct_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>, scratch: &mu
 fn split_tweak_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>, scratch: &mut Scratch<T>) {
     let n = p.len();
     let m = 2 * n;
+    let next = |i: usize| if i + 1 == n { 0 } else { i + 1 };
     let Scratch {
+        samples,
         left: split,
-        right: z,
-        ..
+        right: mids,
     } = scratch;
     split.clear();
-    T::midpoints(n, |i| (p[i], p[(i + 1) % n]), split);
-    z.clear();
-    z.extend(p.iter().zip(split.iter()).flat_map(|(a, b)| [*a, *b]));
-    let z: &[T] = z;
-    let zz = |j: usize| z[j % m];
+    T::midpoints(n, |i| (&p[i], &p[next(i)]), split);
+    let capacity = split.capacity();
+    let split: &[T] = split;
+    // The split sequence Z (old poses at even indices, split midpoints at odd ones), cyclic.
+    let z = |j: usize| {
+        let j = j % m;
+        if j % 2 == 0 {
+            &p[j / 2]
+        } else {
+            &split[j / 2]
+        }
+    };
     // (old-pose weight, new-pose weight): how far each tweak goes. The J_s family has no
     // split-tweak form (options are validated before a step runs); its named members map here.
     let s = scheme.j_parameter();
@@ -359,38 +382,49 @@ fn split_tweak_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>, scratch
     } else {
         (Some(0.25), Some(9.0 / 8.0))
     };
-    let weight = |j: usize| if j % 2 == 0 { old_w } else { new_w };
-    let tweaked: Vec<usize> = (0..m).filter(|&j| weight(j).is_some()).collect();
+    // The k-th tweaked index is `k·stride + offset`: every index, or the even (old) ones, or
+    // the odd (new) ones.
+    let (count, stride, offset) = match (old_w, new_w) {
+        (Some(_), Some(_)) => (m, 1, 0),
+        (Some(_), None) => (n, 2, 0),
+        _ => (n, 2, 1),
+    };
+    let tweaked = |k: usize| k * stride + offset;
     // Q_j = s(Z_j, w, s(Z_{j−1}, ½, Z_{j+1})) for old poses (even j),
     // Q_j = s(s(Z_{j−2}, ½, Z_{j+2}), w, Z_j) for new poses (odd j).
-    let mut mids = Vec::with_capacity(tweaked.len());
+    mids.clear();
     T::midpoints(
-        tweaked.len(),
+        count,
         |k| {
-            let j = tweaked[k];
+            let j = tweaked(k);
             let r = if j % 2 == 0 { 1 } else { 2 };
-            (zz(j + m - r), zz(j + r))
+            (z(j + m - r), z(j + r))
         },
-        &mut mids,
+        mids,
     );
-    let mut moved = Vec::with_capacity(tweaked.len());
-    T::blends(
-        tweaked.len(),
-        |k| {
-            let j = tweaked[k];
-            let w = weight(j).unwrap_or(0.0);
-            if j % 2 == 0 {
-                (z[j], w, mids[k])
-            } else {
-                (mids[k], w, z[j])
-            }
-        },
-        &mut moved,
-    );
-    out.clear();
-    out.extend_from_slice(z);
-    for (&j, q) in tweaked.iter().zip(moved) {
-        out[j] = q;
+    let mids: &[T] = mids;
+    let tweak = |k: usize| {
+        let j = tweaked(k);
+        if j % 2 == 0 {
+            (z(j), old_w.unwrap_or(0.0), &mids[k])
+        } else {
+            (&mids[k], new_w.unwrap_or(0.0), z(j))
+        }
+    };
+    out.reserve(m);
+    if count == m {
+        // Every pose is tweaked: the tweaks are the output, in order.
+        T::blends(count, tweak, out);
+        return;
+    }
+    samples.resize_with(1, || Vec::with_capacity(capacity));
+    let moved = &mut samples[0];
+    moved.clear();
+    T::blends(count, tweak, moved);
+    if offset == 0 {
+        interleave(moved, split, out);
+    } else {
+        interleave(p, moved, out);
     }
 }
 

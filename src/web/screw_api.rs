@@ -68,7 +68,7 @@ pub fn screw_pairs(
     }
     // The batch route: two screws at a time on SIMD lanes, bit for bit the same as `screw`.
     let mut poses = Vec::with_capacity(ts.len());
-    Pose::blends(ts.len(), |k| (starts[k], ts[k], ends[k]), &mut poses);
+    Pose::blends(ts.len(), |k| (&starts[k], ts[k], &ends[k]), &mut poses);
     Ok(poses_to_array(&poses))
 }
 
