@@ -364,8 +364,9 @@ fn split_tweak_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>, scratch
     let capacity = split.capacity();
     let split: &[T] = split;
     // The split sequence Z (old poses at even indices, split midpoints at odd ones), cyclic.
+    // (Indices come in below 2m: a subtraction, not a `%`, which is a slow division.)
     let z = |j: usize| {
-        let j = j % m;
+        let j = if j >= m { j - m } else { j };
         if j % 2 == 0 {
             &p[j / 2]
         } else {
