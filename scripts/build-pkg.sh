@@ -45,7 +45,7 @@ else
   # The features rustc enables by default for wasm32 (wasm-opt must accept what the module uses).
   timed "wasm-opt" "$WASM_OPT" -Os \
     --enable-bulk-memory --enable-reference-types --enable-nontrapping-float-to-int \
-    --enable-sign-ext --enable-mutable-globals --enable-multivalue \
+    --enable-sign-ext --enable-mutable-globals --enable-multivalue --enable-simd \
     "$PKG_DIR/screwbender_bg.wasm" -o "$PKG_DIR/screwbender_bg.opt.wasm"
   mv "$PKG_DIR/screwbender_bg.opt.wasm" "$PKG_DIR/screwbender_bg.wasm"
 fi

@@ -117,10 +117,10 @@ impl Real for f64 {
     }
 }
 
-/// `N` `f64` lanes, computed together: one SIMD instruction per operation where the target has
-/// registers that wide (SSE2 and wasm SIMD hold two, AVX2 four), several independent
-/// instruction streams otherwise.
-#[cfg(lanes)]
+/// `N` `f64` lanes, computed together: one SIMD instruction per operation where the compiler
+/// packs them into registers (two lanes on SSE2 and NEON), independent instruction streams
+/// otherwise.
+#[cfg(portable_lanes)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[repr(transparent)]
 pub(crate) struct Lanes<const N: usize>(pub [f64; N]);
@@ -136,7 +136,7 @@ pub(crate) trait Width<const N: usize>: Real {
 
 // Written out lane by lane for each width (rather than with `array::from_fn`, whose loop and
 // stack traffic keep the compiler from packing the lanes into SIMD registers).
-#[cfg(lanes)]
+#[cfg(portable_lanes)]
 macro_rules! lanes_of_width {
     ($n:literal: $($k:literal)*) => {
         impl Width<$n> for Lanes<$n> {
@@ -237,10 +237,8 @@ macro_rules! lanes_of_width {
         }
     };
 }
-#[cfg(lanes)]
+#[cfg(portable_lanes)]
 lanes_of_width!(2: 0 1);
-#[cfg(lanes)]
-lanes_of_width!(4: 0 1 2 3);
 
 /// A computation written for any lanes (see [`run_widest`]).
 #[cfg(lanes)]
@@ -254,19 +252,27 @@ pub(crate) trait LanesOp {
 
 /// Runs `op` on the widest lanes the processor has: four ([`crate::lanes_avx::Avx4`]) where
 /// x86-64 has AVX2 (checked at run time; `pulp` compiles the code for it and keeps the `unsafe`
-/// of calling it on its side), two ([`Lanes<2>`]: SSE2, NEON, wasm SIMD) everywhere else. Every
+/// of calling it on its side), two in a wasm SIMD register ([`crate::lanes_wasm::Wasm2`]) on
+/// wasm32 built with `simd128`, two ([`Lanes<2>`]: SSE2, NEON) everywhere else. Every
 /// kind of lane computes the same IEEE operations in the same order (no fused multiply-add is
 /// formed), so the results do not depend on the processor.
 #[cfg(lanes)]
 #[inline(always)]
 pub(crate) fn run_widest<Op: LanesOp>(op: Op) -> Op::Output {
-    #[cfg(target_arch = "x86_64")]
-    if !forced_two_lanes() {
-        if let Some(avx) = crate::lanes_avx::Avx4::detect() {
-            return avx.vectorize(op);
-        }
+    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+    {
+        op.run(crate::lanes_wasm::Wasm2::zero())
     }
-    op.run(Lanes([0.0; 2]))
+    #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
+    {
+        #[cfg(target_arch = "x86_64")]
+        if !forced_two_lanes() {
+            if let Some(avx) = crate::lanes_avx::Avx4::detect() {
+                return avx.vectorize(op);
+            }
+        }
+        op.run(Lanes([0.0; 2]))
+    }
 }
 
 /// Whether the batches must stay on two lanes: only inside tests' `with_two_lanes`, so that the
@@ -445,6 +451,7 @@ pub(crate) mod tests {
     }
 
     /// Whether [`with_two_lanes`] is in effect on this thread.
+    #[cfg(target_arch = "x86_64")]
     pub(crate) fn forced_two_lanes() -> bool {
         TWO_LANES.with(Cell::get)
     }
@@ -460,7 +467,7 @@ pub(crate) mod tests {
         assert_eq!(0.0f64.sign_one(), 1.0);
     }
 
-    #[cfg(lanes)]
+    #[cfg(portable_lanes)]
     #[test]
     fn lane_steps_and_signs() {
         let two = Lanes([3.0, 0.5]).gt_step(Lanes([1.0, 1.0]));
@@ -481,7 +488,7 @@ pub(crate) mod tests {
         }
     }
 
-    #[cfg(lanes)]
+    #[cfg(portable_lanes)]
     #[test]
     fn lanes_agree_with_scalars() {
         let (a, b) = (Lanes([1.5, -2.0]), Lanes([0.25, 3.0]));

@@ -88,16 +88,25 @@ impl Pose {
     /// of 1; it is then normalised. The origin must be finite with coordinates within
     /// [`MAX_COORDINATE`]. Errors name `origin` or `rotation`.
     pub fn from_wxyz(origin: [f64; 3], rotation: [f64; 4]) -> Result<Pose, Error> {
-        // The common case first, without building a `Result` of an error that owns strings:
-        // batches of poses from JavaScript spend most of their validation time otherwise.
-        if origin.iter().all(|v| v.abs() <= MAX_COORDINATE) {
-            if let Some(q) = normalized_quat(rotation) {
-                return Ok(Pose::new(DVec3::from_array(origin), q));
-            }
+        if let Some(pose) = Pose::from_valid_wxyz(origin, rotation) {
+            return Ok(pose);
         }
         check_origin(&origin)?;
         let q = quat_from_wxyz(rotation).map_err(|e| e.within("rotation"))?;
         Ok(Pose::new(DVec3::from_array(origin), q))
+    }
+
+    /// [`Pose::from_wxyz`] for valid input, `None` otherwise: the common case without building
+    /// a `Result` whose error owns strings, for batches of poses from JavaScript (which spent
+    /// most of their validation time on it otherwise).
+    #[inline]
+    pub(crate) fn from_valid_wxyz(origin: [f64; 3], rotation: [f64; 4]) -> Option<Pose> {
+        // `!(|v| > max)` would let NaN through; `|v| <= max` is false for NaN.
+        let origin_ok = origin
+            .iter()
+            .fold(true, |ok, v| ok & (v.abs() <= MAX_COORDINATE));
+        let q = normalized_quat(rotation).filter(|_| origin_ok)?;
+        Some(Pose::new(DVec3::from_array(origin), q))
     }
 
     /// A pose from an origin and the basis vectors `I, J, K` (images of the local axes).

@@ -78,27 +78,37 @@ fn at_lanes<L: Width<N>, const N: usize>(span: &RegularSpan<L>, t: L) -> Option<
     kernel::regular_at(span, t)
 }
 
-/// `screw(a[k], t[k], b[k])` in every lane, or `None` for a rare case.
+/// Appends `screw(a[k], t[k], b[k])` for every lane to `out`, through the scalar route when the
+/// group holds a rare case. (Out of line on wasm32, where each batch's closure type would
+/// otherwise get its own copy; inlined natively as [`span_lanes`].)
 #[cfg_attr(target_arch = "wasm32", inline(never))]
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn screw_lanes<L: Width<N>, const N: usize>(
+fn screw_group<L: Width<N>, const N: usize>(
     proto: L,
     a: [&Pose; N],
     t: [f64; N],
     b: [&Pose; N],
-) -> Option<(V3<L>, Q<L>)> {
-    at_lanes(&span_lanes(proto, a, b)?, proto.gather(|k| t[k]))
+    out: &mut Vec<Pose>,
+) {
+    match span_lanes(proto, a, b).and_then(|span| at_lanes(&span, proto.gather(|k| t[k]))) {
+        Some(lanes) => push(out, lanes),
+        None => (0..N).for_each(|k| out.push(scalar_screw(a[k], t[k], b[k]))),
+    }
 }
 
-/// `screw(a[k], ½, b[k])` in every lane, or `None` for a rare case.
+/// Appends `screw(a[k], ½, b[k])` for every lane to `out` (see [`screw_group`]).
 #[cfg_attr(target_arch = "wasm32", inline(never))]
 #[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn midpoint_lanes<L: Width<N>, const N: usize>(
+fn midpoint_group<L: Width<N>, const N: usize>(
     proto: L,
     a: [&Pose; N],
     b: [&Pose; N],
-) -> Option<(V3<L>, Q<L>)> {
-    Some(kernel::regular_midpoint(&span_lanes(proto, a, b)?))
+    out: &mut Vec<Pose>,
+) {
+    match span_lanes(proto, a, b) {
+        Some(span) => push(out, kernel::regular_midpoint(&span)),
+        None => (0..N).for_each(|k| out.push(scalar_midpoint(a[k], b[k]))),
+    }
 }
 
 /// The scalar routes, out of line: they are rare, and one copy serves every caller.
@@ -128,12 +138,8 @@ pub(crate) fn screws<'p>(
             let mut i = 0;
             while i + N <= n {
                 let group: [_; N] = group(i, (&Pose::IDENTITY, 0.0, &Pose::IDENTITY), &item);
-                let a = group.map(|g| g.0);
-                let b = group.map(|g| g.2);
-                match screw_lanes(proto, a, group.map(|g| g.1), b) {
-                    Some(lanes) => push(out, lanes),
-                    None => out.extend(group.iter().map(|(a, t, b)| scalar_screw(a, *t, b))),
-                }
+                let (a, t, b) = (group.map(|g| g.0), group.map(|g| g.1), group.map(|g| g.2));
+                screw_group(proto, a, t, b, out);
                 i += N;
             }
             out.extend((i..n).map(|i| {
@@ -162,12 +168,7 @@ pub(crate) fn midpoints<'p>(
             let mut i = 0;
             while i + N <= n {
                 let group: [_; N] = group(i, (&Pose::IDENTITY, &Pose::IDENTITY), &pair);
-                let a = group.map(|g| g.0);
-                let b = group.map(|g| g.1);
-                match midpoint_lanes(proto, a, b) {
-                    Some(lanes) => push(out, lanes),
-                    None => out.extend(group.iter().map(|(a, b)| scalar_midpoint(a, b))),
-                }
+                midpoint_group(proto, group.map(|g| g.0), group.map(|g| g.1), out);
                 i += N;
             }
             out.extend((i..n).map(|i| {
@@ -229,10 +230,13 @@ pub(crate) fn sample_cycle(p: &[Pose], ts: &[f64], out: &mut [Vec<Pose>]) {
     run_widest(SampleCycle(p, ts, out));
 }
 
+/// Run natively and, on wasm32, by wasm-bindgen-test (in Node): each platform's lanes.
 #[cfg(test)]
 mod tests {
     use super::*;
     use glam::{DQuat, DVec3};
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
 
     /// Poses including every rare case next to regular ones: identical, opposite-sign and
     /// nearly identical rotations, half turns, pure translations.

@@ -14,7 +14,7 @@ use std::f64::consts::PI;
 
 use common::{max_pose_error, Rng};
 use glam::DQuat;
-use screwbender::{MotionDocument, Pose, Rules, Scheme, Subdivision, MAX_REFINED_POSES};
+use screwbender::{MotionDocument, Pose, Rules, Scheme, Subdivision};
 
 fn all_rules() -> Vec<Subdivision> {
     let mut v = Vec::new();
@@ -180,7 +180,7 @@ fn deep_levels_up_to_the_cap() {
     );
     let sub = Subdivision::new(Scheme::Jarek, Rules::Direct, 18);
     let q = sub.apply(&poses, true).unwrap();
-    assert_eq!(q.len(), MAX_REFINED_POSES);
+    assert_eq!(q.len(), screwbender::MAX_REFINED_POSES);
     assert!(healthy(&q));
     let deeper = Subdivision::new(Scheme::Jarek, Rules::Direct, 19);
     assert_eq!(deeper.apply(&poses, true).unwrap_err().path(), "levels");

@@ -177,19 +177,25 @@ pub(crate) fn f64_array(value: &JsValue, at: &str, max: usize) -> Result<Vec<f64
         expected: format!("at most {max} numbers per call"),
     };
     // The fast path: `ArrayBuffer.isView` reads an internal slot (never user code, false for
-    // proxies), so `instanceof` on a view is safe too; the copy is a fresh array without own
-    // properties. This avoids `structuredClone`, which is slow on large arrays.
+    // proxies), so `instanceof` on a view is safe too. The length and the elements are then
+    // read through internal slots as well (the intrinsic `length` getter, `set` into wasm
+    // memory): a caller's own `length` getter on the array is never run, and nothing is copied
+    // twice (a defensive `new Float64Array(value)` cost more than the screws it carried).
     if ArrayBuffer::is_view(value) && value.is_instance_of::<Float64Array>() {
-        let copy: Float64Array = CopiedF64Array::new(value)
-            .map_err(|e| Error::Parse {
-                at: at.to_string(),
-                message: format!("cannot read the argument: {}", js_message(&e)),
-            })?
-            .unchecked_into();
-        if copy.length() as usize > max {
-            return Err(too_long(copy.length()));
+        let unreadable = |e: JsValue| Error::Parse {
+            at: at.to_string(),
+            message: format!("cannot read the argument: {}", js_message(&e)),
+        };
+        let len = typed_array_length(value).map_err(unreadable)?;
+        if len > max {
+            return Err(too_long(len as u32));
         }
-        return Ok(copy.to_vec());
+        let mut out = vec![0.0; len];
+        // A detached buffer reads as length 0 and is not touched (`set` would throw on it).
+        if len > 0 {
+            set_from_typed_array(&mut out, value).map_err(unreadable)?;
+        }
+        return Ok(out);
     }
     let value = plain(value, at)?;
     if let Some(a) = value.dyn_ref::<Array>() {
@@ -222,14 +228,37 @@ extern "C" {
     #[wasm_bindgen(catch, js_name = structuredClone)]
     fn structured_clone(value: &JsValue) -> Result<JsValue, JsValue>;
 
-    /// The global `Float64Array` class, for a constructor call whose exceptions are caught.
-    #[wasm_bindgen(js_name = Float64Array)]
-    type CopiedF64Array;
+    /// `Float64Array.prototype.set` called on `target` (a view of wasm memory): copies a typed
+    /// array's elements through internal slots, with a thrown exception returned as `Err`.
+    #[wasm_bindgen(catch, js_namespace = ["Float64Array", "prototype", "set"], js_name = call)]
+    fn set_from_typed_array(target: &mut [f64], source: &JsValue) -> Result<(), JsValue>;
+}
 
-    /// `new Float64Array(source)`, with a thrown exception returned as `Err`. For a typed-array
-    /// source it copies through internal slots (no user code, one memcpy).
-    #[wasm_bindgen(catch, constructor, js_class = "Float64Array")]
-    fn new(source: &JsValue) -> Result<CopiedF64Array, JsValue>;
+thread_local! {
+    /// The intrinsic `length` getter of typed arrays (on `%TypedArray%.prototype`), looked up
+    /// once.
+    static TYPED_ARRAY_LENGTH: Option<js_sys::Function> = {
+        let prototype = Object::get_prototype_of(&Float64Array::new_with_length(0));
+        let typed_array_prototype = Object::get_prototype_of(&prototype);
+        let descriptor =
+            Object::get_own_property_descriptor(&typed_array_prototype, &"length".into());
+        Reflect::get(&descriptor, &"get".into())
+            .ok()
+            .and_then(|getter| getter.dyn_into().ok())
+    };
+}
+
+/// The length of a typed array `view`, read from its internal slot by the intrinsic getter (not
+/// `view.length`, which may be an own property with a getter that runs user code).
+fn typed_array_length(view: &JsValue) -> Result<usize, JsValue> {
+    let length = TYPED_ARRAY_LENGTH.with(|getter| match getter {
+        Some(getter) => getter.call0(view),
+        None => Err(JsValue::from_str("typed arrays have no length getter")),
+    })?;
+    length
+        .as_f64()
+        .map(|n| n as usize)
+        .ok_or_else(|| JsValue::from_str("the length is not a number"))
 }
 
 /// A plain-data copy of an object argument (primitives are returned as they are).
@@ -541,8 +570,14 @@ pub(crate) fn poses_from_array(data: &[f64], at: &str) -> Result<Vec<Pose>, Erro
     }
     let mut poses = Vec::with_capacity(data.len() / POSE_STRIDE);
     for (i, c) in data.chunks_exact(POSE_STRIDE).enumerate() {
-        let pose = Pose::from_wxyz([c[0], c[1], c[2]], [c[3], c[4], c[5], c[6]])
-            .map_err(|e| e.within(&format!("{at}[{i}]")))?;
+        let (origin, rotation) = ([c[0], c[1], c[2]], [c[3], c[4], c[5], c[6]]);
+        // The valid case inline; `from_wxyz` only to describe what is wrong.
+        let pose = match Pose::from_valid_wxyz(origin, rotation) {
+            Some(pose) => pose,
+            None => {
+                Pose::from_wxyz(origin, rotation).map_err(|e| e.within(&format!("{at}[{i}]")))?
+            }
+        };
         poses.push(pose);
     }
     Ok(poses)
