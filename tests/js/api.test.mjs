@@ -702,6 +702,10 @@ describe('bad input: clear Error, state unchanged', () => {
     const us = new Float64Array([0.25, 0.5]);
     Object.defineProperty(us, 'length', { get() { throw new Error('length getter'); } });
     assert.equal(m.posesAt(us).length, 14);
+    // A detached buffer reads as empty (its length is 0): no exception from copying it.
+    const detached = new Float64Array([0.25, 0.5]);
+    structuredClone(detached.buffer, { transfer: [detached.buffer] });
+    assert.equal(m.posesAt(detached).length, 0);
     // wasm-bindgen's own borrow bookkeeping is intact: free() works.
     m.free();
   });
