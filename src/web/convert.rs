@@ -171,6 +171,36 @@ pub(crate) fn is_absent(value: &JsValue) -> bool {
 /// A list of at most `max` numbers from a `Float64Array` or a plain array (non-numbers become
 /// NaN and are caught by the caller's finiteness checks). The length is checked before copying.
 pub(crate) fn f64_array(value: &JsValue, at: &str, max: usize) -> Result<Vec<f64>, Error> {
+    let mut out = Vec::new();
+    read_f64_array(value, at, max, &mut out)?;
+    Ok(out)
+}
+
+thread_local! {
+    /// The numbers of pose batches, kept from call to call: refilling it costs only the copy,
+    /// where a fresh buffer was also zeroed (a fifth of a `screwPairs` call's time in wasm).
+    static POSE_NUMBERS: std::cell::RefCell<Vec<f64>> = const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// Poses (7 numbers each, validated: see [`poses_from_array`]) from a `Float64Array` or an
+/// array of numbers, at most [`crate::MAX_REFINED_POSES`] of them.
+pub(crate) fn poses_from_js_array(value: &JsValue, at: &str) -> Result<Vec<Pose>, Error> {
+    let max = crate::MAX_REFINED_POSES * POSE_STRIDE;
+    let read = |numbers: &mut Vec<f64>| {
+        read_f64_array(value, at, max, numbers)?;
+        poses_from_array(numbers, at)
+    };
+    // Reading an array may run a caller's getter, which may call back into this module: the
+    // inner call then finds the buffer borrowed and uses a fresh one.
+    POSE_NUMBERS.with(|numbers| match numbers.try_borrow_mut() {
+        Ok(mut numbers) => read(&mut numbers),
+        Err(_) => read(&mut Vec::new()),
+    })
+}
+
+/// [`f64_array`] into `out`, whose length becomes that of the list (its earlier contents are
+/// overwritten, not cleared first).
+fn read_f64_array(value: &JsValue, at: &str, max: usize, out: &mut Vec<f64>) -> Result<(), Error> {
     let too_long = |len: u32| Error::OutOfRange {
         at: at.to_string(),
         value: format!("length {len}"),
@@ -190,12 +220,12 @@ pub(crate) fn f64_array(value: &JsValue, at: &str, max: usize) -> Result<Vec<f64
         if len > max {
             return Err(too_long(len as u32));
         }
-        let mut out = vec![0.0; len];
+        out.resize(len, 0.0);
         // A detached buffer reads as length 0 and is not touched (`set` would throw on it).
         if len > 0 {
-            set_from_typed_array(&mut out, value).map_err(unreadable)?;
+            set_from_typed_array(out, value).map_err(unreadable)?;
         }
-        return Ok(out);
+        return Ok(());
     }
     let value = plain(value, at)?;
     if let Some(a) = value.dyn_ref::<Array>() {
@@ -204,7 +234,9 @@ pub(crate) fn f64_array(value: &JsValue, at: &str, max: usize) -> Result<Vec<f64
         }
         // Element by element: `new Float64Array(array)` would throw on a BigInt and turn
         // strings into numbers.
-        Ok(a.iter().map(|v| v.as_f64().unwrap_or(f64::NAN)).collect())
+        out.clear();
+        out.extend(a.iter().map(|v| v.as_f64().unwrap_or(f64::NAN)));
+        Ok(())
     } else {
         Err(expected(
             at,

@@ -12,9 +12,9 @@ use wasm_bindgen::prelude::*;
 
 use super::convert::{
     self, check_index, count, document_from_js, document_to_js, f64_array, finite, is_absent,
-    kinematics_to_js, point_from_js, pose_from_js, pose_to_js, poses_from_array, poses_from_fn,
+    kinematics_to_js, point_from_js, pose_from_js, pose_to_js, poses_from_fn, poses_from_js_array,
     poses_to_array, poses_to_matrices, push_kinematics, string, to_js, ScrewInfo,
-    KINEMATICS_STRIDE, POSE_STRIDE,
+    KINEMATICS_STRIDE,
 };
 use super::options::{self, default_subdivision};
 use super::scenes_api::find_scene;
@@ -183,8 +183,7 @@ impl MotionHandle {
         #[wasm_bindgen(unchecked_optional_param_type = "Partial<SubdivisionOptions>")]
         options: JsValue,
     ) -> Result<MotionHandle, JsError> {
-        let data = f64_array(&poses, "poses", MAX_REFINED_POSES * POSE_STRIDE)?;
-        let poses = poses_from_array(&data, "poses")?;
+        let poses = poses_from_js_array(&poses, "poses")?;
         let closed = if is_absent(&closed) {
             true
         } else {

@@ -4,11 +4,11 @@
 use wasm_bindgen::prelude::*;
 
 use super::convert::{
-    f64_array, finite, pose_from_js, pose_to_js, poses_from_array, poses_from_fn, poses_to_array,
-    poses_to_matrices, to_js, ScrewInfo, POSE_STRIDE,
+    finite, pose_from_js, pose_to_js, poses_from_fn, poses_from_js_array, poses_to_array,
+    poses_to_matrices, to_js, ScrewInfo,
 };
 use super::motion_api::batch;
-use crate::{Blend, Error, Pose, Screw, MAX_REFINED_POSES};
+use crate::{Blend, Error, Pose, Screw};
 
 /// `screw(a, t, b)`: the pose after the fraction `t` of the screw motion from `a` to `b`
 /// (`t = 0` gives `a`, `t = 1` gives `b`, any real `t` extrapolates).
@@ -50,9 +50,8 @@ pub fn screw_pairs(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: JsValue,
 ) -> Result<Vec<f64>, JsError> {
     let ts = batch(&ts, "ts")?;
-    let max = MAX_REFINED_POSES * POSE_STRIDE;
-    let starts = poses_from_array(&f64_array(&starts, "starts", max)?, "starts")?;
-    let ends = poses_from_array(&f64_array(&ends, "ends", max)?, "ends")?;
+    let starts = poses_from_js_array(&starts, "starts")?;
+    let ends = poses_from_js_array(&ends, "ends")?;
     if starts.len() != ts.len() || ends.len() != ts.len() {
         return Err(Error::OutOfRange {
             at: "ends".into(),
@@ -89,6 +88,5 @@ pub fn screw_info(
 pub fn poses_to_matrices_js(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] poses: JsValue,
 ) -> Result<Vec<f32>, JsError> {
-    let data = f64_array(&poses, "poses", MAX_REFINED_POSES * POSE_STRIDE)?;
-    Ok(poses_to_matrices(&poses_from_array(&data, "poses")?))
+    Ok(poses_to_matrices(&poses_from_js_array(&poses, "poses")?))
 }

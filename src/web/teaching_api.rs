@@ -13,8 +13,8 @@ use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
 use super::convert::{
-    boolean, count, f64_array, is_absent, point_from_js, poses_from_array, poses_to_array, to_js,
-    ScrewInfo, POSE_STRIDE,
+    boolean, count, f64_array, is_absent, point_from_js, poses_from_js_array, poses_to_array,
+    to_js, ScrewInfo,
 };
 use super::options::{self, default_subdivision};
 use crate::{
@@ -93,8 +93,7 @@ fn closed_flag(value: &JsValue) -> Result<bool, Error> {
 
 /// Poses in the 7-per-pose layout, validated.
 fn poses_arg(value: &JsValue) -> Result<Vec<crate::Pose>, Error> {
-    let data = f64_array(value, "poses", MAX_REFINED_POSES * POSE_STRIDE)?;
-    poses_from_array(&data, "poses")
+    poses_from_js_array(value, "poses")
 }
 
 /// Planar points `x, y` (finite, whole pairs), at most [`MAX_REFINED_POSES`].
