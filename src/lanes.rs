@@ -250,9 +250,9 @@ pub(crate) trait LanesOp {
     fn run<L: Width<N>, const N: usize>(self, proto: L) -> Self::Output;
 }
 
-/// Runs `op` on the widest lanes the processor has: four ([`crate::lanes_avx::Avx4`]) where
-/// x86-64 has AVX2 (checked at run time; `pulp` compiles the code for it and keeps the `unsafe`
-/// of calling it on its side), two in a wasm SIMD register ([`crate::lanes_wasm::Wasm2`]) on
+/// Runs `op` on the widest lanes the processor has: eight ([`crate::lanes_avx512::Avx8`]) where
+/// x86-64 has AVX-512, four ([`crate::lanes_avx::Avx4`]) where it has AVX2 (checked at run
+/// time; `pulp` compiles the code for them and keeps the `unsafe` of calling it on its side), two in a wasm SIMD register ([`crate::lanes_wasm::Wasm2`]) on
 /// wasm32 built with `simd128`, two ([`Lanes<2>`]: SSE2, NEON) everywhere else. Every
 /// kind of lane computes the same IEEE operations in the same order (no fused multiply-add is
 /// formed), so the results do not depend on the processor.
@@ -266,24 +266,53 @@ pub(crate) fn run_widest<Op: LanesOp>(op: Op) -> Op::Output {
     #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
     {
         #[cfg(target_arch = "x86_64")]
-        if !forced_two_lanes() {
-            if let Some(avx) = crate::lanes_avx::Avx4::detect() {
-                return avx.vectorize(op);
+        {
+            let max = max_width();
+            if max >= 8 {
+                if let Some(avx512) = crate::lanes_avx512::Avx8::detect() {
+                    return avx512.vectorize(op);
+                }
+            }
+            if max >= 4 {
+                if let Some(avx) = crate::lanes_avx::Avx4::detect() {
+                    return avx.vectorize(op);
+                }
             }
         }
         op.run(Lanes([0.0; 2]))
     }
 }
 
-/// Whether the batches must stay on two lanes: only inside tests' `with_two_lanes`, so that the
-/// two-lane route is covered on machines with AVX2 too.
+/// Runs `op` on lanes of `proto`'s kind inside `pulp`'s dispatch for the feature token `simd`:
+/// everything `op` calls inline is then compiled with the token's features (AVX2, AVX-512).
 #[cfg(all(lanes, target_arch = "x86_64"))]
 #[inline(always)]
-fn forced_two_lanes() -> bool {
+pub(crate) fn vectorize<S: pulp::Simd, L: Width<N>, const N: usize, Op: LanesOp>(
+    simd: S,
+    proto: L,
+    op: Op,
+) -> Op::Output {
+    /// `op` and its lanes, in pulp's dispatch.
+    struct OnSimd<Op, L, const N: usize>(Op, L);
+    impl<Op: LanesOp, L: Width<N>, const N: usize> pulp::WithSimd for OnSimd<Op, L, N> {
+        type Output = Op::Output;
+        #[inline(always)]
+        fn with_simd<S: pulp::Simd>(self, _: S) -> Op::Output {
+            self.0.run::<L, N>(self.1)
+        }
+    }
+    simd.vectorize(OnSimd::<Op, L, N>(op, proto))
+}
+
+/// The widest lanes the batches may use: all of them, except inside tests' `with_max_width`, so
+/// that the narrower routes are covered on machines with wider ones.
+#[cfg(all(lanes, target_arch = "x86_64"))]
+#[inline(always)]
+fn max_width() -> usize {
     #[cfg(test)]
-    return tests::forced_two_lanes();
+    return tests::max_width();
     #[cfg(not(test))]
-    false
+    usize::MAX
 }
 
 /// A 3-vector of [`Real`]s (one vector per lane).
@@ -438,22 +467,92 @@ pub(crate) mod tests {
     use std::cell::Cell;
 
     thread_local! {
-        static TWO_LANES: Cell<bool> = const { Cell::new(false) };
+        static MAX_WIDTH: Cell<usize> = const { Cell::new(usize::MAX) };
     }
 
-    /// Runs `f` with the batches on two lanes even where AVX2 is present, so that tests cover
-    /// the two-lane route on every machine.
-    pub(crate) fn with_two_lanes<T>(f: impl FnOnce() -> T) -> T {
-        TWO_LANES.with(|two| two.set(true));
+    /// Runs `f` with the batches on at most `width` lanes (8, 4 or 2), so that tests cover the
+    /// narrower routes on machines that have wider ones.
+    pub(crate) fn with_max_width<T>(width: usize, f: impl FnOnce() -> T) -> T {
+        MAX_WIDTH.with(|w| w.set(width));
         let result = f();
-        TWO_LANES.with(|two| two.set(false));
+        MAX_WIDTH.with(|w| w.set(usize::MAX));
         result
     }
 
-    /// Whether [`with_two_lanes`] is in effect on this thread.
+    /// The cap set by [`with_max_width`] on this thread.
     #[cfg(target_arch = "x86_64")]
-    pub(crate) fn forced_two_lanes() -> bool {
-        TWO_LANES.with(Cell::get)
+    pub(crate) fn max_width() -> usize {
+        MAX_WIDTH.with(Cell::get)
+    }
+
+    /// Every lane operation of `proto`'s kind gives, lane by lane, the bits of the one-lane
+    /// operation: NaN, infinities, signed zeros, subnormals and the quadrant bit tricks
+    /// included.
+    pub(crate) fn lanes_match_one_lane<L: Width<N>, const N: usize>(proto: L) {
+        let values = [
+            1.5,
+            -2.0,
+            0.25,
+            3.0,
+            0.0,
+            -0.0,
+            1e-300,
+            -1e300,
+            f64::NAN,
+            f64::INFINITY,
+            7.0,
+            0.1,
+            2.5,
+            -0.75,
+            5e-324,
+            -f64::INFINITY,
+        ];
+        let same = |got: L, want: [f64; N], what: &str| {
+            for (k, w) in want.iter().enumerate() {
+                assert_eq!(
+                    got.lane(k).to_bits(),
+                    w.to_bits(),
+                    "{what}, lane {k} of {N}"
+                );
+            }
+        };
+        for start in 0..values.len() {
+            let x: [f64; N] = std::array::from_fn(|k| values[(start + k) % values.len()]);
+            let y: [f64; N] = std::array::from_fn(|k| values[(start + 3 * k + 5) % values.len()]);
+            let (a, b) = (proto.gather(|k| x[k]), proto.gather(|k| y[k]));
+            let each = |f: fn(f64, f64) -> f64| std::array::from_fn(|k| f(x[k], y[k]));
+            same(a, x, "gather");
+            same(a + b, each(|p, q| p + q), "add");
+            same(a - b, each(|p, q| p - q), "sub");
+            same(a * b, each(|p, q| p * q), "mul");
+            same(a / b, each(|p, q| p / q), "div");
+            same(-a, x.map(|p| -p), "neg");
+            same(a.sqrt(), x.map(f64::sqrt), "sqrt");
+            same(a.min(b), each(Real::min), "min");
+            same(a.max(b), each(Real::max), "max");
+            same(a.sign_one(), x.map(Real::sign_one), "sign_one");
+            same(proto.constant(x[0]), [x[0]; N], "constant");
+            // gt_step is specified for non-negative finite operands.
+            let (fx, fy) = (x.map(finite_abs), y.map(finite_abs));
+            let (fa, fb) = (proto.gather(|k| fx[k]), proto.gather(|k| fy[k]));
+            let steps = std::array::from_fn(|k| Real::gt_step(fx[k], fy[k]));
+            same(fa.gt_step(fb), steps, "gt_step");
+            assert_eq!(a.all(|v| !v.is_nan()), x.iter().all(|v| !v.is_nan()), "all");
+            let q: [f64; N] =
+                std::array::from_fn(|k| 6755399441055744.0 + ((start + k) % 8) as f64);
+            let (gs, gc) = Real::quadrant(proto.gather(|k| q[k]), a, b);
+            let want: [(f64, f64); N] = std::array::from_fn(|k| Real::quadrant(q[k], x[k], y[k]));
+            same(gs, want.map(|w| w.0), "quadrant sine");
+            same(gc, want.map(|w| w.1), "quadrant cosine");
+        }
+    }
+
+    fn finite_abs(v: f64) -> f64 {
+        if v.is_finite() {
+            v.abs()
+        } else {
+            1.0
+        }
     }
 
     #[test]
@@ -465,14 +564,32 @@ pub(crate) mod tests {
         assert_eq!(1e-300.gt_step(0.0), 1.0);
         assert_eq!((-0.0f64).sign_one(), -1.0);
         assert_eq!(0.0f64.sign_one(), 1.0);
+        assert_eq!(Real::min(1.0, f64::NAN).to_bits(), f64::NAN.to_bits());
+        assert_eq!(Real::max(2.0, 1.0), 2.0);
     }
 
     #[cfg(portable_lanes)]
     #[test]
-    fn lane_steps_and_signs() {
-        let two = Lanes([3.0, 0.5]).gt_step(Lanes([1.0, 1.0]));
-        assert_eq!(two, Lanes([1.0, 0.0]));
-        assert_eq!(Lanes([-2.0, 2.0]).sign_one(), Lanes([-1.0, 1.0]));
+    fn two_lanes_match_one_lane() {
+        lanes_match_one_lane(Lanes([0.0; 2]));
+    }
+
+    #[cfg(all(lanes, target_arch = "x86_64"))]
+    #[test]
+    fn avx_lanes_match_one_lane() {
+        // Run only where the processor has the instructions.
+        if let Some(proto) = crate::lanes_avx::Avx4::detect() {
+            lanes_match_one_lane(proto);
+        }
+        if let Some(proto) = crate::lanes_avx512::Avx8::detect() {
+            lanes_match_one_lane(proto);
+        }
+    }
+
+    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+    #[wasm_bindgen_test::wasm_bindgen_test]
+    fn wasm_lanes_match_one_lane() {
+        lanes_match_one_lane(crate::lanes_wasm::Wasm2::zero());
     }
 
     #[test]
@@ -485,23 +602,6 @@ pub(crate) mod tests {
                 let p = r.mul(q.conjugate());
                 assert_eq!([p.x, p.y, p.z], [0.0; 3], "{q:?}");
             }
-        }
-    }
-
-    #[cfg(portable_lanes)]
-    #[test]
-    fn lanes_agree_with_scalars() {
-        let (a, b) = (Lanes([1.5, -2.0]), Lanes([0.25, 3.0]));
-        for (lane, (x, y)) in [(1.5, 0.25), (-2.0, 3.0)].into_iter().enumerate() {
-            assert_eq!((a + b).0[lane], x + y);
-            assert_eq!((a - b).0[lane], x - y);
-            assert_eq!((a * b).0[lane], x * y);
-            assert_eq!((a / b).0[lane], x / y);
-            assert_eq!((-a).0[lane], -x);
-            assert_eq!(a.min(b).0[lane], x.min(y));
-            assert_eq!(a.max(b).0[lane], x.max(y));
-            assert_eq!(Real::min(x, y), x.min(y));
-            assert_eq!(Real::max(x, y), x.max(y));
         }
     }
 }

@@ -14,7 +14,6 @@ use core::arch::x86_64::__m256d;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
 use pulp::x86::V3;
-use pulp::{Simd, WithSimd};
 
 use crate::lanes::{LanesOp, Real, Width};
 
@@ -40,16 +39,7 @@ impl Avx4 {
     /// calls inline is compiled with the token's features).
     #[inline(always)]
     pub fn vectorize<Op: LanesOp>(self, op: Op) -> Op::Output {
-        /// `op` in pulp's dispatch.
-        struct OnAvx<Op>(Op, Avx4);
-        impl<Op: LanesOp> WithSimd for OnAvx<Op> {
-            type Output = Op::Output;
-            #[inline(always)]
-            fn with_simd<S: Simd>(self, _: S) -> Op::Output {
-                self.0.run::<Avx4, 4>(self.1)
-            }
-        }
-        Simd::vectorize(self.simd, OnAvx(op, self))
+        crate::lanes::vectorize(self.simd, self, op)
     }
 
     #[inline(always)]
@@ -165,65 +155,5 @@ impl Width<4> for Avx4 {
     #[inline(always)]
     fn lane(self, k: usize) -> f64 {
         self.lanes()[k]
-    }
-}
-
-/// Four-lane results equal four one-lane results, bit for bit, on every operation
-/// (run only where the processor has AVX2).
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn avx_lanes_agree_with_one_lane_bit_for_bit() {
-        let Some(proto) = Avx4::detect() else {
-            return;
-        };
-        let values = [
-            1.5, -2.0, 0.25, 3.0, 0.0, -0.0, 1e-300, -1e300, 7.0, 0.1, 2.5, -0.75,
-        ];
-        let same = |got: Avx4, want: [f64; 4]| {
-            assert_eq!(got.lanes().map(f64::to_bits), want.map(f64::to_bits));
-        };
-        for w in values.windows(8) {
-            let (x, y) = ([w[0], w[1], w[2], w[3]], [w[4], w[5], w[6], w[7]]);
-            let (a, b) = (proto.gather(|k| x[k]), proto.gather(|k| y[k]));
-            let each = |f: fn(f64, f64) -> f64| std::array::from_fn(|k| f(x[k], y[k]));
-            same(a + b, each(|p, q| p + q));
-            same(a - b, each(|p, q| p - q));
-            same(a * b, each(|p, q| p * q));
-            same(a / b, each(|p, q| p / q));
-            same(-a, x.map(|p| -p));
-            same(a.sqrt(), x.map(f64::sqrt));
-            same(a.min(b), each(Real::min));
-            same(a.max(b), each(Real::max));
-            same(a.sign_one(), x.map(Real::sign_one));
-            let (ax, by) = (a.map_abs(), b.map_abs());
-            same(ax.gt_step(by), each(|p, q| Real::gt_step(p.abs(), q.abs())));
-            for (k, want) in x.iter().enumerate() {
-                assert_eq!(a.lane(k).to_bits(), want.to_bits());
-            }
-        }
-        for base in [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0] {
-            let r: [f64; 4] = std::array::from_fn(|k| 6755399441055744.0 + base + k as f64);
-            let (s, c) = ([0.1, -0.2, 0.3, 0.4], [0.9, 0.8, -0.7, 0.6]);
-            let (gs, gc) = Real::quadrant(
-                proto.gather(|k| r[k]),
-                proto.gather(|k| s[k]),
-                proto.gather(|k| c[k]),
-            );
-            let want: [(f64, f64); 4] = std::array::from_fn(|k| Real::quadrant(r[k], s[k], c[k]));
-            same(gs, want.map(|w| w.0));
-            same(gc, want.map(|w| w.1));
-        }
-        assert!(proto.constant(2.0).all(|v| v == 2.0));
-        assert!(!proto.gather(|k| k as f64).all(|v| v > 0.0));
-    }
-
-    impl Avx4 {
-        fn map_abs(self) -> Avx4 {
-            let l = self.lanes();
-            self.gather(|k| l[k].abs())
-        }
     }
 }

@@ -88,6 +88,8 @@ mod interop;
 mod lanes;
 #[cfg(all(lanes, target_arch = "x86_64"))]
 mod lanes_avx;
+#[cfg(all(lanes, target_arch = "x86_64"))]
+mod lanes_avx512;
 #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
 mod lanes_wasm;
 pub mod mesh;

@@ -275,8 +275,10 @@ mod tests {
 
     #[test]
     fn lanes_reproduce_the_scalar_route_bit_for_bit() {
-        same_as_scalar();
-        crate::lanes::tests::with_two_lanes(same_as_scalar);
+        // Every width this machine has: the widest, then capped to four and to two lanes.
+        for width in [usize::MAX, 4, 2] {
+            crate::lanes::tests::with_max_width(width, same_as_scalar);
+        }
     }
 
     fn same_as_scalar() {
