@@ -80,10 +80,10 @@ pub trait Blend: Copy {
 }
 
 /// Poses blend by screws. Their batch methods run several screws at a time on SIMD lanes
-/// (`screw_batch`: four with AVX2, two with SSE2, NEON or wasm SIMD) where that pays: natively,
-/// and on wasm32 built with `simd128`. Plain wasm32
-/// has no SIMD, the interleaved lanes gained nothing there in measurements, and their code
-/// would add 6 KB to the module, so it keeps the one-at-a-time defaults.
+/// (`screw_batch`: eight with AVX-512, four with AVX2, two with SSE2, NEON or wasm SIMD) where
+/// that pays: natively, and on wasm32 built with `simd128`. Plain wasm32 has no SIMD, the
+/// interleaved lanes gained nothing there in measurements, and their code would add 6 KB to the
+/// module, so it keeps the one-at-a-time defaults.
 impl Blend for Pose {
     type Span = Screw;
     #[inline]

@@ -1,5 +1,5 @@
-//! Many screws at once, several at a time on SIMD lanes (see `lanes` for why): four on x86-64
-//! with AVX2, two elsewhere ([`run_widest`]).
+//! Many screws at once, several at a time on SIMD lanes (see `lanes` for why): eight or four on
+//! x86-64 with AVX-512 or AVX2, two elsewhere ([`run_widest`]).
 //!
 //! Every routine here gives *bit for bit* what the one-at-a-time [`Screw`] calls give: the lanes
 //! run the same kernel (`screw_kernel`) with the same operations in the same order. A group that
