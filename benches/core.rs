@@ -95,6 +95,17 @@ fn report_accuracy(data: &[(Pose, Pose, Pose)]) {
     println!("accuracy at t = 0.3 over {PAIRS} pairs (max |Δo| + angle): screwbender {ours:.2e}, nalgebra sclerp {theirs:.2e}");
 }
 
+/// The full screws `screw(a, 0.3, b)` of `data` through the batch route, into `out`.
+fn batch_screws(data: &[(Pose, Pose, Pose)], out: &mut Vec<Pose>) {
+    out.clear();
+    Pose::blends(
+        data.len(),
+        |i| (&data[i].0, black_box(0.3), &data[i].1),
+        out,
+    );
+    black_box(out);
+}
+
 /// Times the three full-screw routes in alternating bursts of `PAIRS` screws and prints the
 /// median time per screw of each and their ratios. On a shared machine whose speed drifts from
 /// one second to the next, back-to-back bursts compare like with like where criterion's
@@ -110,13 +121,7 @@ fn report_interleaved(data: &[(Pose, Pose, Pose)]) {
             black_box(screw(black_box(a), black_box(0.3), black_box(b)));
         }
         let t1 = Instant::now();
-        out.clear();
-        Pose::blends(
-            PAIRS,
-            |i| (&data[i].0, black_box(0.3), &data[i].1),
-            &mut out,
-        );
-        black_box(&out);
+        batch_screws(data, &mut out);
         let t2 = Instant::now();
         for (a, b) in &dqs {
             black_box(black_box(a).sclerp(black_box(b), black_box(0.3)));
@@ -156,19 +161,11 @@ fn screws(c: &mut Criterion) {
             }
         })
     });
-    // The same full screws through the batch route (two at a time on SIMD lanes), as the
+    // The same full screws through the batch route (several at a time on SIMD lanes), as the
     // subdivision and JavaScript's `screwPairs` use it.
     let mut out = Vec::with_capacity(PAIRS);
     g.bench_function("batch Pose::blends (full screws)", |bench| {
-        bench.iter(|| {
-            out.clear();
-            Pose::blends(
-                PAIRS,
-                |i| (&data[i].0, black_box(0.3), &data[i].1),
-                &mut out,
-            );
-            black_box(&out);
-        })
+        bench.iter(|| batch_screws(&data, &mut out))
     });
     let cached: Vec<Screw> = data.iter().map(|(a, b, _)| Screw::between(a, b)).collect();
     g.bench_function("cached Screw::at(t)", |bench| {
