@@ -418,6 +418,8 @@ fn split_tweak_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>, scratch
         T::blends(count, tweak, out);
         return;
     }
+    // Half the poses are tweaked: they go to a buffer and are interleaved with the untouched
+    // half. (The split rules sample no spans, so the first sample column serves as that buffer.)
     samples.resize_with(1, || Vec::with_capacity(capacity));
     let moved = &mut samples[0];
     moved.clear();
