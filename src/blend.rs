@@ -17,7 +17,7 @@ use crate::screw_batch;
 ///
 /// `Span` caches whatever depends only on `(a, b)` (for poses, the screw logarithm), so a rule
 /// that evaluates the same pair at several `t` pays for the logarithm once.
-pub trait Blend: Copy {
+pub trait Blend: Copy + 'static {
     /// The precomputed interpolant between two elements.
     type Span: Copy;
     /// Precomputes the interpolant from `a` to `b`.

@@ -226,13 +226,71 @@ impl Subdivision {
         // instead of growing (and copying) the one it is swapped with.
         let size = current.len() << self.levels;
         current.reserve(size.saturating_sub(current.len()));
-        let mut next = Vec::with_capacity(size);
-        let mut scratch = Scratch::with_capacity(size / 2);
+        let mut spare = Spare::take(size);
         for _ in 0..self.levels {
-            self.step_unchecked(&current, &mut next, &mut scratch);
-            std::mem::swap(&mut current, &mut next);
+            self.step_unchecked(&current, &mut spare.next, &mut spare.scratch);
+            std::mem::swap(&mut current, &mut spare.next);
         }
+        spare.keep();
         current
+    }
+}
+
+/// The working buffers of a subdivision besides its result: the sequence of the step being
+/// computed, and the steps' temporaries.
+///
+/// The last subdivision's are kept on its thread for the next one (up to
+/// [`SPARE_BYTES`]): at the finest levels they are hundreds of kilobytes, which the system
+/// allocator hands back to the operating system when they are freed, and taking them again
+/// cost page faults — a tenth of the time of a subdivision of 32 poses by 6 levels.
+struct Spare<T> {
+    next: Vec<T>,
+    scratch: Scratch<T>,
+}
+
+/// The most bytes of working buffers kept between subdivisions, per thread.
+const SPARE_BYTES: usize = 8 << 20;
+
+thread_local! {
+    /// The working buffers of the last subdivision on this thread, whatever it subdivided.
+    static SPARE: std::cell::Cell<Option<Box<dyn std::any::Any>>> =
+        const { std::cell::Cell::new(None) };
+}
+
+impl<T: Blend> Spare<T> {
+    /// The kept buffers (if they hold `T`), or new ones, with room for sequences of `size`.
+    /// (Taken, not borrowed: a subdivision inside a [`Blend`] implementation finds none and
+    /// makes its own.)
+    fn take(size: usize) -> Spare<T> {
+        let kept = SPARE.with(|spare| spare.take());
+        match kept.and_then(|kept| kept.downcast::<Spare<T>>().ok()) {
+            Some(mut spare) => {
+                spare.next.clear();
+                spare.next.reserve(size);
+                spare.scratch.reserve(size / 2);
+                *spare
+            }
+            None => Spare {
+                next: Vec::with_capacity(size),
+                scratch: Scratch::with_capacity(size / 2),
+            },
+        }
+    }
+
+    /// Keeps the buffers for the next subdivision on this thread, unless they are too large.
+    fn keep(self) {
+        let elements = self.next.capacity()
+            + self.scratch.left.capacity()
+            + self.scratch.right.capacity()
+            + self
+                .scratch
+                .samples
+                .iter()
+                .map(Vec::capacity)
+                .sum::<usize>();
+        if elements * std::mem::size_of::<T>() <= SPARE_BYTES {
+            SPARE.with(|spare| spare.set(Some(Box::new(self))));
+        }
     }
 }
 
@@ -254,11 +312,25 @@ impl<T> Scratch<T> {
     /// Buffers for steps of up to `n` inputs, allocated once: growing them level by level
     /// would copy each one at every level.
     fn with_capacity(n: usize) -> Self {
-        Scratch {
+        let mut scratch = Scratch {
             samples: Vec::new(),
-            left: Vec::with_capacity(n),
-            // The split rules' midpoints: one per output pose for Jarek.
-            right: Vec::with_capacity(2 * n),
+            left: Vec::new(),
+            right: Vec::new(),
+        };
+        scratch.reserve(n);
+        scratch
+    }
+
+    /// Makes room for steps of up to `n` inputs.
+    fn reserve(&mut self, n: usize) {
+        self.left.clear();
+        self.left.reserve(n);
+        // The split rules' midpoints: one per output pose for Jarek.
+        self.right.clear();
+        self.right.reserve(2 * n);
+        for column in &mut self.samples {
+            column.clear();
+            column.reserve(n);
         }
     }
 }
@@ -341,10 +413,15 @@ fn direct_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>, scratch: &mu
 
 /// Appends `evens[0], odds[0], evens[1], odds[1], …` to `out`.
 fn interleave<T: Copy>(evens: &[T], odds: &[T], out: &mut Vec<T>) {
-    for (even, odd) in evens.iter().zip(odds) {
-        out.push(*even);
-        out.push(*odd);
-    }
+    let n = evens.len().min(odds.len());
+    // A mapped range has a known length: one reservation, no capacity check per element.
+    out.extend((0..2 * n).map(|j| {
+        if j % 2 == 0 {
+            evens[j / 2]
+        } else {
+            odds[j / 2]
+        }
+    }));
 }
 
 /// The first version's rules (spec §6.2): split, then tweak the split sequence `Z`, all right-hand
@@ -352,27 +429,18 @@ fn interleave<T: Copy>(evens: &[T], odds: &[T], out: &mut Vec<T>) {
 /// `s(s(Z_{j−2}, ½, Z_{j+2}), 5/4 resp. 9/8, Z_j)`.
 fn split_tweak_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>, scratch: &mut Scratch<T>) {
     let n = p.len();
-    let m = 2 * n;
+    let prev = |i: usize| if i == 0 { n - 1 } else { i - 1 };
     let next = |i: usize| if i + 1 == n { 0 } else { i + 1 };
     let Scratch {
         samples,
         left: split,
         right: mids,
     } = scratch;
+    // The split sequence Z: the old poses `Z_{2i} = p[i]` and the split midpoints
+    // `Z_{2i+1} = split[i]`.
     split.clear();
     T::midpoints(n, |i| (&p[i], &p[next(i)]), split);
-    let capacity = split.capacity();
     let split: &[T] = split;
-    // The split sequence Z (old poses at even indices, split midpoints at odd ones), cyclic.
-    // (Indices come in below 2m: a subtraction, not a `%`, which is a slow division.)
-    let z = |j: usize| {
-        let j = if j >= m { j - m } else { j };
-        if j % 2 == 0 {
-            &p[j / 2]
-        } else {
-            &split[j / 2]
-        }
-    };
     // (old-pose weight, new-pose weight): how far each tweak goes. The J_s family has no
     // split-tweak form (options are validated before a step runs); its named members map here.
     let s = scheme.j_parameter();
@@ -383,52 +451,32 @@ fn split_tweak_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>, scratch
     } else {
         (Some(0.25), Some(9.0 / 8.0))
     };
-    // The k-th tweaked index is `k·stride + offset`: every index, or the even (old) ones, or
-    // the odd (new) ones.
-    let (count, stride, offset) = match (old_w, new_w) {
-        (Some(_), Some(_)) => (m, 1, 0),
-        (Some(_), None) => (n, 2, 0),
-        _ => (n, 2, 1),
+    // The tweaked old and new poses, each in its own batches (in `Z`'s indices the two read
+    // different neighbours; one batch over both parities had to decide per pose, and its
+    // closures were too large to be inlined into the lanes).
+    let capacity = split.len();
+    samples.resize_with(2, || Vec::with_capacity(capacity));
+    let [olds, news] = &mut samples[..] else {
+        unreachable!("two sample buffers")
     };
-    let tweaked = |k: usize| k * stride + offset;
-    // Q_j = s(Z_j, w, s(Z_{j−1}, ½, Z_{j+1})) for old poses (even j),
-    // Q_j = s(s(Z_{j−2}, ½, Z_{j+2}), w, Z_j) for new poses (odd j).
     mids.clear();
-    T::midpoints(
-        count,
-        |k| {
-            let j = tweaked(k);
-            let r = if j % 2 == 0 { 1 } else { 2 };
-            (z(j + m - r), z(j + r))
-        },
-        mids,
-    );
-    let mids: &[T] = mids;
-    let tweak = |k: usize| {
-        let j = tweaked(k);
-        if j % 2 == 0 {
-            (z(j), old_w.unwrap_or(0.0), &mids[k])
-        } else {
-            (&mids[k], new_w.unwrap_or(0.0), z(j))
-        }
-    };
-    out.reserve(m);
-    if count == m {
-        // Every pose is tweaked: the tweaks are the output, in order.
-        T::blends(count, tweak, out);
-        return;
+    if let Some(w) = old_w {
+        // Q_{2i} = s(Z_{2i}, w, s(Z_{2i−1}, ½, Z_{2i+1})).
+        T::midpoints(n, |i| (&split[prev(i)], &split[i]), mids);
+        olds.clear();
+        T::blends(n, |i| (&p[i], w, &mids[i]), olds);
     }
-    // Half the poses are tweaked: they go to a buffer and are interleaved with the untouched
-    // half. (The split rules sample no spans, so the first sample column serves as that buffer.)
-    samples.resize_with(1, || Vec::with_capacity(capacity));
-    let moved = &mut samples[0];
-    moved.clear();
-    T::blends(count, tweak, moved);
-    if offset == 0 {
-        interleave(moved, split, out);
-    } else {
-        interleave(p, moved, out);
+    let first_new = mids.len();
+    if let Some(w) = new_w {
+        // Q_{2i+1} = s(s(Z_{2i−1}, ½, Z_{2i+3}), w, Z_{2i+1}).
+        T::midpoints(n, |i| (&split[prev(i)], &split[next(i)]), mids);
+        news.clear();
+        T::blends(n, |i| (&mids[first_new + i], w, &split[i]), news);
     }
+    let evens: &[T] = if old_w.is_some() { olds } else { p };
+    let odds: &[T] = if new_w.is_some() { news } else { split };
+    out.reserve(2 * n);
+    interleave(evens, odds, out);
 }
 
 #[cfg(test)]
