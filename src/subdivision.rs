@@ -524,6 +524,35 @@ mod tests {
     }
 
     #[test]
+    fn kept_buffers_do_not_change_results() {
+        // Every subdivision after the first on a thread reuses the last one's buffers, whatever
+        // their element type and size: the results must not depend on what ran before.
+        let points: Vec<DVec2> = (0..7)
+            .map(|i| DVec2::new((i as f64).cos(), (i * i) as f64 * 0.1))
+            .collect();
+        let reals = [0.0, 1.0, 4.0, 2.0];
+        let runs = move |levels| {
+            let mut results = Vec::new();
+            for rules in [Rules::Direct, Rules::SplitTweak] {
+                for scheme in [Scheme::BSpline, Scheme::FourPoint, Scheme::Jarek] {
+                    let s = Subdivision::new(scheme, rules, levels);
+                    let refined = s.apply(&points, true).unwrap();
+                    assert_eq!(s.apply(&reals, false).unwrap().len(), 3 * (1 << levels) + 1);
+                    results.push(refined);
+                }
+            }
+            results
+        };
+        let first = runs(5);
+        runs(1);
+        runs(8);
+        assert_eq!(runs(5), first);
+        // A new thread starts without kept buffers.
+        let fresh = std::thread::spawn(move || runs(5)).join().unwrap();
+        assert_eq!(fresh, first);
+    }
+
+    #[test]
     fn open_output_covers_the_range() {
         let pts: Vec<DVec2> = (0..5).map(|i| DVec2::new(i as f64, 0.0)).collect();
         for scheme in [Scheme::BSpline, Scheme::FourPoint, Scheme::Jarek] {
