@@ -239,18 +239,22 @@ impl Subdivision {
 /// The working buffers of a subdivision besides its result: the sequence of the step being
 /// computed, and the steps' temporaries.
 ///
-/// The last subdivision's are kept on its thread for the next one (up to
+/// Natively, the last subdivision's are kept on its thread for the next one (up to
 /// [`SPARE_BYTES`]): at the finest levels they are hundreds of kilobytes, which the system
 /// allocator hands back to the operating system when they are freed, and taking them again
-/// cost page faults — a tenth of the time of a subdivision of 32 poses by 6 levels.
+/// cost page faults — a tenth of the time of a subdivision of 32 poses by 6 levels. (Not on
+/// wasm32, whose memory is never handed back: there keeping them would only add code to the
+/// module.)
 struct Spare<T> {
     next: Vec<T>,
     scratch: Scratch<T>,
 }
 
 /// The most bytes of working buffers kept between subdivisions, per thread.
+#[cfg(not(target_arch = "wasm32"))]
 const SPARE_BYTES: usize = 8 << 20;
 
+#[cfg(not(target_arch = "wasm32"))]
 thread_local! {
     /// The working buffers of the last subdivision on this thread, whatever it subdivided.
     static SPARE: std::cell::Cell<Option<Box<dyn std::any::Any>>> =
@@ -262,34 +266,38 @@ impl<T: Blend> Spare<T> {
     /// (Taken, not borrowed: a subdivision inside a [`Blend`] implementation finds none and
     /// makes its own.)
     fn take(size: usize) -> Spare<T> {
-        let kept = SPARE.with(|spare| spare.take());
-        match kept.and_then(|kept| kept.downcast::<Spare<T>>().ok()) {
-            Some(mut spare) => {
-                spare.next.clear();
-                spare.next.reserve(size);
-                spare.scratch.reserve(size / 2);
-                *spare
-            }
-            None => Spare {
-                next: Vec::with_capacity(size),
-                scratch: Scratch::with_capacity(size / 2),
-            },
+        #[cfg(not(target_arch = "wasm32"))]
+        if let Some(mut spare) = SPARE
+            .with(|spare| spare.take())
+            .and_then(|kept| kept.downcast::<Spare<T>>().ok())
+        {
+            spare.next.clear();
+            spare.next.reserve(size);
+            spare.scratch.reserve(size / 2);
+            return *spare;
+        }
+        Spare {
+            next: Vec::with_capacity(size),
+            scratch: Scratch::with_capacity(size / 2),
         }
     }
 
     /// Keeps the buffers for the next subdivision on this thread, unless they are too large.
     fn keep(self) {
-        let elements = self.next.capacity()
-            + self.scratch.left.capacity()
-            + self.scratch.right.capacity()
-            + self
-                .scratch
-                .samples
-                .iter()
-                .map(Vec::capacity)
-                .sum::<usize>();
-        if elements * std::mem::size_of::<T>() <= SPARE_BYTES {
-            SPARE.with(|spare| spare.set(Some(Box::new(self))));
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            let elements = self.next.capacity()
+                + self.scratch.left.capacity()
+                + self.scratch.right.capacity()
+                + self
+                    .scratch
+                    .samples
+                    .iter()
+                    .map(Vec::capacity)
+                    .sum::<usize>();
+            if elements * std::mem::size_of::<T>() <= SPARE_BYTES {
+                SPARE.with(|spare| spare.set(Some(Box::new(self))));
+            }
         }
     }
 }
