@@ -4,7 +4,7 @@ use glam::DVec3;
 
 use crate::error::Error;
 use crate::motion::{Kinematics, Motion};
-use crate::pose::{Pose, UNIT_QUATERNION_TOLERANCE};
+use crate::pose::{unit_to_rounding, Pose, UNIT_QUATERNION_TOLERANCE};
 use crate::screw::Screw;
 
 /// A sequence of poses joined by screws: on span `i` the motion is `screw(P_i, t, P_{i+1})`.
@@ -169,6 +169,11 @@ pub(crate) fn checked_pose(p: &Pose) -> Result<Pose, Error> {
     if !p.is_finite() {
         return Err(Error::NonFinite { at: String::new() });
     }
+    // Rotations already unit to rounding pass through untouched, so validating twice changes
+    // nothing (a rebuilt motion is bit-identical to an edited one).
+    if unit_to_rounding(p.rotation.length_squared()) {
+        return Ok(*p);
+    }
     let norm = p.rotation.length();
     if (norm - 1.0).abs() > UNIT_QUATERNION_TOLERANCE {
         return Err(Error::NonUnitQuaternion {
@@ -176,13 +181,7 @@ pub(crate) fn checked_pose(p: &Pose) -> Result<Pose, Error> {
             norm,
         });
     }
-    // Rotations already unit to rounding pass through untouched, so validating twice changes
-    // nothing (a rebuilt motion is bit-identical to an edited one).
-    let rotation = if (norm - 1.0).abs() <= 4.0 * f64::EPSILON {
-        p.rotation
-    } else {
-        p.rotation / norm
-    };
+    let rotation = p.rotation / norm;
     Ok(Pose::new(p.origin, rotation))
 }
 

@@ -254,19 +254,29 @@ pub fn quat_from_wxyz(q: [f64; 4]) -> Result<DQuat, Error> {
 #[inline]
 fn normalized_quat(q: [f64; 4]) -> Option<DQuat> {
     let [w, x, y, z] = q;
-    let norm = (w * w + x * x + y * y + z * z).sqrt();
-    // NaN comes from any non-finite component.
+    let norm_squared = w * w + x * x + y * y + z * z;
+    // Quaternions already unit to rounding pass through untouched, so reading back a pose this
+    // crate wrote (a saved session, an exported document) gives the same bits, and validating
+    // twice changes nothing (the rule of `checked_pose`). NaN, from any non-finite component,
+    // fails every comparison below.
+    if unit_to_rounding(norm_squared) {
+        return Some(DQuat::from_xyzw(x, y, z, w));
+    }
+    let norm = norm_squared.sqrt();
     let off = (norm - 1.0).abs();
     if off.is_nan() || off > UNIT_QUATERNION_TOLERANCE {
         return None;
     }
-    // Quaternions already unit to rounding pass through untouched, so reading back a pose this
-    // crate wrote (a saved session, an exported document) gives the same bits, and validating
-    // twice changes nothing (the rule of `checked_pose`).
-    if off <= 4.0 * f64::EPSILON {
-        return Some(DQuat::from_xyzw(x, y, z, w));
-    }
     Some(DQuat::from_xyzw(x / norm, y / norm, z / norm, w / norm))
+}
+
+/// Whether a quaternion of squared norm `norm_squared` is unit to rounding (its norm within
+/// about 4 ε of 1), so that validation keeps it as it is. Decided on the squared norm, without
+/// a square root: this is the common case of every pose read, in batches of thousands from
+/// JavaScript. False for NaN.
+#[inline]
+pub(crate) fn unit_to_rounding(norm_squared: f64) -> bool {
+    (norm_squared - 1.0).abs() <= 8.0 * f64::EPSILON
 }
 
 /// The quaternion as `[w, x, y, z]` — the one place where glam's `x, y, z, w` storage order is
