@@ -16,6 +16,8 @@
 //!   point's position, velocity and acceleration, the body's angular velocity and angular
 //!   acceleration (all world frame, per coarse parameter unit).
 
+use std::ops::Range;
+
 use glam::DVec3;
 #[cfg(feature = "files")]
 use js_sys::Uint8Array;
@@ -201,48 +203,109 @@ pub(crate) fn poses_from_js_array(value: &JsValue, at: &str) -> Result<Vec<Pose>
 /// [`f64_array`] into `out`, whose length becomes that of the list (its earlier contents are
 /// overwritten, not cleared first).
 fn read_f64_array(value: &JsValue, at: &str, max: usize, out: &mut Vec<f64>) -> Result<(), Error> {
-    let too_long = |len: u32| Error::OutOfRange {
-        at: at.to_string(),
-        value: format!("length {len}"),
-        expected: format!("at most {max} numbers per call"),
-    };
-    // The fast path: `ArrayBuffer.isView` reads an internal slot (never user code, false for
-    // proxies), so `instanceof` on a view is safe too. The length and the elements are then
-    // read through internal slots as well (the intrinsic `length` getter, `set` into wasm
-    // memory): a caller's own `length` getter on the array is never run, and nothing is copied
-    // twice (a defensive `new Float64Array(value)` cost more than the screws it carried).
-    if ArrayBuffer::is_view(value) && value.is_instance_of::<Float64Array>() {
-        let unreadable = |e: JsValue| Error::Parse {
+    let list = NumberList::from_js(value, at, max)?;
+    list.read(0..list.len(), out)
+}
+
+/// A list of numbers from JavaScript, a `Float64Array` or an array of numbers (non-numbers
+/// become NaN and are caught by the caller's finiteness checks), for reading in chunks.
+///
+/// A `Float64Array` is copied into wasm memory only chunk by chunk, as the chunks are read, so
+/// that a chunk is still in the cache when it is used: copying whole arrays of thousands of
+/// poses first cost more than the screws computed from them. Its length and elements are read
+/// through internal slots (the intrinsic getters of `%TypedArray%.prototype`, then `set` into
+/// wasm memory), so no user code runs (not even a caller's own `length` getter), and nothing
+/// is copied twice (a defensive `new Float64Array(value)` cost more than the screws it
+/// carried). An array of numbers is read whole, at once: reading it may run user code.
+pub(crate) struct NumberList<'a> {
+    at: &'a str,
+    len: usize,
+    source: NumberSource,
+}
+
+enum NumberSource {
+    /// The buffer and the byte offset of a `Float64Array`.
+    View(JsValue, f64),
+    /// The numbers of a plain array.
+    Read(Vec<f64>),
+}
+
+impl<'a> NumberList<'a> {
+    /// The list of `value` (named `at` in errors), of at most `max` numbers.
+    pub(crate) fn from_js(value: &JsValue, at: &'a str, max: usize) -> Result<Self, Error> {
+        let too_long = |len: usize| Error::OutOfRange {
             at: at.to_string(),
-            message: format!("cannot read the argument: {}", js_message(&e)),
+            value: format!("length {len}"),
+            expected: format!("at most {max} numbers per call"),
         };
-        let len = typed_array_length(value).map_err(unreadable)?;
-        if len > max {
-            return Err(too_long(len as u32));
+        // `ArrayBuffer.isView` reads an internal slot (never user code, false for proxies), so
+        // `instanceof` on a view is safe too.
+        if ArrayBuffer::is_view(value) && value.is_instance_of::<Float64Array>() {
+            let slot = |k| typed_array_slot(value, k).map_err(|e| unreadable(at, &e));
+            let number = |v: JsValue| v.as_f64().unwrap_or(0.0);
+            let len = number(slot(LENGTH)?) as usize;
+            if len > max {
+                return Err(too_long(len));
+            }
+            let source = NumberSource::View(slot(BUFFER)?, number(slot(BYTE_OFFSET)?));
+            return Ok(NumberList { at, len, source });
         }
-        out.resize(len, 0.0);
-        // A detached buffer reads as length 0 and is not touched (`set` would throw on it).
-        if len > 0 {
-            set_from_typed_array(out, value).map_err(unreadable)?;
-        }
-        return Ok(());
-    }
-    let value = plain(value, at)?;
-    if let Some(a) = value.dyn_ref::<Array>() {
+        let value = plain(value, at)?;
+        let Some(a) = value.dyn_ref::<Array>() else {
+            return Err(expected(
+                at,
+                "a Float64Array or an array of numbers",
+                &value,
+            ));
+        };
         if a.length() as usize > max {
-            return Err(too_long(a.length()));
+            return Err(too_long(a.length() as usize));
         }
         // Element by element: `new Float64Array(array)` would throw on a BigInt and turn
         // strings into numbers.
-        out.clear();
-        out.extend(a.iter().map(|v| v.as_f64().unwrap_or(f64::NAN)));
-        Ok(())
-    } else {
-        Err(expected(
+        let numbers: Vec<f64> = a.iter().map(|v| v.as_f64().unwrap_or(f64::NAN)).collect();
+        Ok(NumberList {
             at,
-            "a Float64Array or an array of numbers",
-            &value,
-        ))
+            len: numbers.len(),
+            source: NumberSource::Read(numbers),
+        })
+    }
+
+    /// How many numbers the list has.
+    pub(crate) fn len(&self) -> usize {
+        self.len
+    }
+
+    /// Copies the numbers `range` (within `0..len()`) into `out`, whose length becomes that of
+    /// the range (its earlier contents are overwritten, not cleared first).
+    pub(crate) fn read(&self, range: Range<usize>, out: &mut Vec<f64>) -> Result<(), Error> {
+        match &self.source {
+            NumberSource::Read(numbers) => {
+                out.clear();
+                out.extend_from_slice(&numbers[range]);
+            }
+            NumberSource::View(buffer, byte_offset) => {
+                out.resize(range.len(), 0.0);
+                // A detached buffer reads as length 0 and is not touched (`set` would throw on
+                // it); one detached since (by user code run by a later argument) throws, which
+                // is caught.
+                if !range.is_empty() {
+                    let offset = byte_offset + (range.start * 8) as f64;
+                    Float64View::new(buffer, offset, range.len() as f64)
+                        .and_then(|view| set_from_typed_array(out, &view))
+                        .map_err(|e| unreadable(self.at, &e))?;
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The error of an argument whose reading threw `e`.
+fn unreadable(at: &str, e: &JsValue) -> Error {
+    Error::Parse {
+        at: at.to_string(),
+        message: format!("cannot read the argument: {}", js_message(e)),
     }
 }
 
@@ -264,33 +327,47 @@ extern "C" {
     /// array's elements through internal slots, with a thrown exception returned as `Err`.
     #[wasm_bindgen(catch, js_namespace = ["Float64Array", "prototype", "set"], js_name = call)]
     fn set_from_typed_array(target: &mut [f64], source: &JsValue) -> Result<(), JsValue>;
+
+    /// A `Float64Array` made here as a view of part of another one's buffer.
+    #[wasm_bindgen(js_name = Float64Array)]
+    type Float64View;
+
+    /// `new Float64Array(buffer, byteOffset, length)`, with a thrown exception (a detached
+    /// buffer, a range beyond its end) returned as `Err`.
+    #[wasm_bindgen(catch, constructor, js_class = "Float64Array")]
+    fn new(buffer: &JsValue, byte_offset: f64, length: f64) -> Result<Float64View, JsValue>;
 }
 
+/// The intrinsic getters of typed arrays read by [`typed_array_slot`], in this order.
+const TYPED_ARRAY_SLOTS: [&str; 3] = ["length", "buffer", "byteOffset"];
+const LENGTH: usize = 0;
+const BUFFER: usize = 1;
+const BYTE_OFFSET: usize = 2;
+
 thread_local! {
-    /// The intrinsic `length` getter of typed arrays (on `%TypedArray%.prototype`), looked up
-    /// once.
-    static TYPED_ARRAY_LENGTH: Option<js_sys::Function> = {
+    /// The intrinsic getters [`TYPED_ARRAY_SLOTS`] of typed arrays (on
+    /// `%TypedArray%.prototype`), looked up once.
+    static TYPED_ARRAY_GETTERS: [Option<js_sys::Function>; 3] = {
         let prototype = Object::get_prototype_of(&Float64Array::new_with_length(0));
         let typed_array_prototype = Object::get_prototype_of(&prototype);
-        let descriptor =
-            Object::get_own_property_descriptor(&typed_array_prototype, &"length".into());
-        Reflect::get(&descriptor, &"get".into())
-            .ok()
-            .and_then(|getter| getter.dyn_into().ok())
+        TYPED_ARRAY_SLOTS.map(|name| {
+            let descriptor =
+                Object::get_own_property_descriptor(&typed_array_prototype, &name.into());
+            Reflect::get(&descriptor, &"get".into())
+                .ok()
+                .and_then(|getter| getter.dyn_into().ok())
+        })
     };
 }
 
-/// The length of a typed array `view`, read from its internal slot by the intrinsic getter (not
-/// `view.length`, which may be an own property with a getter that runs user code).
-fn typed_array_length(view: &JsValue) -> Result<usize, JsValue> {
-    let length = TYPED_ARRAY_LENGTH.with(|getter| match getter {
+/// The internal slot [`TYPED_ARRAY_SLOTS`]`[k]` of a typed array `view`, read by the intrinsic
+/// getter (not `view.length` and so on, which may be own properties with getters that run user
+/// code).
+fn typed_array_slot(view: &JsValue, k: usize) -> Result<JsValue, JsValue> {
+    TYPED_ARRAY_GETTERS.with(|getters| match &getters[k] {
         Some(getter) => getter.call0(view),
-        None => Err(JsValue::from_str("typed arrays have no length getter")),
-    })?;
-    length
-        .as_f64()
-        .map(|n| n as usize)
-        .ok_or_else(|| JsValue::from_str("the length is not a number"))
+        None => Err(JsValue::from_str("typed arrays have no such getter")),
+    })
 }
 
 /// A plain-data copy of an object argument (primitives are returned as they are).
@@ -601,18 +678,28 @@ pub(crate) fn poses_from_array(data: &[f64], at: &str) -> Result<Vec<Pose>, Erro
         });
     }
     let mut poses = Vec::with_capacity(data.len() / POSE_STRIDE);
-    for (i, c) in data.chunks_exact(POSE_STRIDE).enumerate() {
-        let (origin, rotation) = ([c[0], c[1], c[2]], [c[3], c[4], c[5], c[6]]);
-        // The valid case inline; `from_wxyz` only to describe what is wrong.
-        let pose = match Pose::from_valid_wxyz(origin, rotation) {
-            Some(pose) => pose,
-            None => {
-                Pose::from_wxyz(origin, rotation).map_err(|e| e.within(&format!("{at}[{i}]")))?
-            }
-        };
+    // The valid poses in one go; `from_wxyz` only to describe what is wrong.
+    while !push_valid_poses(&data[poses.len() * POSE_STRIDE..], &mut poses) {
+        let (i, c) = (poses.len(), &data[poses.len() * POSE_STRIDE..]);
+        let pose = Pose::from_wxyz([c[0], c[1], c[2]], [c[3], c[4], c[5], c[6]])
+            .map_err(|e| e.within(&format!("{at}[{i}]")))?;
         poses.push(pose);
     }
     Ok(poses)
+}
+
+/// Appends the poses of `numbers` (the [`POSE_STRIDE`] layout, a whole number of poses) to
+/// `out`, as [`Pose::from_wxyz`] makes them, up to the first invalid one; returns whether they
+/// were all valid. (Out of line: one copy for every batch of poses from JavaScript.)
+#[inline(never)]
+pub(crate) fn push_valid_poses(numbers: &[f64], out: &mut Vec<Pose>) -> bool {
+    let (before, count) = (out.len(), numbers.len() / POSE_STRIDE);
+    out.extend(
+        numbers
+            .chunks_exact(POSE_STRIDE)
+            .map_while(|c| Pose::from_valid_wxyz([c[0], c[1], c[2]], [c[3], c[4], c[5], c[6]])),
+    );
+    out.len() - before == count
 }
 
 /// Appends one kinematics sample in the [`KINEMATICS_STRIDE`] layout.

@@ -3,12 +3,14 @@
 
 use wasm_bindgen::prelude::*;
 
+use js_sys::Float64Array;
+
 use super::convert::{
-    finite, pose_from_js, pose_to_js, poses_from_fn, poses_from_js_array, poses_to_array,
-    poses_to_matrices, to_js, ScrewInfo,
+    finite, pose_from_js, pose_to_js, poses_from_array, poses_from_fn, poses_from_js_array,
+    poses_to_matrices, push_valid_poses, to_js, write_pose, NumberList, ScrewInfo, POSE_STRIDE,
 };
 use super::motion_api::batch;
-use crate::{Blend, Error, Pose, Screw};
+use crate::{Blend, Error, Pose, Screw, MAX_REFINED_POSES};
 
 /// `screw(a, t, b)`: the pose after the fraction `t` of the screw motion from `a` to `b`
 /// (`t = 0` gives `a`, `t = 1` gives `b`, any real `t` extrapolates).
@@ -48,27 +50,78 @@ pub fn screw_pairs(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] starts: JsValue,
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ends: JsValue,
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: JsValue,
-) -> Result<Vec<f64>, JsError> {
+) -> Result<Float64Array, JsError> {
     let ts = batch(&ts, "ts")?;
-    let starts = poses_from_js_array(&starts, "starts")?;
-    let ends = poses_from_js_array(&ends, "ends")?;
-    if starts.len() != ts.len() || ends.len() != ts.len() {
-        return Err(Error::OutOfRange {
+    let max = MAX_REFINED_POSES * POSE_STRIDE;
+    let starts = NumberList::from_js(&starts, "starts", max)?;
+    let ends = NumberList::from_js(&ends, "ends", max)?;
+    Ok(screw_pairs_of(&starts, &ends, &ts)?)
+}
+
+/// Pairs per chunk of [`screw_pairs_of`]: its numbers and poses stay in the nearest caches (a
+/// chunk takes about 100 KB).
+const PAIRS_PER_CHUNK: usize = 256;
+
+/// `screwPairs` chunk by chunk: each chunk's poses are read, validated, screwed (the batch
+/// route: two screws at a time on SIMD lanes, bit for bit the same as `screw`) and copied into
+/// the result while they are in the cache. Going through whole arrays of poses instead spent
+/// more time on memory traffic than on the screws.
+fn screw_pairs_of(
+    starts: &NumberList,
+    ends: &NumberList,
+    ts: &[f64],
+) -> Result<Float64Array, Error> {
+    let n = ts.len();
+    if starts.len() != n * POSE_STRIDE || ends.len() != n * POSE_STRIDE {
+        return Err(screw_pairs_error(starts, ends, ts));
+    }
+    let out = Float64Array::new_with_length((n * POSE_STRIDE) as u32);
+    let chunk = PAIRS_PER_CHUNK.min(n);
+    let (mut a, mut b) = (Vec::with_capacity(chunk), Vec::with_capacity(chunk));
+    let mut poses = Vec::with_capacity(chunk);
+    let mut numbers = Vec::with_capacity(chunk * POSE_STRIDE);
+    for first in (0..n).step_by(PAIRS_PER_CHUNK) {
+        let last = (first + PAIRS_PER_CHUNK).min(n);
+        let range = first * POSE_STRIDE..last * POSE_STRIDE;
+        for (list, poses) in [(starts, &mut a), (ends, &mut b)] {
+            list.read(range.clone(), &mut numbers)?;
+            poses.clear();
+            if !push_valid_poses(&numbers, poses) {
+                return Err(screw_pairs_error(starts, ends, ts));
+            }
+        }
+        poses.clear();
+        Pose::blends(last - first, |k| (&a[k], ts[first + k], &b[k]), &mut poses);
+        for (slot, pose) in numbers.chunks_exact_mut(POSE_STRIDE).zip(&poses) {
+            write_pose(slot, pose);
+        }
+        out.subarray(range.start as u32, range.end as u32)
+            .copy_from(&numbers);
+    }
+    Ok(out)
+}
+
+/// What is wrong with the arguments of a `screwPairs` call that [`screw_pairs_of`] refused: the
+/// first invalid start pose, else the first invalid end pose, else the counts.
+#[cold]
+fn screw_pairs_error(starts: &NumberList, ends: &NumberList, ts: &[f64]) -> Error {
+    let poses = |list: &NumberList, at: &str| {
+        let mut numbers = Vec::new();
+        list.read(0..list.len(), &mut numbers)?;
+        poses_from_array(&numbers, at).map(|poses| poses.len())
+    };
+    let counts = poses(starts, "starts").and_then(|starts| Ok((starts, poses(ends, "ends")?)));
+    match counts {
+        Err(e) => e,
+        Ok((starts, ends)) => Error::OutOfRange {
             at: "ends".into(),
             value: format!(
-                "{} start poses, {} end poses and {} fractions",
-                starts.len(),
-                ends.len(),
+                "{starts} start poses, {ends} end poses and {} fractions",
                 ts.len()
             ),
             expected: "as many start poses and end poses as fractions".into(),
-        }
-        .into());
+        },
     }
-    // The batch route: two screws at a time on SIMD lanes, bit for bit the same as `screw`.
-    let mut poses = Vec::with_capacity(ts.len());
-    Pose::blends(ts.len(), |k| (&starts[k], ts[k], &ends[k]), &mut poses);
-    Ok(poses_to_array(&poses))
 }
 
 /// The display parameters of the screw from `a` to `b`: its kind (`identity`, `translation`,
