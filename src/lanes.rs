@@ -252,8 +252,9 @@ pub(crate) trait LanesOp {
 
 /// Runs `op` on the widest lanes the processor has: eight ([`crate::lanes_avx512::Avx8`]) where
 /// x86-64 has AVX-512, four ([`crate::lanes_avx::Avx4`]) where it has AVX2 (checked at run
-/// time; `pulp` compiles the code for them and keeps the `unsafe` of calling it on its side), two in a wasm SIMD register ([`crate::lanes_wasm::Wasm2`]) on
-/// wasm32 built with `simd128`, two ([`Lanes<2>`]: SSE2, NEON) everywhere else. Every
+/// time; `pulp` compiles the code for them and keeps the `unsafe` of calling it on its side),
+/// four in two wasm SIMD registers ([`crate::lanes_wasm::Wasm4`]) on wasm32 built with
+/// `simd128`, two ([`Lanes<2>`]: SSE2, NEON) everywhere else. Every
 /// kind of lane computes the same IEEE operations in the same order (no fused multiply-add is
 /// formed), so the results do not depend on the processor.
 #[cfg(lanes)]
@@ -261,7 +262,11 @@ pub(crate) trait LanesOp {
 pub(crate) fn run_widest<Op: LanesOp>(op: Op) -> Op::Output {
     #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
     {
-        op.run(crate::lanes_wasm::Wasm2::zero())
+        if max_width() >= 4 {
+            op.run(crate::lanes_wasm::Wasm4::zero())
+        } else {
+            op.run(crate::lanes_wasm::Wasm2::zero())
+        }
     }
     #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
     {
@@ -306,7 +311,7 @@ pub(crate) fn vectorize<S: pulp::Simd, L: Width<N>, const N: usize, Op: LanesOp>
 
 /// The widest lanes the batches may use: all of them, except inside tests' `with_max_width`, so
 /// that the narrower routes are covered on machines with wider ones.
-#[cfg(all(lanes, target_arch = "x86_64"))]
+#[cfg(lanes)]
 #[inline(always)]
 fn max_width() -> usize {
     #[cfg(test)]
@@ -480,7 +485,6 @@ pub(crate) mod tests {
     }
 
     /// The cap set by [`with_max_width`] on this thread.
-    #[cfg(target_arch = "x86_64")]
     pub(crate) fn max_width() -> usize {
         MAX_WIDTH.with(Cell::get)
     }
@@ -590,6 +594,7 @@ pub(crate) mod tests {
     #[wasm_bindgen_test::wasm_bindgen_test]
     fn wasm_lanes_match_one_lane() {
         lanes_match_one_lane(crate::lanes_wasm::Wasm2::zero());
+        lanes_match_one_lane(crate::lanes_wasm::Wasm4::zero());
     }
 
     #[test]

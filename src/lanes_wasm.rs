@@ -1,4 +1,5 @@
-//! Two `f64` lanes in one WebAssembly SIMD register (`v128`), for modules built with `simd128`.
+//! `f64` lanes in WebAssembly SIMD registers (`v128`), for modules built with `simd128`: two in
+//! one register ([`Wasm2`]), and four in two ([`Wasm4`]), which the batches use.
 //!
 //! Written with explicit instructions for the same reason as `lanes_avx`: the compiler's own
 //! packing of `Lanes` leaves much of the kernel in single-lane code. The `simd128` feature is
@@ -120,6 +121,94 @@ impl Width<2> for Wasm2 {
             f64x2_extract_lane::<0>(self.0)
         } else {
             f64x2_extract_lane::<1>(self.0)
+        }
+    }
+}
+
+/// Four lanes in two `v128`s. The batches run on these rather than on [`Wasm2`]: a screw is a
+/// long chain of dependent operations (square root, division, two polynomials), and two
+/// independent chains side by side keep the processor busy where one leaves it waiting, which
+/// the engines' code generators do not arrange by themselves.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Wasm4(Wasm2, Wasm2);
+
+impl Wasm4 {
+    /// Four zero lanes.
+    #[inline(always)]
+    pub fn zero() -> Wasm4 {
+        Wasm4(Wasm2::zero(), Wasm2::zero())
+    }
+}
+
+macro_rules! wasm4_binary {
+    ($($trait:ident $method:ident),*) => {$(
+        impl $trait for Wasm4 {
+            type Output = Wasm4;
+            #[inline(always)]
+            fn $method(self, o: Wasm4) -> Wasm4 {
+                Wasm4(self.0.$method(o.0), self.1.$method(o.1))
+            }
+        }
+    )*};
+}
+wasm4_binary!(Add add, Sub sub, Mul mul, Div div);
+
+impl Neg for Wasm4 {
+    type Output = Wasm4;
+    #[inline(always)]
+    fn neg(self) -> Wasm4 {
+        Wasm4(-self.0, -self.1)
+    }
+}
+
+impl Real for Wasm4 {
+    #[inline(always)]
+    fn constant(self, v: f64) -> Wasm4 {
+        Wasm4(self.0.constant(v), self.1.constant(v))
+    }
+    #[inline(always)]
+    fn all(self, f: impl Fn(f64) -> bool) -> bool {
+        self.0.all(&f) & self.1.all(&f)
+    }
+    #[inline(always)]
+    fn sqrt(self) -> Wasm4 {
+        Wasm4(self.0.sqrt(), self.1.sqrt())
+    }
+    #[inline(always)]
+    fn min(self, other: Wasm4) -> Wasm4 {
+        Wasm4(self.0.min(other.0), self.1.min(other.1))
+    }
+    #[inline(always)]
+    fn max(self, other: Wasm4) -> Wasm4 {
+        Wasm4(self.0.max(other.0), self.1.max(other.1))
+    }
+    #[inline(always)]
+    fn sign_one(self) -> Wasm4 {
+        Wasm4(self.0.sign_one(), self.1.sign_one())
+    }
+    #[inline(always)]
+    fn gt_step(self, other: Wasm4) -> Wasm4 {
+        Wasm4(self.0.gt_step(other.0), self.1.gt_step(other.1))
+    }
+    #[inline(always)]
+    fn quadrant(rounded: Wasm4, s: Wasm4, c: Wasm4) -> (Wasm4, Wasm4) {
+        let (s0, c0) = Wasm2::quadrant(rounded.0, s.0, c.0);
+        let (s1, c1) = Wasm2::quadrant(rounded.1, s.1, c.1);
+        (Wasm4(s0, s1), Wasm4(c0, c1))
+    }
+}
+
+impl Width<4> for Wasm4 {
+    #[inline(always)]
+    fn gather(self, f: impl Fn(usize) -> f64) -> Wasm4 {
+        Wasm4(self.0.gather(&f), self.1.gather(|k| f(k + 2)))
+    }
+    #[inline(always)]
+    fn lane(self, k: usize) -> f64 {
+        if k < 2 {
+            self.0.lane(k)
+        } else {
+            self.1.lane(k - 2)
         }
     }
 }
