@@ -6,7 +6,8 @@
 #   PACK=0 ./scripts/build-pkg.sh        # pkg/ only
 #   PKG_DIR=/tmp/p ./scripts/build-pkg.sh  # another output directory
 #
-# Steps: cargo build --release for wasm32 without features (so no wgpu), wasm-bindgen
+# Steps: cargo build --profile wasm-release (release, with the dependencies optimised for size:
+# see Cargo.toml) for wasm32 without features (so no wgpu), wasm-bindgen
 # --target web (one .wasm and its ES-module glue, usable from browsers with or without a
 # bundler), wasm-opt -Os from npm's binaryen (Debian's wasm-opt 108 breaks externref modules),
 # then the package files from npm/ with the version taken from Cargo.toml. Needs the wasm32
@@ -26,11 +27,11 @@ have=$(wasm-bindgen --version 2>/dev/null | awk '{print $2}') || true
 [[ $have == "$want" ]] || die "wasm-bindgen $want needed (Cargo.lock), found '${have:-none}': run scripts/setup.sh"
 [[ -x $WASM_OPT ]] || die "$WASM_OPT missing: run npm ci at the repo root (scripts/setup.sh)"
 
-header "cargo build (wasm32, release, no features)"
-timed "cargo build" cargo build --lib --release --no-default-features --target "$WASM_TARGET"
+header "cargo build (wasm32, wasm-release, no features)"
+timed "cargo build" cargo build --lib --profile wasm-release --no-default-features --target "$WASM_TARGET"
 
 # Skip wasm-bindgen and wasm-opt (~20 s) when neither the module nor the packaging changed.
-input=$TARGET_DIR/$WASM_TARGET/release/screwbender.wasm
+input=$TARGET_DIR/$WASM_TARGET/wasm-release/screwbender.wasm
 stamp=$(cat "$input" npm/* scripts/build-pkg.sh Cargo.lock | sha256sum | cut -d' ' -f1)
 if [[ -f $PKG_DIR/.build-stamp && $(cat "$PKG_DIR/.build-stamp") == "$stamp" &&
   -f $PKG_DIR/screwbender_bg.wasm ]]; then
