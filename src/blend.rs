@@ -16,7 +16,9 @@ use crate::screw_batch;
 /// `a` and `t = 1` gives `b`.
 ///
 /// `Span` caches whatever depends only on `(a, b)` (for poses, the screw logarithm), so a rule
-/// that evaluates the same pair at several `t` pays for the logarithm once.
+/// that evaluates the same pair at several `t` pays for the logarithm once. (`'static`: a
+/// subdivision keeps its working buffers on its thread for the next one, whatever their
+/// element type.)
 pub trait Blend: Copy + 'static {
     /// The precomputed interpolant between two elements.
     type Span: Copy;
@@ -80,7 +82,7 @@ pub trait Blend: Copy + 'static {
 }
 
 /// Poses blend by screws. Their batch methods run several screws at a time on SIMD lanes
-/// (`screw_batch`: eight with AVX-512, four with AVX2, two with SSE2, NEON or wasm SIMD) where
+/// (`screw_batch`: eight with AVX-512, four with AVX2 or wasm SIMD, two with SSE2 or NEON) where
 /// that pays: natively, and on wasm32 built with `simd128`. Plain wasm32 has no SIMD, the
 /// interleaved lanes gained nothing there in measurements, and their code would add 6 KB to the
 /// module, so it keeps the one-at-a-time defaults.

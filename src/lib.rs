@@ -65,9 +65,11 @@
 //!
 //! [`Blend::blends`], [`Blend::midpoints`] and [`Blend::sample_cycle`] evaluate batches; for
 //! poses they run independent screws side by side on SIMD lanes: natively eight or four at a
-//! time where x86-64 has AVX-512 or AVX2 (detected at run time) and two elsewhere; on wasm32 two at a time when built
-//! with `simd128` (as this repository's `.cargo/config.toml` builds it), one at a time without.
-//! The results are identical bit for bit to one-at-a-time calls, whatever the processor. Subdivision steps are written as such batches.
+//! time where x86-64 has AVX-512 or AVX2 (detected at run time) and two elsewhere; on wasm32
+//! four at a time (in two SIMD registers) when built with `simd128` (as this repository's
+//! `.cargo/config.toml` builds it), one at a time without. The results are identical bit for
+//! bit to one-at-a-time calls, whatever the processor. Subdivision steps are written as such
+//! batches.
 //!
 //! ## Robustness
 //!

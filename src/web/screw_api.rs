@@ -63,7 +63,7 @@ pub fn screw_pairs(
 const PAIRS_PER_CHUNK: usize = 256;
 
 /// `screwPairs` chunk by chunk: each chunk's poses are read, validated, screwed (the batch
-/// route: two screws at a time on SIMD lanes, bit for bit the same as `screw`) and copied into
+/// route: several screws at a time on SIMD lanes, bit for bit the same as `screw`) and copied into
 /// the result while they are in the cache. Going through whole arrays of poses instead spent
 /// more time on memory traffic than on the screws.
 fn screw_pairs_of(
