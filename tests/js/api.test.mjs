@@ -183,6 +183,44 @@ describe('module', () => {
     assert.throws(() => sb.screwPairs(zero, ends, [0.5, 0.5]), { message: 'starts[0].rotation: zero quaternion' });
   });
 
+  it('screwPairs: batches over many chunks equal one screw at a time, bit for bit', () => {
+    // 1000 pairs cross several of the chunks the module works in; fractions inside and outside
+    // [0, 1], and a few rare pairs (identical poses, a pure translation) among them.
+    const n = 1000;
+    let seed = 5;
+    const random = () => (seed = (seed * 16807) % 2147483647) / 2147483647;
+    const pose = () => {
+      const q = [random() - 0.5, random() - 0.5, random() - 0.5, random() - 0.5];
+      const l = Math.hypot(...q);
+      return [10 * random() - 5, 10 * random() - 5, 10 * random() - 5, ...q.map((v) => v / l)];
+    };
+    const starts = new Float64Array(7 * n);
+    const ends = new Float64Array(7 * n);
+    const ts = new Float64Array(n);
+    for (let k = 0; k < n; k++) {
+      const a = pose();
+      const b = k % 97 === 3 ? a : k % 89 === 5 ? [a[0] + 1, a[1], a[2], ...a.slice(3)] : pose();
+      starts.set(a, 7 * k);
+      ends.set(b, 7 * k);
+      ts[k] = 3 * random() - 1;
+    }
+    const out = sb.screwPairs(starts, ends, ts);
+    assert.equal(out.length, 7 * n);
+    for (let k = 0; k < n; k++) {
+      const one = sb.screw(poseOf(starts, k), ts[k], poseOf(ends, k));
+      assert.deepEqual(Array.from(out.subarray(7 * k, 7 * k + 7)), [...one.origin, ...one.rotation], `pair ${k}`);
+    }
+    // A bad pose in a late chunk is named; a bad start is named before a bad end in an
+    // earlier chunk, as the arguments are read.
+    const badStart = starts.slice();
+    badStart[7 * 900 + 3] = NaN;
+    assert.throws(() => sb.screwPairs(badStart, ends, ts), { message: /^starts\[900\]\.rotation/ });
+    const badEnd = ends.slice();
+    badEnd[7 * 10] = Infinity;
+    assert.throws(() => sb.screwPairs(badStart, badEnd, ts), { message: /^starts\[900\]\.rotation/ });
+    assert.throws(() => sb.screwPairs(starts, badEnd, ts), { message: /^ends\[10\]\.origin/ });
+  });
+
   it('screwInfo: kinds and parameters', () => {
     const o = { origin: [0, 0, 0], rotation: ID };
     assert.deepEqual(sb.screwInfo(o, o), { kind: 'identity', angle: 0, slide: 0 });
