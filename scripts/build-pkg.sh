@@ -28,10 +28,10 @@ have=$(wasm-bindgen --version 2>/dev/null | awk '{print $2}') || true
 [[ -x $WASM_OPT ]] || die "$WASM_OPT missing: run npm ci at the repo root (scripts/setup.sh)"
 
 header "cargo build (wasm32, wasm-release, no features)"
-timed "cargo build" cargo build --lib --profile wasm-release --no-default-features --target "$WASM_TARGET"
+timed "cargo build" cargo build -p screwbender-web --lib --profile wasm-release --target "$WASM_TARGET"
 
 # Skip wasm-bindgen and wasm-opt (~20 s) when neither the module nor the packaging changed.
-input=$TARGET_DIR/$WASM_TARGET/wasm-release/screwbender.wasm
+input=$TARGET_DIR/$WASM_TARGET/wasm-release/screwbender_web.wasm
 stamp=$(cat "$input" npm/* scripts/build-pkg.sh Cargo.lock | sha256sum | cut -d' ' -f1)
 if [[ -f $PKG_DIR/.build-stamp && $(cat "$PKG_DIR/.build-stamp") == "$stamp" &&
   -f $PKG_DIR/screwbender_bg.wasm ]]; then

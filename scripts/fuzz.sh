@@ -46,7 +46,7 @@ seed_corpus() {
     [[ -d fuzz/corpus/$t ]] || need=1
   done
   ((need)) || return 0
-  timed "cargo build --release --bin screwbender (seeds)" cargo build --release --bin screwbender
+  timed "cargo build --release -p screwbender-cli --bin screwbender (seeds)" cargo build --release -p screwbender-cli --bin screwbender
   local bin target_dir work
   target_dir=$(cargo metadata --format-version 1 --no-deps | sed -E 's/.*"target_directory":"([^"]*)".*/\1/')
   bin=$target_dir/release/screwbender

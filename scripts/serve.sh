@@ -17,8 +17,10 @@ cd "$REPO_ROOT"
 
 # Cargo features of the playground build: `render` is the wgpu renderer.
 SERVE_FEATURES=${SERVE_FEATURES-render}
-# The [lib] name in Cargo.toml: the wasm file is <name>.wasm.
-CRATE_LIB=screwbender
+# The web crate and its [lib] name: the wasm file is <name>.wasm; the page imports it as
+# pkg/screwbender.js (wasm-bindgen --out-name).
+WEB_CRATE=screwbender-web
+CRATE_LIB=screwbender_web
 WWW_DIR=www
 
 build() {
@@ -30,12 +32,12 @@ build() {
   header "build: wasm (release${SERVE_FEATURES:+, features $SERVE_FEATURES})"
   local features=() target_dir
   [[ -n $SERVE_FEATURES ]] && features=(--features "$SERVE_FEATURES")
-  timed "cargo build" cargo build --lib --release --target "$WASM_TARGET" "${features[@]}"
+  timed "cargo build" cargo build -p "$WEB_CRATE" --lib --release --target "$WASM_TARGET" "${features[@]}"
 
   # Honour CARGO_TARGET_DIR / build.target-dir: ask cargo where the artifacts are.
   target_dir=$(cargo metadata --format-version 1 --no-deps |
     grep -o '"target_directory":"[^"]*"' | cut -d'"' -f4)
-  timed "wasm-bindgen" wasm-bindgen --target web --out-dir "$WWW_DIR/pkg" \
+  timed "wasm-bindgen" wasm-bindgen --target web --out-dir "$WWW_DIR/pkg" --out-name screwbender \
     "$target_dir/$WASM_TARGET/release/$CRATE_LIB.wasm"
 
   if [[ -d scripts/serve.d ]]; then

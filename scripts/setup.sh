@@ -6,7 +6,7 @@
 #   scripts/setup.sh rust npm         # only some parts: rust wasm-bindgen chromium npm
 #
 # Only package registries (crates.io, Debian, npm) are reachable here: nothing downloads a
-# prebuilt binary or a browser build (see shared/TOOLCHAIN.md).
+# prebuilt binary or a browser build: Chromium comes from Debian, wasm-opt from npm's binaryen.
 set -euo pipefail
 # shellcheck source=scripts/lib.sh
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"

@@ -4,8 +4,9 @@
 #   ./scripts/test.sh              # setup + all stages; fails fast on the first failing stage
 #   SKIP_SETUP=1 ./scripts/test.sh # skip the install checks (fast local reruns)
 #
-# Stages: rustfmt, clippy (native + wasm32, with and without `render`), native tests, doc
-# tests, wasm tests (node, and headless Chromium for tests with
+# Stages: rustfmt, the core crate's dependency check, the import check (no circles, nothing
+# imported from a crate root), clippy (native + wasm32, with and without
+# `render`), native tests, doc tests, wasm tests (node, and headless Chromium for tests with
 # `wasm_bindgen_test_configure!(run_in_browser)`), then scripts/test.d/.
 #
 # scripts/test.d/: every executable `*.sh` there is one more stage, run in sorted (C locale)
@@ -51,13 +52,17 @@ stage() {
 }
 
 stage "rustfmt" cargo fmt --all -- --check
-stage "clippy native (all targets)" cargo clippy --all-targets -- -D warnings
-stage "clippy $WASM_TARGET (lib)" cargo clippy --lib --target "$WASM_TARGET" -- -D warnings
-stage "clippy $WASM_TARGET (lib, features render)" \
-  cargo clippy --lib --target "$WASM_TARGET" --features render -- -D warnings
-stage "native tests (all targets)" cargo test --all-targets
-stage "doc tests" cargo test --doc
-stage "wasm tests (node + headless Chromium)" cargo test --target "$WASM_TARGET" --tests --lib
+stage "core has no web dependencies" ./scripts/check-core-deps.sh
+stage "no import circles" python3 scripts/check-imports.py
+stage "clippy native (all targets)" cargo clippy --workspace --all-targets -- -D warnings
+stage "clippy $WASM_TARGET (core and web libs)" \
+  cargo clippy -p screwbender -p screwbender-web --lib --target "$WASM_TARGET" -- -D warnings
+stage "clippy $WASM_TARGET (web lib, features render)" \
+  cargo clippy -p screwbender-web --lib --target "$WASM_TARGET" --features render -- -D warnings
+stage "native tests (all targets)" cargo test --workspace --all-targets
+stage "doc tests" cargo test --workspace --doc
+stage "wasm tests (node + headless Chromium)" \
+  cargo test --target "$WASM_TARGET" -p screwbender -p screwbender-web --tests --lib
 
 # Extra stages from other parts of the project (JS package, node tests, Playwright e2e).
 if [[ -d scripts/test.d ]]; then

@@ -26,10 +26,7 @@ fuzz_target!(|data: &[u8]| {
                 if calls == 1 {
                     Ok(data.to_vec())
                 } else {
-                    Err(Error::Parse {
-                        at: "buffers".into(),
-                        message: "not found".into(),
-                    })
+                    Err(Error::new("buffers".into(), ErrorKind::Parse { message: "not found".into() }))
                 }
             };
             import_gltf(data, &mut resolve, selection)

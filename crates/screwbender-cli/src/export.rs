@@ -1,0 +1,155 @@
+//! `screwbender export --format glb|gltf|csv …`: the motion of a document as a glTF 2.0 asset
+//! (the object's mesh animated by adaptive or fixed-rate keyframes, plus the control poses) or as
+//! CSV samples / a body-point trajectory.
+
+use std::path::{Path, PathBuf};
+
+use glam::DVec3;
+use screwbender::mesh::Mesh;
+use screwbender::{
+    export_motion, scenes, ExportFormat, ExportSettings, SamplingMode, DEFAULT_TOLERANCE,
+};
+
+use crate::args::{number, numbers, ArgReader, SubdivisionArgs};
+use crate::failure::Failure;
+use crate::input::read_document;
+
+/// Parsed `export` options.
+#[derive(Default)]
+struct ExportOptions {
+    format: Option<ExportFormat>,
+    tolerance: Option<f64>,
+    fps: Option<f64>,
+    times: Option<Vec<f64>>,
+    point: Option<DVec3>,
+    sub: SubdivisionArgs,
+    control_nodes: bool,
+    verbose: bool,
+    file: Option<String>,
+    output: Option<String>,
+}
+
+fn parse(args: &[String]) -> Result<ExportOptions, Failure> {
+    let mut o = ExportOptions::default();
+    let mut r = ArgReader::new(args);
+    while let Some(arg) = r.next_arg() {
+        if o.sub.take(arg, &mut r)? {
+            continue;
+        }
+        match arg {
+            "--format" => o.format = Some(ExportFormat::parse(&r.value(arg)?, "--format")?),
+            "--tolerance" => o.tolerance = Some(number(arg, &r.value(arg)?)?),
+            "--fps" => o.fps = Some(number(arg, &r.value(arg)?)?),
+            "--times" => o.times = Some(numbers(arg, &r.value(arg)?)?),
+            "--point" => {
+                let v = numbers(arg, &r.value(arg)?)?;
+                let [x, y, z] = v[..] else {
+                    return Err(Failure(format!(
+                        "--point: {} number(s) given, expected x,y,z",
+                        v.len()
+                    )));
+                };
+                o.point = Some(DVec3::new(x, y, z));
+            }
+            "--control-nodes" => o.control_nodes = true,
+            "--verbose" | "-v" => o.verbose = true,
+            "-o" | "--output" => o.output = Some(r.value("-o")?),
+            other => r.positional(other)?,
+        }
+    }
+    o.sub.subdivision(5)?;
+    o.file = r.file;
+    if o.tolerance.is_some() && o.fps.is_some() {
+        return Err(Failure(
+            "give either --tolerance (adaptive sampling) or --fps (fixed rate), not both".into(),
+        ));
+    }
+    Ok(o)
+}
+
+/// The `.gltf` + `.bin` pair for `OUT`: a `.gltf`/`.glb`/`.bin` extension of `OUT` is replaced,
+/// anything else is kept (`out.v2` gives `out.v2.gltf` + `out.v2.bin`).
+fn gltf_paths(out: &str) -> (PathBuf, PathBuf) {
+    let stem = [".gltf", ".glb", ".bin"]
+        .iter()
+        .find_map(|ext| out.strip_suffix(ext))
+        .unwrap_or(out);
+    (
+        PathBuf::from(format!("{stem}.gltf")),
+        PathBuf::from(format!("{stem}.bin")),
+    )
+}
+
+fn write(path: &Path, data: &[u8]) -> Result<(), Failure> {
+    std::fs::write(path, data).map_err(|e| Failure(format!("{}: {e}", path.display())))
+}
+
+/// Runs `screwbender export`; returns what goes to standard output (CSV without `-o`).
+pub fn export(args: &[String]) -> Result<String, Failure> {
+    let o = parse(args)?;
+    let format = o
+        .format
+        .ok_or_else(|| Failure("export needs --format glb|gltf|csv".into()))?;
+    if format != ExportFormat::Csv && o.output.is_none() {
+        return Err(Failure("export --format glb|gltf needs -o OUT".into()));
+    }
+    let mut doc = read_document(o.file.as_deref())?;
+    doc.closed = doc.closed && !o.sub.open;
+    let sub = o.sub.subdivision(5)?;
+    let mesh = doc
+        .name
+        .as_deref()
+        .and_then(scenes::scene)
+        .map(|sc| Mesh::from_shape(&sc.shape));
+    let out = o.output.as_deref();
+    let (gltf_path, bin_path) = gltf_paths(out.unwrap_or("motion"));
+    let bin_name = bin_path
+        .file_name()
+        .and_then(|f| f.to_str())
+        .ok_or_else(|| Failure(format!("{}: not a valid file name", bin_path.display())))?
+        .to_string();
+    let sampling = match o.fps {
+        Some(fps) => SamplingMode::FixedRate(fps),
+        None => SamplingMode::Adaptive(o.tolerance.unwrap_or(DEFAULT_TOLERANCE)),
+    };
+    let exported = export_motion(
+        &doc,
+        sub,
+        &ExportSettings {
+            format,
+            sampling,
+            times: o.times.clone(),
+            point: o.point,
+            control_nodes: o.control_nodes,
+            mesh: mesh.as_ref(),
+            bin_name: &bin_name,
+        },
+    )?;
+    let mut stdout = String::new();
+    let written = match (format, out) {
+        (ExportFormat::Gltf, _) => {
+            write(&gltf_path, &exported.data)?;
+            write(&bin_path, exported.bin.as_deref().unwrap_or_default())?;
+            format!("{} + {}", gltf_path.display(), bin_path.display())
+        }
+        (_, Some(out)) => {
+            write(Path::new(out), &exported.data)?;
+            out.to_string()
+        }
+        (_, None) => {
+            stdout = String::from_utf8(exported.data).expect("CSV is UTF-8");
+            "standard output".into()
+        }
+    };
+    if o.verbose {
+        let sampling = match sampling {
+            SamplingMode::FixedRate(fps) => format!("{fps} fps"),
+            SamplingMode::Adaptive(t) => format!("tolerance {t:e}"),
+        };
+        eprintln!(
+            "screwbender: export: {} samples ({sampling}, {}) -> {written}",
+            exported.sample_count, exported.motion_name
+        );
+    }
+    Ok(stdout)
+}

@@ -1,0 +1,114 @@
+//! `screwbender import FILE.glb|.gltf|.csv|.json [--node NAME | --nodes A,B,…] [-o motion.json]`:
+//! control poses from a glTF asset, a CSV file or a motion document, as a JSON motion document.
+
+use std::path::Path;
+
+use screwbender::{import_motion_file, Error, ErrorKind, NodeSelection, MAX_GLTF_BYTES};
+
+use crate::args::ArgReader;
+use crate::failure::Failure;
+
+/// Reads a file of at most [`MAX_GLTF_BYTES`] (checked before reading).
+fn read_limited(path: &Path) -> Result<Vec<u8>, Failure> {
+    let shown = path.display();
+    let meta = std::fs::metadata(path).map_err(|e| Failure(format!("{shown}: {e}")))?;
+    if meta.len() > MAX_GLTF_BYTES as u64 {
+        return Err(Failure(format!(
+            "{shown}: {} bytes is larger than the limit of {MAX_GLTF_BYTES} bytes",
+            meta.len()
+        )));
+    }
+    std::fs::read(path).map_err(|e| Failure(format!("{shown}: {e}")))
+}
+
+/// Decodes `%XX` escapes of a relative URI into a file name.
+fn uri_to_path(uri: &str) -> Result<String, Error> {
+    let bytes = uri.as_bytes();
+    let mut out = Vec::with_capacity(bytes.len());
+    let mut i = 0;
+    while i < bytes.len() {
+        if bytes[i] == b'%' {
+            let hex = uri
+                .get(i + 1..i + 3)
+                .and_then(|h| u8::from_str_radix(h, 16).ok())
+                .ok_or_else(|| {
+                    Error::new(
+                        "uri",
+                        ErrorKind::Parse {
+                            message: format!("bad percent escape in '{uri}'"),
+                        },
+                    )
+                })?;
+            out.push(hex);
+            i += 3;
+        } else {
+            out.push(bytes[i]);
+            i += 1;
+        }
+    }
+    String::from_utf8(out).map_err(|_| {
+        Error::new(
+            "uri",
+            ErrorKind::Parse {
+                message: format!("'{uri}' is not UTF-8"),
+            },
+        )
+    })
+}
+
+/// Runs `screwbender import`; returns the document for standard output (empty with `-o`).
+pub fn import(args: &[String]) -> Result<String, Failure> {
+    let mut output = None;
+    let mut selection = NodeSelection::Auto;
+    let mut open = false;
+    let mut verbose = false;
+    let mut r = ArgReader::new(args);
+    while let Some(arg) = r.next_arg() {
+        match arg {
+            "--node" => selection = NodeSelection::Animated(r.value(arg)?),
+            "--nodes" => {
+                selection = NodeSelection::Transforms(
+                    r.value(arg)?
+                        .split(',')
+                        .map(|s| s.trim().to_string())
+                        .collect(),
+                )
+            }
+            "--open" => open = true,
+            "--verbose" | "-v" => verbose = true,
+            "-o" | "--output" => output = Some(r.value("-o")?),
+            other => r.positional(other)?,
+        }
+    }
+    let file = r.file;
+    let file = file.ok_or_else(|| Failure("import needs a FILE (.glb, .gltf or .csv)".into()))?;
+    let path = Path::new(&file);
+    let bytes = read_limited(path)?;
+    let dir = path.parent().unwrap_or(Path::new("."));
+    let mut resolve = |uri: &str| -> Result<Vec<u8>, Error> {
+        let name = uri_to_path(uri)?;
+        read_limited(&dir.join(name))
+            .map_err(|Failure(message)| Error::new(String::new(), ErrorKind::Parse { message }))
+    };
+    let name = path.file_name().and_then(|f| f.to_str()).unwrap_or(&file);
+    let result = import_motion_file(name, &bytes, &mut resolve, &selection);
+    let mut doc = result.map_err(|e| Failure(format!("{file}: {e}")))?;
+    if open {
+        doc.closed = false;
+    }
+    if verbose {
+        eprintln!(
+            "screwbender: import: {} control poses ({}) from {file}",
+            doc.poses.len(),
+            if doc.closed { "cycle" } else { "open" }
+        );
+    }
+    let text = doc.to_json();
+    match output {
+        Some(out) => {
+            std::fs::write(&out, text).map_err(|e| Failure(format!("{out}: {e}")))?;
+            Ok(String::new())
+        }
+        None => Ok(text),
+    }
+}

@@ -1,0 +1,35 @@
+//! Reading the motion document a command works on, from a file or standard input.
+
+use std::io::Read;
+
+use screwbender::MotionDocument;
+
+use crate::failure::Failure;
+
+/// The motion document in `file` (`None` or `-`: standard input), validated; failures name the
+/// file (or standard input) and the bad element.
+pub fn read_document(file: Option<&str>) -> Result<MotionDocument, Failure> {
+    let (name, text) = match file {
+        None | Some("-") => {
+            let mut text = String::new();
+            std::io::stdin()
+                .read_to_string(&mut text)
+                .map_err(|e| Failure(format!("standard input: {e}")))?;
+            ("standard input".to_string(), text)
+        }
+        Some(path) => {
+            let meta = std::fs::metadata(path).map_err(|e| Failure(format!("{path}: {e}")))?;
+            if meta.len() > screwbender::MAX_DOCUMENT_BYTES as u64 {
+                return Err(Failure(format!(
+                    "{path}: {} bytes is larger than the limit of {} bytes",
+                    meta.len(),
+                    screwbender::MAX_DOCUMENT_BYTES
+                )));
+            }
+            let text =
+                std::fs::read_to_string(path).map_err(|e| Failure(format!("{path}: {e}")))?;
+            (path.to_string(), text)
+        }
+    };
+    MotionDocument::from_json(&text).map_err(|e| Failure(format!("{name}: {e}")))
+}

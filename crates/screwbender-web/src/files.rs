@@ -1,0 +1,309 @@
+//! File export and import for JavaScript: `motion.exportFile(settings)` writes the motion as
+//! glTF 2.0 (`.glb`, or `.gltf` + `.bin`) or CSV, exactly like `screwbender export`, and
+//! `importMotionFile(name, bytes)` reads control poses from a `.glb`, `.gltf`, `.csv` or `.json`
+//! file, exactly like `screwbender import` (both call [`screwbender::export_motion`] and
+//! [`screwbender::import_motion_file`]).
+
+use std::collections::HashMap;
+
+use glam::DVec3;
+use js_sys::{Object, Reflect, Uint8Array};
+use serde::Deserialize;
+use wasm_bindgen::prelude::*;
+
+use super::convert::{
+    bytes, check_keys, check_object, document_to_js, from_js, is_absent, plain, string,
+};
+use super::MotionHandle;
+use screwbender::mesh::Mesh;
+use screwbender::{
+    export_motion, import_motion_file, Error, ErrorKind, ExportFormat, ExportSettings,
+    NodeSelection, SamplingMode, DEFAULT_TOLERANCE, MAX_GLTF_BYTES,
+};
+
+#[wasm_bindgen(typescript_custom_section)]
+const TS_INTEROP: &'static str = r#"
+/** What `Motion.exportFile` writes. */
+export interface ExportSettings {
+  /** `glb` (one file), `gltf` (JSON + `.bin` buffer) or `csv` (sampled poses or a trajectory). */
+  format: 'glb' | 'gltf' | 'csv';
+  /** Adaptive sampling: the largest distance between the keyframe interpolation and the true motion (default 1e-4). */
+  tolerance?: number;
+  /** Fixed-rate sampling instead (frames per second); not with `tolerance`. */
+  fps?: number;
+  /** Control-pose times in seconds (n for an open motion, n + 1 for a cycle); default 1 s per span. */
+  times?: number[];
+  /** CSV only: the trajectory of this body point (local coordinates) instead of the poses. */
+  point?: Vec3;
+  /** glTF only: also one empty node per control pose. */
+  controlNodes?: boolean;
+  /** glTF only: the object's mesh by name (`bar`, `block`, …, `scene:<id>`); default: the preset's object if the document is named after a preset, else a placeholder box. */
+  object?: string;
+  /** glTF only: an imported mesh (OBJ text or glTF/GLB bytes), scaled to fit a cube of side `size`. */
+  mesh?: { kind: 'obj' | 'gltf'; data: string | Uint8Array; size: number };
+  /** File name without extension (default: the document's name, else `motion`). */
+  name?: string;
+}
+
+/** The result of `Motion.exportFile`. */
+export interface ExportedFile {
+  /** Suggested file name (`<name>.glb`, `.gltf` or `.csv`). */
+  fileName: string;
+  /** MIME type of `data`. */
+  mimeType: string;
+  /** The file's bytes. */
+  data: Uint8Array;
+  /** `.gltf` only: the buffer file's name and bytes (the JSON refers to it by this name). */
+  binName?: string;
+  bin?: Uint8Array;
+  /** Keyframes (glTF) or rows (CSV) written. */
+  sampleCount: number;
+  /** The sampled motion, e.g. `screwbender 4-point ×5 (direct)`. */
+  motionName: string;
+}
+"#;
+
+/// `Motion.exportFile` settings (see the TypeScript `ExportSettings`).
+#[derive(Deserialize)]
+#[serde(rename_all = "camelCase")]
+struct ExportInput {
+    format: String,
+    tolerance: Option<f64>,
+    fps: Option<f64>,
+    times: Option<Vec<f64>>,
+    point: Option<[f64; 3]>,
+    control_nodes: Option<bool>,
+    object: Option<String>,
+    name: Option<String>,
+}
+
+/// Reads the optional `mesh` entry: `{kind: 'obj' | 'gltf', data, size}`.
+fn mesh_input(settings: &JsValue) -> Result<Option<Mesh>, Error> {
+    let value = Reflect::get(settings, &JsValue::from_str("mesh")).unwrap_or(JsValue::UNDEFINED);
+    if is_absent(&value) {
+        return Ok(None);
+    }
+    check_object(&value, "mesh", "mesh", "{kind, data, size}")?;
+    let field = |k: &str| Reflect::get(&value, &JsValue::from_str(k)).unwrap_or(JsValue::UNDEFINED);
+    let kind = string(&field("kind"), "mesh.kind")?;
+    let size = field("size")
+        .as_f64()
+        .filter(|s| s.is_finite() && *s > 0.0)
+        .ok_or_else(|| {
+            Error::new(
+                "mesh.size",
+                ErrorKind::OutOfRange {
+                    value: format!("{:?}", field("size")),
+                    expected: "a positive number".into(),
+                },
+            )
+        })?;
+    let data = bytes(&field("data"), "mesh.data", MAX_GLTF_BYTES)?;
+    let mesh = match kind.as_str() {
+        "obj" => {
+            let text = std::str::from_utf8(&data).map_err(|e| {
+                Error::new(
+                    "mesh.data",
+                    ErrorKind::Parse {
+                        message: format!("OBJ is not UTF-8 text: {e}"),
+                    },
+                )
+            })?;
+            Mesh::from_obj(text)
+        }
+        "gltf" => Mesh::from_gltf(&data),
+        other => {
+            return Err(Error::new(
+                "mesh.kind",
+                ErrorKind::UnknownValue {
+                    value: other.into(),
+                    expected: "obj, gltf",
+                },
+            ))
+        }
+    }
+    .map_err(|e| e.within("mesh"))?;
+    Ok(Some(mesh.normalized(size)))
+}
+
+fn set(obj: &Object, key: &str, value: JsValue) {
+    // Defining a property on a fresh plain object cannot fail.
+    let _ = Reflect::set(obj, &JsValue::from_str(key), &value);
+}
+
+#[wasm_bindgen(js_class = Motion)]
+impl MotionHandle {
+    /// Writes the motion (its document and subdivision options) as a file, like
+    /// `screwbender export`: glTF 2.0 with the object animated by adaptive keyframes (or a
+    /// fixed rate), or CSV samples / a body-point trajectory. Throws on bad settings (the
+    /// message names the setting); the motion is never changed.
+    #[wasm_bindgen(js_name = exportFile, unchecked_return_type = "ExportedFile")]
+    pub fn export_file(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "ExportSettings")] settings: JsValue,
+    ) -> Result<JsValue, JsError> {
+        let settings = plain(&settings, "settings")?;
+        check_object(&settings, "settings", "export settings", "{format, …}")?;
+        check_keys(
+            &settings,
+            &[
+                "format",
+                "tolerance",
+                "fps",
+                "times",
+                "point",
+                "controlNodes",
+                "object",
+                "mesh",
+                "name",
+            ],
+            "settings",
+            "export settings",
+        )?;
+        let input: ExportInput = from_js(&settings, "settings", "export settings")?;
+        let format = ExportFormat::parse(&input.format, "format")?;
+        let sampling = match (input.tolerance, input.fps) {
+            (Some(_), Some(_)) => return Err(Error::new(
+                "fps",
+                ErrorKind::Unsupported {
+                    reason:
+                        "give either tolerance (adaptive sampling) or fps (fixed rate), not both"
+                            .into(),
+                },
+            )
+            .into()),
+            (_, Some(fps)) => SamplingMode::FixedRate(fps),
+            (t, None) => SamplingMode::Adaptive(t.unwrap_or(DEFAULT_TOLERANCE)),
+        };
+        let imported = mesh_input(&settings)?;
+        let (doc, sub) = self.snapshot()?;
+        let named = match (&input.object, &doc.name) {
+            (Some(name), _) => Some(Mesh::named(name).map_err(|e| e.within("object"))?),
+            (None, Some(name)) => {
+                screwbender::scenes::scene(name).map(|s| Mesh::from_shape(&s.shape))
+            }
+            (None, None) => None,
+        };
+        if imported.is_some() && input.object.is_some() {
+            return Err(Error::new(
+                "mesh",
+                ErrorKind::Unsupported {
+                    reason: "give either object (a named mesh) or mesh (an imported one), not both"
+                        .into(),
+                },
+            )
+            .into());
+        }
+        let base = input
+            .name
+            .clone()
+            .or_else(|| doc.name.clone())
+            .unwrap_or_else(|| "motion".into());
+        let bin_name = format!("{base}.bin");
+        let exported = export_motion(
+            &doc,
+            sub,
+            &ExportSettings {
+                format,
+                sampling,
+                times: input.times,
+                point: input.point.map(DVec3::from_array),
+                control_nodes: input.control_nodes.unwrap_or(false),
+                mesh: imported.as_ref().or(named.as_ref()),
+                bin_name: &bin_name,
+            },
+        )?;
+        let (ext, mime) = match format {
+            ExportFormat::Glb => ("glb", "model/gltf-binary"),
+            ExportFormat::Gltf => ("gltf", "model/gltf+json"),
+            ExportFormat::Csv => ("csv", "text/csv"),
+        };
+        let out = Object::new();
+        set(&out, "fileName", format!("{base}.{ext}").into());
+        set(&out, "mimeType", mime.into());
+        set(&out, "data", Uint8Array::from(&exported.data[..]).into());
+        if let Some(bin) = &exported.bin {
+            set(&out, "binName", bin_name.into());
+            set(&out, "bin", Uint8Array::from(&bin[..]).into());
+        }
+        set(&out, "sampleCount", (exported.sample_count as f64).into());
+        set(&out, "motionName", exported.motion_name.into());
+        Ok(out.into())
+    }
+}
+
+/// Reads control poses from a file, like `screwbender import`: a `.glb` / `.gltf` (the keyframes
+/// of the control-pose node, else of the first animated node; or, with `nodes`, the transforms
+/// of those nodes in that order), a CSV (`x,y,z,qw,qx,qy,qz` per line, header optional) or a
+/// JSON motion document. `bytes` is the file's `Uint8Array` (or its text); `buffers` maps the
+/// URIs a `.gltf` names to their bytes (files dropped together). Throws an `Error` starting
+/// with the file name and naming the line, column or accessor at fault.
+#[wasm_bindgen(js_name = importMotionFile, unchecked_return_type = "MotionDocument")]
+pub fn import_motion_file_js(
+    #[wasm_bindgen(js_name = fileName, unchecked_param_type = "string")] file_name: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Uint8Array | string")] data: JsValue,
+    #[wasm_bindgen(unchecked_optional_param_type = "Record<string, Uint8Array>")] buffers: JsValue,
+    #[wasm_bindgen(unchecked_optional_param_type = "string | string[]")] nodes: JsValue,
+) -> Result<JsValue, JsError> {
+    let name = string(&file_name, "fileName")?;
+    let prefix = |e: Error| JsError::new(&format!("{name}: {e}"));
+    let content = bytes(&data, "data", MAX_GLTF_BYTES).map_err(prefix)?;
+    let mut files: HashMap<String, Vec<u8>> = HashMap::new();
+    if !is_absent(&buffers) {
+        check_object(&buffers, "buffers", "buffers", "{uri: Uint8Array}").map_err(prefix)?;
+        let obj: &Object = buffers.unchecked_ref();
+        let mut total = content.len();
+        for key in Object::keys(obj).iter() {
+            let key = key.as_string().unwrap_or_default();
+            let at = format!("buffers[{key:?}]");
+            let value = Reflect::get(obj, &JsValue::from_str(&key)).unwrap_or(JsValue::UNDEFINED);
+            let b = bytes(&value, &at, MAX_GLTF_BYTES).map_err(prefix)?;
+            total += b.len();
+            if total > MAX_GLTF_BYTES {
+                return Err(prefix(Error::new(
+                    "buffers",
+                    ErrorKind::OutOfRange {
+                        value: format!("{total} bytes in all"),
+                        expected: format!("at most {MAX_GLTF_BYTES} bytes"),
+                    },
+                )));
+            }
+            files.insert(key, b);
+        }
+    }
+    let selection = if is_absent(&nodes) {
+        NodeSelection::Auto
+    } else if let Some(node) = nodes.as_string() {
+        NodeSelection::Animated(node)
+    } else {
+        let list = plain(&nodes, "nodes").map_err(prefix)?;
+        let arr = list.dyn_ref::<js_sys::Array>().ok_or_else(|| {
+            prefix(Error::new(
+                "nodes",
+                ErrorKind::Parse {
+                    message: "expected a node name or an array of node names".into(),
+                },
+            ))
+        })?;
+        let names: Result<Vec<String>, Error> = arr
+            .iter()
+            .enumerate()
+            .map(|(i, v)| string(&v, &format!("nodes[{i}]")))
+            .collect();
+        NodeSelection::Transforms(names.map_err(prefix)?)
+    };
+    let mut resolve = |uri: &str| -> Result<Vec<u8>, Error> {
+        files.get(uri).cloned().ok_or_else(|| {
+            Error::new(
+                "buffers",
+                ErrorKind::Unsupported {
+                    reason: format!(
+                        "the glTF refers to the file '{uri}': drop it together with the .gltf file"
+                    ),
+                },
+            )
+        })
+    };
+    let doc = import_motion_file(&name, &content, &mut resolve, &selection).map_err(prefix)?;
+    document_to_js(&doc)
+}

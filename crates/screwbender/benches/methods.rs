@@ -1,0 +1,135 @@
+//! Benchmarks of the comparison methods: the Ramamoorthi–Barr construction on scene C1
+//! `rb_sphere7` (7 keyframes, zero end velocities, α = 1000, S = 5) up to 4 variable frames, the
+//! Chaudhry–Cameron fits of scene B1 `triangle7`, evaluation of each peer, and the whole metrics
+//! table on scene A2 `l_cycle_rotated`.
+//!
+//! Run: `cargo bench --bench methods`. Inputs are fixed (scene data); nothing is random.
+//! Native only: criterion is not a wasm32 dependency, so on wasm32 this is an empty program.
+
+#[cfg(not(target_arch = "wasm32"))]
+mod native {
+    use std::hint::black_box;
+
+    use criterion::{criterion_group, Criterion};
+    use glam::{DQuat, DVec3};
+    use screwbender::methods::{
+        compare_methods, fit_quaternion_spline, Continuity, EndCondition, Method, MetricsOptions,
+        RationalMotion, RbOptions, ReferenceTriangle, TriangleSample,
+    };
+    use screwbender::{Motion, Pose};
+
+    /// Scene C1's keyframes (`scenes.md`), pose `i` at `t = i`.
+    fn sphere7() -> (Vec<f64>, Vec<DQuat>) {
+        let scene = screwbender::scenes::scene("rb_sphere7").expect("scene C1");
+        let q: Vec<DQuat> = scene.poses.iter().map(|p| p.rotation).collect();
+        ((0..q.len()).map(|i| i as f64).collect(), q)
+    }
+
+    fn sphere7_options(frames: usize) -> RbOptions {
+        RbOptions {
+            omega_start: Some(DVec3::ZERO),
+            omega_end: Some(DVec3::ZERO),
+            variable_frames: frames,
+            min_relative_decrease: 0.0,
+            ..RbOptions::default()
+        }
+    }
+
+    fn triangle7() -> Vec<TriangleSample> {
+        (0..7)
+            .map(|i| {
+                let t = 0.2 * i as f64;
+                let axis = DVec3::new((2.0 * t).sin(), 0.5, t.cos()).normalize();
+                let a = DVec3::new(2.0 * t, 0.8 * (3.0 * t).sin(), 0.5 * t * t);
+                let pose = Pose::new(a, DQuat::from_axis_angle(axis, 2.2 * t));
+                TriangleSample::from_pose(t, &pose, &ReferenceTriangle::SCENE_B1)
+            })
+            .collect()
+    }
+
+    fn l_cycle_rotated() -> Vec<Pose> {
+        screwbender::scenes::scene("l_cycle_rotated")
+            .expect("preset A2 exists")
+            .poses
+    }
+
+    /// Evaluates 1000 poses `step` apart and sums their origins (so none is optimised away).
+    fn sum_origins(m: &dyn Motion, step: f64) -> DVec3 {
+        (0..1000).fold(DVec3::ZERO, |acc, i| {
+            acc + black_box(m.pose_at(i as f64 * step)).origin
+        })
+    }
+
+    fn ramamoorthi_barr(c: &mut Criterion) {
+        let (t, k) = sphere7();
+        let mut g = c.benchmark_group("ramamoorthi-barr rb_sphere7");
+        g.sample_size(20);
+        g.bench_function("keyframe velocities only", |b| {
+            b.iter(|| {
+                fit_quaternion_spline(black_box(&t), black_box(&k), false, &sphere7_options(0))
+            })
+        });
+        g.bench_function("+4 variable frames (incremental)", |b| {
+            b.iter(|| {
+                fit_quaternion_spline(black_box(&t), black_box(&k), false, &sphere7_options(4))
+            })
+        });
+        g.finish();
+    }
+
+    fn chaudhry_cameron(c: &mut Criterion) {
+        let s = triangle7();
+        let mut g = c.benchmark_group("chaudhry-cameron triangle7");
+        for (name, cont) in [
+            ("fit C0", Continuity::C0),
+            (
+                "fit C1 (18)",
+                Continuity::C1(EndCondition::ZeroCurvatureStart),
+            ),
+        ] {
+            g.bench_function(name, |b| {
+                b.iter(|| RationalMotion::fit(black_box(&s), cont))
+            });
+        }
+        let m = RationalMotion::fit(&s, Continuity::C1(EndCondition::ZeroCurvatureStart)).unwrap();
+        g.bench_function("1000 poses C1", |b| b.iter(|| sum_origins(&m, 1.2e-3)));
+        g.finish();
+    }
+
+    fn peers(c: &mut Criterion) {
+        let poses = l_cycle_rotated();
+        let mut g = c.benchmark_group("1000 poses on l_cycle_rotated");
+        for m in [
+            Method::Slerp,
+            Method::Decoupled,
+            Method::Kks,
+            Method::Rb,
+            Method::Cc0,
+        ] {
+            let motion = m.build(&poses, true).unwrap();
+            g.bench_function(m.name(), |b| b.iter(|| sum_origins(motion.as_ref(), 6e-3)));
+        }
+        g.finish();
+        let mut g = c.benchmark_group("metrics");
+        g.sample_size(10);
+        g.bench_function("table, all methods, l_cycle_rotated", |b| {
+            b.iter(|| {
+                compare_methods(
+                    black_box(&poses),
+                    true,
+                    &Method::applicable(true),
+                    &MetricsOptions::default(),
+                )
+            })
+        });
+        g.finish();
+    }
+
+    criterion_group!(benches, ramamoorthi_barr, chaudhry_cameron, peers);
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+criterion::criterion_main!(native::benches);
+
+#[cfg(target_arch = "wasm32")]
+fn main() {}

@@ -1,0 +1,185 @@
+//! CSV for plotting tools and spreadsheets: control poses in, sampled poses and body-point
+//! trajectories out.
+//!
+//! Input ([`parse_csv_poses`]): one pose per line, `x,y,z,qw,qx,qy,qz` (quaternion scalar first),
+//! `#` starts a comment, blank lines are skipped. An optional header line names the columns; with
+//! a header the columns may come in any order and extra columns (such as `t,u` of
+//! [`poses_csv`]'s output) are ignored, so exported samples read back. A last pose repeating the
+//! first (within [`crate::REPEAT_TOLERANCE`]) marks a cycle and is dropped. Errors name the line
+//! (`line 3`) and column.
+
+use glam::DVec3;
+
+use crate::error::{Error, ErrorKind};
+use crate::formats::document::MotionDocument;
+use crate::formats::keyframes::{last_repeats_first, MAX_KEYFRAME_FILE_BYTES};
+use crate::formats::sampling::Sample;
+use crate::pose::Pose;
+
+/// Largest CSV text accepted by [`parse_csv_poses`], in bytes (the glTF limit, 64 MiB).
+pub const MAX_CSV_BYTES: usize = MAX_KEYFRAME_FILE_BYTES;
+
+/// The pose columns, in the headerless order.
+pub const POSE_COLUMNS: [&str; 7] = ["x", "y", "z", "qw", "qx", "qy", "qz"];
+
+/// Parses control poses from CSV text (see the module docs).
+///
+/// Errors: text over [`MAX_CSV_BYTES`] (`csv`); a missing column, text in a number field, a
+/// header without one of the pose columns ([`Error::Parse`] at `line N`); NaN or infinity
+/// ([`Error::NonFinite`] at `line N, column qw`); a bad quaternion (`line N.rotation: zero quaternion`);
+/// fewer than 2 poses.
+pub fn parse_csv_poses(text: &str) -> Result<MotionDocument, Error> {
+    if text.len() > MAX_CSV_BYTES {
+        return Err(Error::new(
+            "csv",
+            ErrorKind::OutOfRange {
+                value: format!("{} bytes", text.len()),
+                expected: format!("at most {MAX_CSV_BYTES} bytes"),
+            },
+        ));
+    }
+    // Column index of x, y, z, qw, qx, qy, qz, and how many fields a line must have.
+    let mut columns: Option<([usize; 7], usize)> = None;
+    let mut poses = Vec::new();
+    for (i, raw) in text.lines().enumerate() {
+        let at = format!("line {}", i + 1);
+        let line = raw.split('#').next().unwrap_or("").trim();
+        if line.is_empty() {
+            continue;
+        }
+        let fields: Vec<&str> = line.split(',').map(str::trim).collect();
+        if columns.is_none() && poses.is_empty() && fields[0].parse::<f64>().is_err() {
+            // A header: every pose column must be named.
+            let mut map = [0; 7];
+            for (k, name) in POSE_COLUMNS.iter().enumerate() {
+                map[k] = fields
+                    .iter()
+                    .position(|f| f.eq_ignore_ascii_case(name))
+                    .ok_or_else(|| {
+                        Error::new(
+                            at.clone(),
+                            ErrorKind::Parse {
+                                message: format!(
+                                    "header has no column '{name}' (expected {})",
+                                    POSE_COLUMNS.join(",")
+                                ),
+                            },
+                        )
+                    })?;
+            }
+            columns = Some((map, fields.len()));
+            continue;
+        }
+        let (map, width) = *columns.get_or_insert(([0, 1, 2, 3, 4, 5, 6], 7));
+        if fields.len() < width {
+            return Err(Error::new(
+                at,
+                ErrorKind::Parse {
+                    message: format!(
+                        "{} field(s), expected {width} ({})",
+                        fields.len(),
+                        POSE_COLUMNS.join(",")
+                    ),
+                },
+            ));
+        }
+        let mut v = [0.0; 7];
+        for (k, &c) in map.iter().enumerate() {
+            let name = POSE_COLUMNS[k];
+            let x: f64 = fields[c].parse().map_err(|_| {
+                Error::new(
+                    format!("{at}, column {name}"),
+                    ErrorKind::Parse {
+                        message: format!("'{}' is not a number", fields[c]),
+                    },
+                )
+            })?;
+            if !x.is_finite() {
+                return Err(Error::new(
+                    format!("{at}, column {name}"),
+                    ErrorKind::NonFinite,
+                ));
+            }
+            v[k] = x;
+        }
+        let pose = Pose::from_wxyz([v[0], v[1], v[2]], [v[3], v[4], v[5], v[6]]).map_err(|e| {
+            // Name the line, not an empty path.
+            e.within(&at)
+        })?;
+        poses.push(pose);
+    }
+    let repeats = last_repeats_first(&poses);
+    if repeats {
+        poses.pop();
+    }
+    if poses.len() < 2 {
+        return Err(Error::new(
+            "csv",
+            ErrorKind::TooFewPoses {
+                found: poses.len(),
+                min: 2,
+            },
+        ));
+    }
+    Ok(MotionDocument::new(poses, repeats))
+}
+
+/// Sampled poses as CSV: header `t,u,x,y,z,qw,qx,qy,qz`, one sample per line (full `f64`
+/// precision, shortest round-trip form).
+pub fn poses_csv(samples: &[Sample]) -> String {
+    let mut s = String::from("t,u,x,y,z,qw,qx,qy,qz\n");
+    for p in samples {
+        let [x, y, z] = p.pose.origin.to_array();
+        let [qw, qx, qy, qz] = p.pose.rotation_wxyz();
+        s += &format!("{},{},{x},{y},{z},{qw},{qx},{qy},{qz}\n", p.time, p.u);
+    }
+    s
+}
+
+/// The world trajectory of the body point `local` as CSV: header `t,u,x,y,z`.
+pub fn trajectory_csv(samples: &[Sample], local: DVec3) -> String {
+    let mut s = String::from("t,u,x,y,z\n");
+    for p in samples {
+        let w = p.pose.transform_point(local);
+        s += &format!("{},{},{},{},{}\n", p.time, p.u, w.x, w.y, w.z);
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn headerless_with_comments() {
+        let doc = parse_csv_poses("# poses\n0,0,0,1,0,0,0\n\n1,0,0, 1,0,0,0 # moved\n").unwrap();
+        assert_eq!(doc.poses.len(), 2);
+        assert!(!doc.closed);
+        assert_eq!(doc.poses[1].origin.x, 1.0);
+    }
+
+    #[test]
+    fn header_in_any_order_and_repeat_closes() {
+        let text = "t,qw,qx,qy,qz,x,y,z\n0,1,0,0,0,0,0,0\n1,1,0,0,0,1,0,0\n2,1,0,0,0,1,1,0\n\
+                    3,1,0,0,0,0,0,0\n";
+        let doc = parse_csv_poses(text).unwrap();
+        assert!(doc.closed);
+        assert_eq!(doc.poses.len(), 3);
+        assert_eq!(doc.poses[2].origin.y, 1.0);
+    }
+
+    #[test]
+    fn errors_name_line_and_column() {
+        let e = parse_csv_poses("0,0,0,1,0,0,0\n1,0,0,1,0,0\n").unwrap_err();
+        assert_eq!(e.path(), "line 2");
+        let e = parse_csv_poses("0,0,0,1,0,0,0\n1,0,abc,1,0,0,0\n").unwrap_err();
+        assert_eq!(e.path(), "line 2, column z");
+        let e = parse_csv_poses("0,0,0,1,0,0,0\n1,0,0,NaN,0,0,0\n").unwrap_err();
+        assert_eq!(e.path(), "line 2, column qw");
+        let e = parse_csv_poses("0,0,0,1,0,0,0\n1,0,0,0,0,0,0\n").unwrap_err();
+        assert_eq!(e.to_string(), "line 2.rotation: zero quaternion");
+        let e = parse_csv_poses("x,y,z,qw\n").unwrap_err();
+        assert_eq!(e.path(), "line 1");
+        assert!(parse_csv_poses("0,0,0,1,0,0,0\n").is_err());
+    }
+}

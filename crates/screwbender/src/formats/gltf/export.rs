@@ -1,0 +1,558 @@
+//! glTF 2.0 export of a sampled motion (`.glb`, or `.gltf` + `.bin`), with the document model of
+//! the `gltf-json` crate.
+//!
+//! The asset holds:
+//!
+//! * node 0, [`OBJECT_NODE_NAME`] (or the motion's name): the object's mesh (positions, normals,
+//!   `u32` indices), animated by animation 0 — `LINEAR` translation and rotation samplers sharing
+//!   one time accessor (seconds, with `min`/`max`); rotations are `x, y, z, w` as glTF requires,
+//!   with signs made consistent from sample to sample (a sample whose dot with the previous one is
+//!   negative is negated);
+//! * node 1, [`CONTROL_NODE_NAME`]: an empty node animated by animation 1, whose keyframes are
+//!   exactly the control poses at their knot times (a cycle repeats pose 0 at the end) — this is
+//!   what [`crate::import_gltf`] reads back by default;
+//! * optionally one empty node per control pose (`control pose i`), placed at the pose.
+//!
+//! Both animations carry `extras.screwbender = {"loop": closed, "closed": closed, …}` (a cycle
+//! loops). Times start at 0: the first knot time is subtracted (and noted as `timeOffset`).
+//! Values are stored as `f32` (rounding about `6e-8 |x|`).
+
+use std::collections::BTreeMap;
+
+use gltf_json as json;
+use json::validation::{Checked::Valid, USize64};
+use serde_json::json as js;
+
+use super::names::{CONTROL_NODE_NAME, EXTRAS_KEY};
+use crate::error::{Error, ErrorKind};
+use crate::formats::sampling::Sample;
+use crate::pose::Pose;
+use crate::scenes::mesh::Mesh;
+
+/// Default name of the animated object node.
+pub const OBJECT_NODE_NAME: &str = "object";
+
+/// The generator string written to `asset.generator`.
+pub const GENERATOR: &str = concat!("screwbender ", env!("CARGO_PKG_VERSION"));
+
+/// Half extents of the placeholder box used when no mesh is given.
+pub const PLACEHOLDER_HALF_EXTENTS: [f64; 3] = [0.5, 0.25, 0.125];
+
+/// GLB magic `glTF`, version 2 and chunk types.
+const GLB_MAGIC: u32 = 0x4654_6C67;
+const GLB_VERSION: u32 = 2;
+const GLB_CHUNK_JSON: u32 = 0x4E4F_534A;
+const GLB_CHUNK_BIN: u32 = 0x004E_4942;
+
+/// What to export.
+#[derive(Clone, Copy, Debug)]
+pub struct GltfMotion<'a> {
+    /// Display name (used for the object node, the animation and the mesh).
+    pub name: Option<&'a str>,
+    /// The keyframes of the object (see [`crate::sample_polyscrew`]); at least 2, times
+    /// increasing.
+    pub samples: &'a [Sample],
+    /// The control poses.
+    pub control: &'a [Pose],
+    /// The knot times of the control poses (`n + 1` for a cycle: the last is pose 0 again).
+    pub control_times: &'a [f64],
+    /// Whether the motion is a cycle (the animations loop).
+    pub closed: bool,
+    /// The object's mesh; `None` draws a placeholder box ([`PLACEHOLDER_HALF_EXTENTS`]).
+    pub mesh: Option<&'a Mesh>,
+    /// The tolerance the samples were made for, recorded in `extras` (`None` for fixed-rate).
+    pub tolerance: Option<f64>,
+    /// Also add one empty node per control pose.
+    pub control_nodes: bool,
+}
+
+/// A built glTF asset: the JSON document model and its binary buffer.
+#[derive(Clone, Debug)]
+pub struct GltfAsset {
+    root: json::Root,
+    bin: Vec<u8>,
+}
+
+/// Appends `data` to the buffer as one 4-byte-aligned buffer view and one `FLOAT`/`UNSIGNED_INT`
+/// accessor.
+struct Builder {
+    root: json::Root,
+    bin: Vec<u8>,
+}
+
+enum Data<'a> {
+    F32(&'a [f32]),
+    U32(&'a [u32]),
+}
+
+impl Builder {
+    fn accessor(
+        &mut self,
+        data: Data,
+        type_: json::accessor::Type,
+        target: Option<json::buffer::Target>,
+        with_bounds: bool,
+    ) -> json::Index<json::Accessor> {
+        let width = type_.multiplicity();
+        while self.bin.len() % 4 != 0 {
+            self.bin.push(0);
+        }
+        let offset = self.bin.len();
+        let (count, component, min, max) = match data {
+            Data::F32(v) => {
+                for x in v {
+                    self.bin.extend_from_slice(&x.to_le_bytes());
+                }
+                let (min, max) = if with_bounds {
+                    let mut lo = vec![f32::INFINITY; width];
+                    let mut hi = vec![f32::NEG_INFINITY; width];
+                    for (i, x) in v.iter().enumerate() {
+                        lo[i % width] = lo[i % width].min(*x);
+                        hi[i % width] = hi[i % width].max(*x);
+                    }
+                    (Some(js!(lo)), Some(js!(hi)))
+                } else {
+                    (None, None)
+                };
+                (
+                    v.len() / width,
+                    json::accessor::ComponentType::F32,
+                    min,
+                    max,
+                )
+            }
+            Data::U32(v) => {
+                for x in v {
+                    self.bin.extend_from_slice(&x.to_le_bytes());
+                }
+                (v.len(), json::accessor::ComponentType::U32, None, None)
+            }
+        };
+        let view = self.root.push(json::buffer::View {
+            buffer: json::Index::new(0),
+            byte_length: USize64::from(self.bin.len() - offset),
+            byte_offset: Some(USize64::from(offset)),
+            byte_stride: None,
+            name: None,
+            target: target.map(Valid),
+            extensions: None,
+            extras: None,
+        });
+        self.root.push(json::Accessor {
+            buffer_view: Some(view),
+            byte_offset: None,
+            count: USize64::from(count),
+            component_type: Valid(json::accessor::GenericComponentType(component)),
+            extensions: None,
+            extras: None,
+            type_: Valid(type_),
+            min,
+            max,
+            name: None,
+            normalized: false,
+            sparse: None,
+        })
+    }
+
+    /// A `LINEAR` translation + rotation animation of `node` through `poses` at `times`.
+    fn animation(
+        &mut self,
+        name: &str,
+        node: json::Index<json::Node>,
+        times: &[f64],
+        poses: &[Pose],
+        extras: serde_json::Value,
+    ) -> Result<(), Error> {
+        use json::animation::{Channel, Interpolation, Property, Sampler, Target};
+        let times32: Vec<f32> = times.iter().map(|&t| t as f32).collect();
+        let translations: Vec<f32> = poses
+            .iter()
+            .flat_map(|p| p.origin.to_array().map(|x| x as f32))
+            .collect();
+        let rotations: Vec<f32> = consistent_rotations(poses).into_iter().flatten().collect();
+        let input = self.accessor(
+            Data::F32(&times32),
+            json::accessor::Type::Scalar,
+            None,
+            true,
+        );
+        let t_out = self.accessor(
+            Data::F32(&translations),
+            json::accessor::Type::Vec3,
+            None,
+            false,
+        );
+        let r_out = self.accessor(
+            Data::F32(&rotations),
+            json::accessor::Type::Vec4,
+            None,
+            false,
+        );
+        let sampler = |output| Sampler {
+            extensions: None,
+            extras: None,
+            input,
+            interpolation: Valid(Interpolation::Linear),
+            output,
+        };
+        let channel = |i: u32, path| Channel {
+            sampler: json::Index::new(i),
+            target: Target {
+                extensions: None,
+                extras: None,
+                node,
+                path: Valid(path),
+            },
+            extensions: None,
+            extras: None,
+        };
+        let animation = json::Animation {
+            extensions: None,
+            extras: Some(raw(&js!({ EXTRAS_KEY: extras }))?),
+            channels: vec![
+                channel(0, Property::Translation),
+                channel(1, Property::Rotation),
+            ],
+            name: Some(name.to_string()),
+            samplers: vec![sampler(t_out), sampler(r_out)],
+        };
+        self.root.push(animation);
+        Ok(())
+    }
+}
+
+fn raw(v: &serde_json::Value) -> Result<Box<serde_json::value::RawValue>, Error> {
+    serde_json::value::to_raw_value(v).map_err(|e| {
+        Error::new(
+            "extras",
+            ErrorKind::Parse {
+                message: e.to_string(),
+            },
+        )
+    })
+}
+
+/// Rotations as `f32` `[x, y, z, w]`, each sign chosen so its dot with the previous one is ≥ 0
+/// (glTF slerps between the stored values, so `q` / `−q` flips would spin the long way).
+pub fn consistent_rotations(poses: &[Pose]) -> Vec<[f32; 4]> {
+    let mut prev: Option<glam::DQuat> = None;
+    poses
+        .iter()
+        .map(|p| {
+            let mut q = p.rotation.normalize();
+            if let Some(pq) = prev {
+                if pq.dot(q) < 0.0 {
+                    q = -q;
+                }
+            }
+            prev = Some(q);
+            [q.x as f32, q.y as f32, q.z as f32, q.w as f32]
+        })
+        .collect()
+}
+
+fn node_trs(name: String, pose: &Pose, mesh: Option<json::Index<json::Mesh>>) -> json::Node {
+    let q = pose.rotation.normalize();
+    json::Node {
+        mesh,
+        name: Some(name),
+        translation: Some(pose.origin.to_array().map(|x| x as f32)),
+        rotation: Some(json::scene::UnitQuaternion([
+            q.x as f32, q.y as f32, q.z as f32, q.w as f32,
+        ])),
+        ..Default::default()
+    }
+}
+
+impl GltfAsset {
+    /// Builds the asset (see the module docs for its layout).
+    ///
+    /// Errors: fewer than 2 samples or times that do not strictly increase once stored as `f32`
+    /// (`samples[i]`), control times that do not match the control poses (`times`).
+    pub fn new(m: &GltfMotion) -> Result<GltfAsset, Error> {
+        if m.samples.len() < 2 {
+            return Err(Error::new(
+                "samples",
+                ErrorKind::TooFewPoses {
+                    found: m.samples.len(),
+                    min: 2,
+                },
+            ));
+        }
+        let expected = m.control.len() + usize::from(m.closed);
+        if m.control_times.len() != expected || m.control.len() < 2 {
+            return Err(Error::new(
+                "times",
+                ErrorKind::OutOfRange {
+                    value: format!("{} times", m.control_times.len()),
+                    expected: format!("{expected} times"),
+                },
+            ));
+        }
+        let offset = m.control_times[0];
+        let times: Vec<f64> = m.samples.iter().map(|s| s.time - offset).collect();
+        for (i, w) in times.windows(2).enumerate() {
+            if (w[1] as f32) <= (w[0] as f32) || !w[1].is_finite() {
+                return Err(Error::new(
+                    format!("samples[{}]", i + 1),
+                    ErrorKind::OutOfRange {
+                        value: format!("time {}", w[1]),
+                        expected: "times strictly increasing in f32 (samples too dense)".into(),
+                    },
+                ));
+            }
+        }
+        // The object node must not take the control node's name (import looks for it).
+        let name = match m.name {
+            None | Some(CONTROL_NODE_NAME) => OBJECT_NODE_NAME,
+            Some(name) => name,
+        }
+        .to_string();
+        let mut b = Builder {
+            root: json::Root {
+                asset: json::Asset {
+                    copyright: None,
+                    extensions: None,
+                    extras: None,
+                    generator: Some(GENERATOR.to_string()),
+                    min_version: None,
+                    version: "2.0".to_string(),
+                },
+                ..Default::default()
+            },
+            bin: Vec::new(),
+        };
+
+        // The mesh.
+        let placeholder;
+        let mesh = match m.mesh {
+            Some(mesh) => mesh,
+            None => {
+                placeholder = Mesh::cuboid(glam::DVec3::from_array(PLACEHOLDER_HALF_EXTENTS));
+                &placeholder
+            }
+        };
+        let positions: Vec<f32> = mesh
+            .positions
+            .iter()
+            .flat_map(|p| p.to_array().map(|x| x as f32))
+            .collect();
+        let normals: Vec<f32> = mesh
+            .normals
+            .iter()
+            .flat_map(|n| n.normalize_or(glam::DVec3::Z).to_array().map(|x| x as f32))
+            .collect();
+        use json::accessor::Type;
+        use json::buffer::Target;
+        let pos = b.accessor(
+            Data::F32(&positions),
+            Type::Vec3,
+            Some(Target::ArrayBuffer),
+            true,
+        );
+        let nor = b.accessor(
+            Data::F32(&normals),
+            Type::Vec3,
+            Some(Target::ArrayBuffer),
+            false,
+        );
+        let idx = b.accessor(
+            Data::U32(&mesh.indices),
+            Type::Scalar,
+            Some(Target::ElementArrayBuffer),
+            false,
+        );
+        let mut attributes = BTreeMap::new();
+        attributes.insert(Valid(json::mesh::Semantic::Positions), pos);
+        attributes.insert(Valid(json::mesh::Semantic::Normals), nor);
+        let mesh_index = b.root.push(json::Mesh {
+            extensions: None,
+            extras: None,
+            name: Some(name.clone()),
+            primitives: vec![json::mesh::Primitive {
+                attributes,
+                extensions: None,
+                extras: None,
+                indices: Some(idx),
+                material: None,
+                mode: Valid(json::mesh::Mode::Triangles),
+                targets: None,
+            }],
+            weights: None,
+        });
+
+        // The nodes.
+        let poses: Vec<Pose> = m.samples.iter().map(|s| s.pose).collect();
+        let object = b
+            .root
+            .push(node_trs(name.clone(), &poses[0], Some(mesh_index)));
+        let control_node = b
+            .root
+            .push(node_trs(CONTROL_NODE_NAME.into(), &m.control[0], None));
+        let mut scene_nodes = vec![object, control_node];
+        if m.control_nodes {
+            for (i, p) in m.control.iter().enumerate() {
+                scene_nodes.push(b.root.push(node_trs(format!("control pose {i}"), p, None)));
+            }
+        }
+        let scene = b.root.push(json::Scene {
+            extensions: None,
+            extras: None,
+            name: Some(name.clone()),
+            nodes: scene_nodes,
+        });
+        b.root.scene = Some(scene);
+
+        // The animations.
+        let common = js!({
+            "loop": m.closed,
+            "closed": m.closed,
+            "timeOffset": offset,
+        });
+        let mut object_extras = common.clone();
+        object_extras["samples"] = js!(m.samples.len());
+        if let Some(t) = m.tolerance {
+            object_extras["tolerance"] = js!(t);
+        }
+        b.animation(&name, object, &times, &poses, object_extras)?;
+        let mut control_poses = m.control.to_vec();
+        if m.closed {
+            control_poses.push(m.control[0]);
+        }
+        let control_times: Vec<f64> = m.control_times.iter().map(|t| t - offset).collect();
+        b.animation(
+            CONTROL_NODE_NAME,
+            control_node,
+            &control_times,
+            &control_poses,
+            common,
+        )?;
+
+        while b.bin.len() % 4 != 0 {
+            b.bin.push(0);
+        }
+        b.root.buffers.push(json::Buffer {
+            byte_length: USize64::from(b.bin.len()),
+            name: None,
+            uri: None,
+            extensions: None,
+            extras: None,
+        });
+        Ok(GltfAsset {
+            root: b.root,
+            bin: b.bin,
+        })
+    }
+
+    /// The JSON document model.
+    pub fn root(&self) -> &json::Root {
+        &self.root
+    }
+
+    /// The binary buffer (buffer 0).
+    pub fn bin(&self) -> &[u8] {
+        &self.bin
+    }
+
+    /// Number of keyframes of the object's animation.
+    pub fn sample_count(&self) -> usize {
+        self.root
+            .animations
+            .first()
+            .and_then(|a| a.samplers.first())
+            .and_then(|s| self.root.accessors.get(s.input.value()))
+            .map_or(0, |a| a.count.0 as usize)
+    }
+
+    /// The binary `.glb` file: JSON chunk (space-padded) and BIN chunk (zero-padded).
+    pub fn to_glb(&self) -> Vec<u8> {
+        let mut text = self.root.to_vec().expect("the document model serializes");
+        while text.len() % 4 != 0 {
+            text.push(b' ');
+        }
+        let total = 12 + 8 + text.len() + 8 + self.bin.len();
+        let mut out = Vec::with_capacity(total);
+        for word in [GLB_MAGIC, GLB_VERSION, total as u32] {
+            out.extend_from_slice(&word.to_le_bytes());
+        }
+        out.extend_from_slice(&(text.len() as u32).to_le_bytes());
+        out.extend_from_slice(&GLB_CHUNK_JSON.to_le_bytes());
+        out.extend_from_slice(&text);
+        out.extend_from_slice(&(self.bin.len() as u32).to_le_bytes());
+        out.extend_from_slice(&GLB_CHUNK_BIN.to_le_bytes());
+        out.extend_from_slice(&self.bin);
+        out
+    }
+
+    /// The `.gltf` JSON text (pretty-printed), whose buffer 0 refers to `bin_uri` (e.g.
+    /// `motion.bin`, relative to the `.gltf` file); write [`GltfAsset::bin`] there.
+    pub fn to_gltf(&self, bin_uri: &str) -> String {
+        let mut root = self.root.clone();
+        root.buffers[0].uri = Some(uri_escape(bin_uri));
+        root.to_string_pretty()
+            .expect("the document model serializes")
+            + "\n"
+    }
+}
+
+/// Percent-encodes the characters of a file name that a URI reference may not contain.
+fn uri_escape(name: &str) -> String {
+    let mut s = String::new();
+    for b in name.bytes() {
+        if b.is_ascii_alphanumeric() || b"-._~/".contains(&b) {
+            s.push(b as char);
+        } else {
+            s += &format!("%{b:02X}");
+        }
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{sample_polyscrew, Polyscrew, Timing};
+
+    #[test]
+    fn glb_has_header_chunks_and_aligned_lengths() {
+        let poses = vec![
+            Pose::IDENTITY,
+            Pose::from_axis_angle(glam::DVec3::Z, 1.0),
+            Pose::from_translation(glam::DVec3::X),
+        ];
+        let p = Polyscrew::new(poses.clone(), true).unwrap();
+        let timing = Timing::uniform(3, true);
+        let samples = sample_polyscrew(&p, 3, &timing, 1e-3).unwrap();
+        let asset = GltfAsset::new(&GltfMotion {
+            name: None,
+            samples: &samples,
+            control: &poses,
+            control_times: timing.knots(),
+            closed: true,
+            mesh: None,
+            tolerance: Some(1e-3),
+            control_nodes: true,
+        })
+        .unwrap();
+        let glb = asset.to_glb();
+        assert_eq!(&glb[0..4], b"glTF");
+        assert_eq!(
+            u32::from_le_bytes(glb[8..12].try_into().unwrap()) as usize,
+            glb.len()
+        );
+        assert_eq!(glb.len() % 4, 0);
+        assert_eq!(asset.sample_count(), samples.len());
+        let text = asset.to_gltf("a b.bin");
+        assert!(text.contains("\"uri\": \"a%20b.bin\""));
+        assert!(text.contains("\"loop\":true"), "{text}");
+    }
+
+    #[test]
+    fn quaternion_signs_are_consistent() {
+        let a = Pose::IDENTITY;
+        let mut b = Pose::from_axis_angle(glam::DVec3::Z, 0.5);
+        b.rotation = -b.rotation;
+        let q = consistent_rotations(&[a, b]);
+        assert!(q[1][3] > 0.0);
+    }
+}

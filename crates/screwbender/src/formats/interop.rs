@@ -1,0 +1,275 @@
+//! Whole-file export and import of a motion: the one place that turns a motion document plus
+//! settings into a glTF / CSV file, and a file of any supported kind into a motion document.
+//! The command line (`screwbender export` / `import`) and the JavaScript API (the page's export
+//! buttons and drag-and-drop import) both call these, so the two give byte-identical results.
+
+use glam::DVec3;
+
+use crate::error::{Error, ErrorKind};
+use crate::formats::csv::{parse_csv_poses, poses_csv, trajectory_csv};
+use crate::formats::document::MotionDocument;
+use crate::formats::gltf::export::{GltfAsset, GltfMotion};
+use crate::formats::gltf::glb::is_glb;
+use crate::formats::gltf::import::{import_glb, import_gltf, NodeSelection, MAX_GLTF_BYTES};
+use crate::formats::sampling::{sample_fixed_rate, sample_polyscrew, DEFAULT_TOLERANCE};
+use crate::motion::Motion;
+use crate::polyscrew::Polyscrew;
+use crate::scenes::mesh::Mesh;
+use crate::screwbender::ScrewBender;
+use crate::subdivision::Subdivision;
+use crate::timing::Timing;
+
+/// The file formats of [`export_motion`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ExportFormat {
+    /// Binary glTF (one file).
+    Glb,
+    /// glTF JSON plus a separate `.bin` buffer.
+    Gltf,
+    /// CSV of sampled poses (`t,u,x,y,z,qw,qx,qy,qz`) or of a body-point trajectory.
+    Csv,
+}
+
+impl ExportFormat {
+    /// Parses `glb`, `gltf` or `csv` (`at` names the option in errors).
+    pub fn parse(name: &str, at: &str) -> Result<ExportFormat, Error> {
+        match name {
+            "glb" => Ok(ExportFormat::Glb),
+            "gltf" => Ok(ExportFormat::Gltf),
+            "csv" => Ok(ExportFormat::Csv),
+            other => Err(Error::new(
+                at,
+                ErrorKind::UnknownValue {
+                    value: other.into(),
+                    expected: "glb, gltf, csv",
+                },
+            )),
+        }
+    }
+}
+
+/// How the motion is sampled in time.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum SamplingMode {
+    /// Adaptive keyframes: linear interpolation between them stays within this distance of the
+    /// true motion (see [`sample_polyscrew`]).
+    Adaptive(f64),
+    /// A fixed frame rate (frames per second).
+    FixedRate(f64),
+}
+
+impl Default for SamplingMode {
+    fn default() -> Self {
+        SamplingMode::Adaptive(DEFAULT_TOLERANCE)
+    }
+}
+
+/// What [`export_motion`] writes, beside the document and subdivision.
+#[derive(Clone, Debug)]
+pub struct ExportSettings<'a> {
+    /// Output format.
+    pub format: ExportFormat,
+    /// Time sampling.
+    pub sampling: SamplingMode,
+    /// Control-pose times in seconds (`n` for an open motion, `n + 1` for a cycle); `None`:
+    /// one second per span.
+    pub times: Option<Vec<f64>>,
+    /// CSV only: write the trajectory of this body point instead of the poses.
+    pub point: Option<DVec3>,
+    /// glTF only: also one empty node per control pose.
+    pub control_nodes: bool,
+    /// glTF only: the object's mesh (`None`: the placeholder box).
+    pub mesh: Option<&'a Mesh>,
+    /// glTF `.gltf` only: the file name the JSON uses for its buffer (`motion.bin`).
+    pub bin_name: &'a str,
+}
+
+impl Default for ExportSettings<'_> {
+    fn default() -> Self {
+        ExportSettings {
+            format: ExportFormat::Glb,
+            sampling: SamplingMode::default(),
+            times: None,
+            point: None,
+            control_nodes: false,
+            mesh: None,
+            bin_name: "motion.bin",
+        }
+    }
+}
+
+/// The result of [`export_motion`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExportedMotion {
+    /// The file: GLB bytes, glTF JSON text or CSV text.
+    pub data: Vec<u8>,
+    /// The `.gltf` format's buffer (to be saved under [`ExportSettings::bin_name`]).
+    pub bin: Option<Vec<u8>>,
+    /// How many keyframes / CSV rows were sampled.
+    pub sample_count: usize,
+    /// The sampled motion's name (e.g. `screwbender 4-point ×5 (direct)`).
+    pub motion_name: String,
+}
+
+/// Samples the motion of `doc` (subdivided by `sub`; level 0 is the plain polyscrew) and writes
+/// it in `settings.format`.
+///
+/// Errors name the element: a time count that does not match the poses (`times`), times not
+/// increasing, a bad tolerance or frame rate, `point` with a glTF format, too many samples.
+pub fn export_motion(
+    doc: &MotionDocument,
+    sub: Subdivision,
+    settings: &ExportSettings,
+) -> Result<ExportedMotion, Error> {
+    if settings.point.is_some() && settings.format != ExportFormat::Csv {
+        return Err(Error::new(
+            "point",
+            ErrorKind::Unsupported {
+                reason: "a body-point trajectory needs --format csv".into(),
+            },
+        ));
+    }
+    let closed = doc.closed;
+    let n = doc.poses.len();
+    let coarse_spans = if closed { n } else { n.saturating_sub(1) };
+    let timing = Timing::for_poses(settings.times.clone(), n, closed)?;
+    let (motion, polyscrew): (Box<dyn Motion>, Polyscrew) = if sub.levels == 0 {
+        let p = Polyscrew::new(doc.poses.clone(), closed)?;
+        (Box::new(p.clone()), p)
+    } else {
+        let sb = ScrewBender::new(doc.poses.clone(), closed, sub)?;
+        let p = sb.refined().clone();
+        (Box::new(sb), p)
+    };
+    let samples = match settings.sampling {
+        SamplingMode::FixedRate(fps) => sample_fixed_rate(motion.as_ref(), &timing, fps)?,
+        SamplingMode::Adaptive(tolerance) => {
+            sample_polyscrew(&polyscrew, coarse_spans, &timing, tolerance)?
+        }
+    };
+    let (data, bin) = match settings.format {
+        ExportFormat::Csv => {
+            let text = match settings.point {
+                Some(p) => trajectory_csv(&samples, p),
+                None => poses_csv(&samples),
+            };
+            (text.into_bytes(), None)
+        }
+        ExportFormat::Glb | ExportFormat::Gltf => {
+            let asset = GltfAsset::new(&GltfMotion {
+                name: doc.name.as_deref(),
+                samples: &samples,
+                control: &doc.poses,
+                control_times: timing.knots(),
+                closed,
+                mesh: settings.mesh,
+                tolerance: match settings.sampling {
+                    SamplingMode::Adaptive(t) => Some(t),
+                    SamplingMode::FixedRate(_) => None,
+                },
+                control_nodes: settings.control_nodes,
+            })?;
+            if settings.format == ExportFormat::Glb {
+                (asset.to_glb(), None)
+            } else {
+                (
+                    asset.to_gltf(settings.bin_name).into_bytes(),
+                    Some(asset.bin().to_vec()),
+                )
+            }
+        }
+    };
+    Ok(ExportedMotion {
+        data,
+        bin,
+        sample_count: samples.len(),
+        motion_name: motion.name(),
+    })
+}
+
+/// The kinds of file [`import_motion_file`] reads.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ImportKind {
+    /// Binary glTF.
+    Glb,
+    /// glTF JSON (buffers resolved by the caller).
+    Gltf,
+    /// CSV poses (`x,y,z,qw,qx,qy,qz`, header optional).
+    Csv,
+    /// A JSON motion document.
+    Json,
+}
+
+impl ImportKind {
+    /// The kind of a file from its name's extension and its first bytes (a GLB header wins over
+    /// the name). `None` for other files.
+    pub fn detect(file_name: &str, bytes: &[u8]) -> Option<ImportKind> {
+        if is_glb(bytes) {
+            return Some(ImportKind::Glb);
+        }
+        let ext = file_name
+            .rsplit_once('.')
+            .map(|(_, e)| e.to_ascii_lowercase())?;
+        match ext.as_str() {
+            "glb" => Some(ImportKind::Glb),
+            "gltf" => Some(ImportKind::Gltf),
+            "csv" => Some(ImportKind::Csv),
+            "json" => Some(ImportKind::Json),
+            _ => None,
+        }
+    }
+}
+
+/// Reads control poses from a file of any supported kind (see [`ImportKind::detect`]).
+/// `resolve` loads the external buffers a `.gltf` names (by URI); `selection` picks glTF nodes
+/// (it must be [`NodeSelection::Auto`] for CSV and JSON).
+///
+/// Errors name the element inside the file (`line 4, column qw: …`, `accessors[2]: …`); callers
+/// prefix the file name. Files over [`MAX_GLTF_BYTES`] are refused before parsing.
+pub fn import_motion_file(
+    file_name: &str,
+    bytes: &[u8],
+    resolve: &mut dyn FnMut(&str) -> Result<Vec<u8>, Error>,
+    selection: &NodeSelection,
+) -> Result<MotionDocument, Error> {
+    if bytes.len() > MAX_GLTF_BYTES {
+        return Err(Error::new(
+            String::new(),
+            ErrorKind::OutOfRange {
+                value: format!("{} bytes", bytes.len()),
+                expected: format!("at most {MAX_GLTF_BYTES} bytes"),
+            },
+        ));
+    }
+    let kind = ImportKind::detect(file_name, bytes).ok_or_else(|| {
+        Error::new(
+            String::new(),
+            ErrorKind::Unsupported {
+                reason: "unknown file type (expected .glb, .gltf, .csv or .json)".into(),
+            },
+        )
+    })?;
+    let text = || {
+        std::str::from_utf8(bytes).map_err(|e| {
+            Error::new(
+                String::new(),
+                ErrorKind::Parse {
+                    message: format!("not UTF-8 text: {e}"),
+                },
+            )
+        })
+    };
+    match kind {
+        ImportKind::Glb => import_glb(bytes, selection),
+        ImportKind::Gltf => import_gltf(bytes, resolve, selection),
+        ImportKind::Csv | ImportKind::Json if *selection != NodeSelection::Auto => Err(Error::new(
+            "node",
+            ErrorKind::UnknownValue {
+                value: "a node selection".into(),
+                expected: "none: node selections apply to glTF files only",
+            },
+        )),
+        ImportKind::Csv => text().and_then(parse_csv_poses),
+        ImportKind::Json => text().and_then(MotionDocument::from_json),
+    }
+}

@@ -1,0 +1,14 @@
+//! Files in and out: the JSON motion document, CSV, glTF 2.0 (feature `gltf`), and the
+//! sampling that turns a motion into keyframes within a tolerance.
+//!
+//! From the bottom up: `keyframes.rs` (what every keyframe import shares), `document.rs`,
+//! `sampling.rs`, `csv.rs`, `gltf/` (the GLB container, export, import) and `interop.rs`, which
+//! picks a format for the CLI and the JS API.
+
+pub(crate) mod csv;
+pub(crate) mod document;
+pub(crate) mod gltf;
+#[cfg(feature = "gltf")]
+pub(crate) mod interop;
+pub(crate) mod keyframes;
+pub(crate) mod sampling;

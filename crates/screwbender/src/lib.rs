@@ -1,0 +1,163 @@
+//! # ScrewBender
+//!
+//! Smooth rigid-body motions from a few control poses, by subdividing a *polyscrew* — the cycle
+//! (or sequence) of poses joined by screw motions — with Split&Tweak rules on screws
+//! (A. Powell and J. Rossignac, *ScrewBender: Polyscrew Subdivision for Smoothing Interpolating
+//! Motions*). Cubic B-spline, 4-point and Jarek schemes, both rule sets of the paper's two
+//! versions, and the J_s family that contains them.
+//!
+//! ```
+//! use screwbender::{scenes, Motion, Rules, Scheme, ScrewBender, Subdivision};
+//!
+//! let scene = scenes::scene("circle4").unwrap();
+//! let smooth = ScrewBender::new(
+//!     scene.poses.clone(),
+//!     true,
+//!     Subdivision::new(Scheme::FourPoint, Rules::Direct, 5),
+//! )?;
+//! // 4 control poses × 2⁵ = 128 refined poses; the screw schemes keep the circle exactly.
+//! assert_eq!(smooth.refined().poses().len(), 128);
+//! for u in [0.3, 1.7, 2.25, 3.9] {
+//!     let radius = smooth.pose_at(u).origin.length();
+//!     assert!((radius - 3.0).abs() < 1e-12);
+//! }
+//! // 4-point interpolates: control pose 1 sits at u = 1.
+//! assert!(smooth.pose_at(1.0).approx_eq(&scene.poses[1], 1e-12));
+//! # Ok::<(), screwbender::Error>(())
+//! ```
+//!
+//! ## Conventions
+//!
+//! * **Poses** map local to world coordinates: `p_world = O + R p_local`, with `R`'s columns the
+//!   images `I, J, K` of the local axes. Frames are right-handed.
+//! * **Quaternions** are Hamilton, and in every file and JS API they are written **`[w, x, y, z]`,
+//!   scalar first** ([`quat_from_wxyz`] / [`quat_to_wxyz`] are the one place where glam's
+//!   `x, y, z, w` storage is converted). `q` and `−q` are the same rotation: poses are compared
+//!   with [`Pose::approx_eq`] / [`Pose::distance`].
+//! * **Composition**: `a.compose(&b)` is `a ∘ b`, "first `b`, then `a`". Changing the object's
+//!   local frame by `C` turns `P` into `P ∘ C`; moving the world by `G` turns it into `G ∘ P`.
+//! * **Angles** are in radians.
+//! * **`screw(a, t, b)`** — argument order *start, fraction, end* — is the pose after the fraction
+//!   `t` of the screw motion from `a` to `b`: `t = 0` is `a`, `t = 1` is `b`, any real `t` is
+//!   allowed. The V2 paper writes it `s(a, t, b)`, V1 `screw(L0, t, L1)`.
+//! * **Parameters** are in *coarse units*: control pose `i` sits at `u = i`; after `ℓ` levels,
+//!   refined pose `j` sits at `u = j / 2^ℓ`. Cycles of `n` poses have domain `[0, n)`, open
+//!   sequences of `m` poses `[0, m − 1]`.
+//! * **Slots**: one subdivision step maps input `i` to output `2i` (the old slot) and inserts the
+//!   new pose between `i` and `i + 1` at `2i + 1`.
+//!
+//! ## Where each rule comes from
+//!
+//! The repository's own notes explain every rule in `docs/math/` (`screw.md`, `point-rules.md`,
+//! `subdivision.md`, `open-sequences.md`, …); a "§" in a comment of this crate points there.
+//!
+//! * The screw between two poses: paper §3 (after Rossignac & Kim); computed here by the closed
+//!   form of the SE(3) log/exp ([`Screw`]), with the paper's construction in [`PaperScrew`]
+//!   (signed angle and the `O₀ + O₁` misprint corrected).
+//! * Point rules (cubic B-spline, Dyn–Levin–Gregory 4-point, Jarek): paper §2 / Figs. 2–3; on
+//!   points through the same generic code ([`Blend`]).
+//! * Direct rules [`Rules::Direct`]: revised paper (V2) §4, "ScrewBender".
+//! * Split-then-tweak rules [`Rules::SplitTweak`]: first version (V1) §4, with the 4-point and
+//!   Jarek new-pose tweaks' argument order corrected (`screw(m, 5/4, L_c)`, not
+//!   `screw(L_c, 5/4, m)`).
+//! * The J_s family [`Scheme::J`]: Rossignac & Schaefer's J-splines, applied to screws.
+//! * Open sequences: paper §4 ("extend with dummy screws … remove 3 or 5 spans"), made precise by
+//!   extrapolating the end screws (docs/math/open-sequences.md).
+//!
+//! ## Many screws at once
+//!
+//! [`Blend::blends`], [`Blend::midpoints`] and [`Blend::sample_cycle`] evaluate batches; for
+//! poses they run independent screws side by side on SIMD lanes: natively eight or four at a
+//! time where x86-64 has AVX-512 or AVX2 (detected at run time) and two elsewhere; on wasm32
+//! four at a time (in two SIMD registers) when built with `simd128` (as this repository's
+//! `.cargo/config.toml` builds it), one at a time without. The results are identical bit for
+//! bit to one-at-a-time calls, whatever the processor. Subdivision steps are written as such
+//! batches.
+//!
+//! ## Layout
+//!
+//! The vocabulary types sit at the top ([`Pose`], [`Motion`], [`Polyscrew`], [`ScrewBender`],
+//! [`Timing`], [`Error`]); below them, folders by kind: `lanes` (SIMD lanes and their
+//! backends), `screw` (construction, kernel, batches), `subdivision` (rules, schemes, blends,
+//! the teaching variants), `formats` (JSON, CSV, glTF, sampling), [`scenes`] (presets, meshes,
+//! morph) and [`methods`] (the comparison methods). Every public item is re-exported here, flat.
+//! This crate has no WebAssembly or GPU code: the JavaScript API and the renderer are the crate
+//! `screwbender-web`, the command-line tool `screwbender-cli`.
+//!
+//! ## Features
+//!
+//! * `json` (default): [`MotionDocument::from_json`] / [`MotionDocument::to_json`] and metrics as
+//!   JSON (serde_json).
+//! * `gltf` (default, implies `json`): glTF 2.0 export and import of motions
+//!   ([`export_motion`], [`import_motion_file`], [`GltfAsset`]) and meshes from glTF
+//!   (gltf-json).
+//!
+//! ## Robustness
+//!
+//! Input from users goes through validating constructors ([`Pose::from_wxyz`],
+//! [`Pose::from_basis`], [`MotionDocument::from_json`]) that return an [`Error`] naming the bad
+//! element. The math itself never fails: every screw is finite for finite input, including
+//! identical poses, pure translations, angles down to the last bit and half turns (with a
+//! deterministic tie-break, see [`Screw`]).
+
+mod error;
+mod formats;
+mod lanes;
+pub mod methods;
+mod motion;
+mod polyscrew;
+mod pose;
+pub mod scenes;
+mod screw;
+mod screwbender;
+mod subdivision;
+mod timing;
+
+pub use scenes::mesh;
+
+/// The README's Rust examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../../../README.md")]
+struct ReadmeDoctests;
+
+pub use error::{Error, ErrorKind};
+pub use formats::csv::{parse_csv_poses, poses_csv, trajectory_csv, MAX_CSV_BYTES, POSE_COLUMNS};
+pub use formats::document::{MotionDocument, RawDocument, RawPose, MAX_DOCUMENT_BYTES};
+#[cfg(feature = "gltf")]
+pub use formats::gltf::{
+    consistent_rotations, import_glb, import_gltf, GltfAsset, GltfMotion, NodeSelection,
+    CONTROL_NODE_NAME, EXTRAS_KEY, GENERATOR, MAX_GLTF_BYTES, OBJECT_NODE_NAME,
+    PLACEHOLDER_HALF_EXTENTS,
+};
+pub use formats::gltf::{is_glb, split_glb};
+#[cfg(feature = "gltf")]
+pub use formats::interop::{
+    export_motion, import_motion_file, ExportFormat, ExportSettings, ExportedMotion, ImportKind,
+    SamplingMode,
+};
+pub use formats::keyframes::REPEAT_TOLERANCE;
+pub use formats::sampling::{
+    check_timing, check_tolerance, interpolate_linear, linear_deviation, sample_fixed_rate,
+    sample_motion, sample_polyscrew, sample_screwbender, trajectory, Sample, DEFAULT_TOLERANCE,
+    MAX_SAMPLES, MAX_SAMPLE_ANGLE, MIN_TOLERANCE,
+};
+pub use motion::{Kinematics, Motion};
+pub use polyscrew::Polyscrew;
+pub use pose::{
+    quat_from_wxyz, quat_to_wxyz, Pose, MAX_COORDINATE, ORTHONORMAL_TOLERANCE,
+    UNIT_QUATERNION_TOLERANCE,
+};
+pub use scenes::morph::{morph_mesh, morph_weights, MORPH_RESOLUTION};
+pub use screw::{
+    screw, screw_paper, BasisPair, PaperScrew, Screw, ScrewKind, ScrewParameters, ANGLE_EPSILON,
+    HALF_TURN_EPSILON, LENGTH_EPSILON, PAPER_CROSS_EPSILON,
+};
+pub use screwbender::ScrewBender;
+pub use subdivision::blend::Blend;
+pub use subdivision::decoupled::{
+    compare_frames, move_local_origin, subdivide_decoupled, DecoupledPose, FrameComparison,
+};
+pub use subdivision::scheme::{Rules, Scheme, MAX_J_PARAMETER};
+pub use subdivision::split_tweak::{split, split_tweak_levels, split_tweak_step, SplitTweakStep};
+pub use subdivision::{Subdivision, MAX_REFINED_POSES};
+pub use timing::Timing;

@@ -1,0 +1,529 @@
+//! The C¹ piecewise cubic Hermite quaternion spline of Ramamoorthi & Barr, its objective
+//! (covariant acceleration plus a unit-length penalty) with analytic gradient, and the
+//! Euler–Lagrange error used to place variable frames (docs/math/quaternion-splines.md §2–§5).
+//!
+//! The spline lives in R⁴ (its values are not unit quaternions); the rotation it describes is
+//! `q/|q|`. Quaternion-valued 4-vectors are stored in [`DQuat`] (see [`super::algebra`]).
+
+use glam::DQuat;
+
+use super::gauss::gauss_legendre;
+use super::polynomial::hermite_basis;
+use crate::error::{check_finite, Error, ErrorKind};
+
+/// Largest number of segments per keyframe interval and of samples accepted by
+/// [`HermiteQuatSpline::segment_deviations`] and [`HermiteQuatSpline::unit_deviation`] (larger
+/// requests are clamped: a guard against runaway memory and time).
+pub const MAX_SPLINE_SAMPLES: usize = 10_000_000;
+
+/// Two frame times closer than this fraction of the local keyframe spacing are the same time
+/// (used when excluding candidate segment starts that already carry a frame, docs/math/quaternion-splines.md §4 step 4).
+pub const FRAME_TIME_TOLERANCE: f64 = 1e-9;
+
+/// One frame of the spline: time, position and velocity in R⁴, and which of them the optimiser
+/// may change.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Frame {
+    /// Frame time `τ_f`.
+    pub t: f64,
+    /// Position `p_f ∈ R⁴` (a keyframe quaternion, or a free point for a variable frame).
+    pub p: DQuat,
+    /// Velocity `m_f = dq/dt ∈ R⁴`.
+    pub m: DQuat,
+    /// Whether `p` is a free variable (variable frames only).
+    pub pos_free: bool,
+    /// Whether `m` is a free variable.
+    pub vel_free: bool,
+    /// Whether this frame is a keyframe (its position is data).
+    pub keyframe: bool,
+}
+
+/// The integrand `F` and its partial derivatives (docs/math/quaternion-splines.md §2, §4.2) at one point:
+///
+/// ```text
+/// F = |q''|² − (q·q'')²/|q|² + α(1 − |q|²)²
+/// ∂F/∂q = 2(q T² − q'' T) + 4α(|q|² − 1) q,   ∂F/∂q'' = 2(q'' − q T),   T = q·q''/|q|²
+/// ```
+pub fn integrand(q: DQuat, q2: DQuat, alpha: f64) -> (f64, DQuat, DQuat) {
+    let a = q.dot(q2);
+    let b = q.length_squared();
+    let t = a / b;
+    let f = q2.length_squared() - a * t + alpha * (1.0 - b) * (1.0 - b);
+    let dq = (q * (t * t) - q2 * t) * 2.0 + q * (4.0 * alpha * (b - 1.0));
+    let dq2 = (q2 - q * t) * 2.0;
+    (f, dq, dq2)
+}
+
+/// The Euler–Lagrange residual of the objective and the intermediate `T, T', T''`
+/// (docs/math/quaternion-splines.md §5, eqs. 7–9 with the two corrections marked there).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EulerLagrange {
+    /// `EL = 2(U + V'' + W)` as a 4-vector.
+    pub el: DQuat,
+    /// `T = q·q''/|q|²`.
+    pub t: f64,
+    /// `T'`.
+    pub t1: f64,
+    /// `T''`.
+    pub t2: f64,
+}
+
+impl EulerLagrange {
+    /// `|EL|`.
+    pub fn norm(&self) -> f64 {
+        self.el.length()
+    }
+}
+
+/// The Euler–Lagrange residual from `q` and its first four derivatives (`q'''' = 0` on cubic
+/// pieces; kept general for the great-circle check):
+///
+/// ```text
+/// U = q T² − q'' T,  W = 2α(|q|² − 1) q,  V'' = q'''' − (q'' T + 2 q' T' + q T'')
+/// T'  = (d12 + d03)/d00 − 2 d01 d02/d00²
+/// T'' = (2 d13 + d22 + d04)/d00 − 4 d01 (d12 + d03)/d00² − 2 d02 (d02 + d11)/d00² + 8 d01² d02/d00³
+/// ```
+///
+/// with `d_jk = q^(j) · q^(k)`.
+pub fn euler_lagrange(
+    q: DQuat,
+    q1: DQuat,
+    q2: DQuat,
+    q3: DQuat,
+    q4: DQuat,
+    alpha: f64,
+) -> EulerLagrange {
+    let d00 = q.dot(q);
+    let d01 = q.dot(q1);
+    let d02 = q.dot(q2);
+    let d03 = q.dot(q3);
+    let d04 = q.dot(q4);
+    let d11 = q1.dot(q1);
+    let d12 = q1.dot(q2);
+    let d13 = q1.dot(q3);
+    let d22 = q2.dot(q2);
+    let t = d02 / d00;
+    let t1 = (d12 + d03) / d00 - 2.0 * d01 * d02 / (d00 * d00);
+    let t2 = (2.0 * d13 + d22 + d04) / d00
+        - 4.0 * d01 * (d12 + d03) / (d00 * d00)
+        - 2.0 * d02 * (d02 + d11) / (d00 * d00)
+        + 8.0 * d01 * d01 * d02 / (d00 * d00 * d00);
+    let u = q * (t * t) - q2 * t;
+    let vpp = q4 - (q2 * t + q1 * (2.0 * t1) + q * t2);
+    let w = q * (2.0 * alpha * (d00 - 1.0));
+    EulerLagrange {
+        el: (u + vpp + w) * 2.0,
+        t,
+        t1,
+        t2,
+    }
+}
+
+/// A C¹ piecewise cubic Hermite curve in R⁴ through a sorted list of frames, open or closed, with
+/// the objective of Ramamoorthi & Barr.
+///
+/// Piece `j` joins frame `j` to frame `j + 1` (for a closed spline the last piece joins the last
+/// frame to frame 0 at the period end, multiplied by `wrap_sign = ±1`: the curve may return to
+/// `−Q_0`, the same rotation, so the R⁴ curve is periodic or anti-periodic; the objective is
+/// invariant under `q → −q`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct HermiteQuatSpline {
+    frames: Vec<Frame>,
+    closed: bool,
+    end: f64,
+    wrap_sign: f64,
+    alpha: f64,
+    nodes: Vec<f64>,
+    weights: Vec<f64>,
+}
+
+/// One piece's data: control values and timing.
+#[derive(Clone, Copy, Debug)]
+struct Piece {
+    f0: usize,
+    f1: usize,
+    p0: DQuat,
+    m0: DQuat,
+    p1: DQuat,
+    m1: DQuat,
+    t0: f64,
+    dt: f64,
+    sign: f64,
+}
+
+impl HermiteQuatSpline {
+    /// A spline from frames sorted by strictly increasing, finite times, with the penalty weight
+    /// `alpha ≥ 0` in the frames' time units and an `n`-point Gauss–Legendre rule per piece
+    /// (`n` clamped to `1 ..= 64`). For a closed spline `end` is the period end (after the last
+    /// frame) and `wrap_sign` the sign of frame 0 at the period end; for an open one they are
+    /// ignored. Needs at least 2 frames (open) or 1 (closed); errors name `frames[i]`, `end` or
+    /// `alpha`.
+    pub fn new(
+        frames: Vec<Frame>,
+        closed: bool,
+        end: f64,
+        wrap_sign: f64,
+        alpha: f64,
+        gauss_nodes: usize,
+    ) -> Result<HermiteQuatSpline, Error> {
+        let min = if closed { 1 } else { 2 };
+        if frames.len() < min {
+            return Err(Error::new(
+                "frames",
+                ErrorKind::TooFewPoses {
+                    found: frames.len(),
+                    min,
+                },
+            ));
+        }
+        for (i, f) in frames.iter().enumerate() {
+            check_finite(&[f.t], &format!("frames[{i}].t"))?;
+            check_finite(&f.p.to_array(), &format!("frames[{i}].p"))?;
+            check_finite(&f.m.to_array(), &format!("frames[{i}].m"))?;
+            if i > 0 && f.t <= frames[i - 1].t {
+                return Err(Error::new(
+                    format!("frames[{i}].t"),
+                    ErrorKind::OutOfRange {
+                        value: f.t.to_string(),
+                        expected: format!("a time after frames[{}].t = {}", i - 1, frames[i - 1].t),
+                    },
+                ));
+            }
+        }
+        let last = frames[frames.len() - 1].t;
+        if closed && (end.is_nan() || end <= last || end.is_infinite()) {
+            return Err(Error::new(
+                "end",
+                ErrorKind::OutOfRange {
+                    value: end.to_string(),
+                    expected: format!("a finite period end after the last frame time {last}"),
+                },
+            ));
+        }
+        if alpha.is_nan() || alpha < 0.0 || alpha.is_infinite() {
+            return Err(Error::new(
+                "alpha",
+                ErrorKind::OutOfRange {
+                    value: alpha.to_string(),
+                    expected: "a finite number ≥ 0".into(),
+                },
+            ));
+        }
+        let (nodes, weights) = gauss_legendre(gauss_nodes);
+        let end = if closed {
+            end
+        } else {
+            frames.last().map_or(0.0, |f| f.t)
+        };
+        Ok(HermiteQuatSpline {
+            frames,
+            closed,
+            end,
+            wrap_sign: if wrap_sign < 0.0 { -1.0 } else { 1.0 },
+            alpha,
+            nodes,
+            weights,
+        })
+    }
+
+    /// The frames, sorted by time.
+    pub fn frames(&self) -> &[Frame] {
+        &self.frames
+    }
+
+    /// Whether the spline is a cycle.
+    pub fn is_closed(&self) -> bool {
+        self.closed
+    }
+
+    /// The parameter interval `[first frame time, end]`.
+    pub fn domain(&self) -> (f64, f64) {
+        (self.frames.first().map_or(0.0, |f| f.t), self.end)
+    }
+
+    /// The penalty weight `α` in the spline's own time units.
+    pub fn alpha(&self) -> f64 {
+        self.alpha
+    }
+
+    /// Sets the penalty weight (in the spline's time units); a negative or non-finite value is
+    /// ignored.
+    pub fn set_alpha(&mut self, alpha: f64) {
+        if alpha.is_finite() && alpha >= 0.0 {
+            self.alpha = alpha;
+        }
+    }
+
+    /// The number of cubic pieces.
+    pub fn piece_count(&self) -> usize {
+        if self.closed {
+            self.frames.len()
+        } else {
+            self.frames.len().saturating_sub(1)
+        }
+    }
+
+    fn piece(&self, j: usize) -> Piece {
+        let f0 = j;
+        let last = j + 1 == self.frames.len();
+        let f1 = if last { 0 } else { j + 1 };
+        let (a, b) = (&self.frames[f0], &self.frames[f1]);
+        let (t1, sign) = if last {
+            (self.end, self.wrap_sign)
+        } else {
+            (b.t, 1.0)
+        };
+        Piece {
+            f0,
+            f1,
+            p0: a.p,
+            m0: a.m,
+            p1: b.p * sign,
+            m1: b.m * sign,
+            t0: a.t,
+            dt: t1 - a.t,
+            sign,
+        }
+    }
+
+    /// Wraps `t` into the period (closed) and finds its piece and local fraction `s`.
+    fn locate(&self, t: f64) -> (usize, f64) {
+        let (t0, t1) = self.domain();
+        let t = if self.closed && t.is_finite() && t1 > t0 {
+            t0 + (t - t0).rem_euclid(t1 - t0)
+        } else {
+            t
+        };
+        let count = self.piece_count().max(1);
+        let j = self
+            .frames
+            .partition_point(|f| f.t <= t)
+            .saturating_sub(1)
+            .min(count - 1);
+        let p = self.piece(j);
+        (j, (t - p.t0) / p.dt)
+    }
+
+    /// `q, q', q'', q'''` at time `t` (closed splines wrap; open ones extrapolate their end
+    /// pieces). Exactly at a frame the next piece is used.
+    pub fn eval(&self, t: f64) -> [DQuat; 4] {
+        let (j, s) = self.locate(t);
+        self.eval_piece(j, s)
+    }
+
+    fn eval_piece(&self, j: usize, s: f64) -> [DQuat; 4] {
+        let p = self.piece(j);
+        super::polynomial::hermite_d3(p.p0, p.m0, p.p1, p.m1, p.dt, s)
+    }
+
+    /// The number of free variables (4 per free position or velocity).
+    pub fn variable_count(&self) -> usize {
+        self.frames
+            .iter()
+            .map(|f| 4 * (f.pos_free as usize + f.vel_free as usize))
+            .sum()
+    }
+
+    /// The free variables, frame by frame: position (if free) then velocity (if free), each as
+    /// glam's `x, y, z, w`.
+    pub fn variables(&self) -> Vec<f64> {
+        let mut x = Vec::with_capacity(self.variable_count());
+        for f in &self.frames {
+            if f.pos_free {
+                x.extend_from_slice(&f.p.to_array());
+            }
+            if f.vel_free {
+                x.extend_from_slice(&f.m.to_array());
+            }
+        }
+        x
+    }
+
+    /// Sets the free variables (layout of [`HermiteQuatSpline::variables`]); extra or missing
+    /// entries are ignored.
+    pub fn set_variables(&mut self, x: &[f64]) {
+        let mut it = x.chunks_exact(4);
+        for f in &mut self.frames {
+            if f.pos_free {
+                if let Some(c) = it.next() {
+                    f.p = DQuat::from_slice(c);
+                }
+            }
+            if f.vel_free {
+                if let Some(c) = it.next() {
+                    f.m = DQuat::from_slice(c);
+                }
+            }
+        }
+    }
+
+    /// The objective `OBJ = ∫ F dt` (docs/math/quaternion-splines.md §2, eq. 3) by Gauss–Legendre quadrature on every piece.
+    pub fn objective(&self) -> f64 {
+        self.objective_impl(None, self.alpha)
+    }
+
+    /// The covariant-acceleration part alone, `∫ |q'' \ q|² dt` (the objective with `α = 0`).
+    pub fn covariant_acceleration(&self) -> f64 {
+        self.objective_impl(None, 0.0)
+    }
+
+    /// The objective and its gradient with respect to the free variables (docs/math/quaternion-splines.md §4.2), written
+    /// into `gradient` (length [`HermiteQuatSpline::variable_count`]).
+    pub fn objective_and_gradient(&self, gradient: &mut [f64]) -> f64 {
+        self.objective_impl(Some(gradient), self.alpha)
+    }
+
+    fn objective_impl(&self, gradient: Option<&mut [f64]>, alpha: f64) -> f64 {
+        let frames = self.frames.len();
+        let mut gp =
+            vec![DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0); if gradient.is_some() { frames } else { 0 }];
+        let mut gm = gp.clone();
+        let basis: Vec<[[f64; 4]; 4]> = self.nodes.iter().map(|&s| hermite_basis(s)).collect();
+        let mut total = 0.0;
+        for j in 0..self.piece_count() {
+            let p = self.piece(j);
+            let c = [p.p0, p.m0 * p.dt, p.p1, p.m1 * p.dt];
+            let inv2 = 1.0 / (p.dt * p.dt);
+            let mut sum = 0.0;
+            let mut g = [DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0); 4];
+            for (h, &w) in basis.iter().zip(&self.weights) {
+                let q = c[0] * h[0][0] + c[1] * h[0][1] + c[2] * h[0][2] + c[3] * h[0][3];
+                let q2 = (c[0] * h[2][0] + c[1] * h[2][1] + c[2] * h[2][2] + c[3] * h[2][3]) * inv2;
+                let (f, fq, fq2) = integrand(q, q2, alpha);
+                sum += w * f;
+                if !gp.is_empty() {
+                    for k in 0..4 {
+                        g[k] += (fq * h[0][k] + fq2 * (h[2][k] * inv2)) * w;
+                    }
+                }
+            }
+            total += p.dt * sum;
+            if !gp.is_empty() {
+                let d = p.dt;
+                gp[p.f0] += g[0] * d;
+                gm[p.f0] += g[1] * (d * d);
+                gp[p.f1] += g[2] * (d * p.sign);
+                gm[p.f1] += g[3] * (d * d * p.sign);
+            }
+        }
+        if let Some(out) = gradient {
+            let mut k = 0;
+            for (f, (dp, dm)) in self.frames.iter().zip(gp.iter().zip(&gm)) {
+                for (free, v) in [(f.pos_free, dp), (f.vel_free, dm)] {
+                    if free {
+                        if let Some(slot) = out.get_mut(k..k + 4) {
+                            slot.copy_from_slice(&v.to_array());
+                        }
+                        k += 4;
+                    }
+                }
+            }
+        }
+        total
+    }
+
+    /// The Euler–Lagrange residual at `t` (inside a piece; at a frame the next piece is used).
+    pub fn euler_lagrange_at(&self, t: f64) -> EulerLagrange {
+        let [q, q1, q2, q3] = self.eval(t);
+        euler_lagrange(
+            q,
+            q1,
+            q2,
+            q3,
+            DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0),
+            self.alpha,
+        )
+    }
+
+    /// `DEV(t_n) = (1/Δt) ∫_{t_n}^{t_n+Δt} |EL| dt` (docs/math/quaternion-splines.md §4, eq. 4) for every segment: each keyframe
+    /// interval `[k_i, k_{i+1}]` (`key_times` sorted, for a closed spline ending with the period
+    /// end) split into `per_interval` equal segments; integrals split at frames inside a segment.
+    /// Returns `(segment start, DEV)` pairs.
+    pub fn segment_deviations(&self, key_times: &[f64], per_interval: usize) -> Vec<(f64, f64)> {
+        let per = per_interval.clamp(1, MAX_SPLINE_SAMPLES);
+        let mut out = Vec::new();
+        for w in key_times.windows(2) {
+            let dt = (w[1] - w[0]) / per as f64;
+            for s in 0..per {
+                let ta = w[0] + s as f64 * dt;
+                let tb = ta + dt;
+                let mut cuts = vec![ta];
+                cuts.extend(self.frames.iter().map(|f| f.t).filter(|&t| {
+                    t > ta + FRAME_TIME_TOLERANCE * dt && t < tb - FRAME_TIME_TOLERANCE * dt
+                }));
+                cuts.push(tb);
+                let mut total = 0.0;
+                for c in cuts.windows(2) {
+                    let (j, _) = self.locate(0.5 * (c[0] + c[1]));
+                    let p = self.piece(j);
+                    let len = c[1] - c[0];
+                    for (&x, &wt) in self.nodes.iter().zip(&self.weights) {
+                        let t = c[0] + len * x;
+                        // Local fraction on piece j (the cut lies inside the piece).
+                        let [q, q1, q2, q3] = self.eval_piece(j, (t - p.t0) / p.dt);
+                        let el = euler_lagrange(
+                            q,
+                            q1,
+                            q2,
+                            q3,
+                            DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0),
+                            self.alpha,
+                        );
+                        total += len * wt * el.norm();
+                    }
+                }
+                out.push((ta, total / dt));
+            }
+        }
+        out
+    }
+
+    /// Inserts a variable frame at `t` initialised from the current curve (`p = q(t)`,
+    /// `m = q'(t)`), which leaves the curve unchanged (docs/math/quaternion-splines.md §4 step 4). Returns its index, or
+    /// `None` when `t` is outside the domain or already a frame time.
+    pub fn insert_frame(&mut self, t: f64) -> Option<usize> {
+        let (t0, t1) = self.domain();
+        if !(t > t0 && t < t1) {
+            return None;
+        }
+        let [q, q1, _, _] = self.eval(t);
+        let idx = self.frames.partition_point(|f| f.t < t);
+        let scale = (t1 - t0).max(f64::MIN_POSITIVE);
+        let clash = |i: usize| {
+            self.frames
+                .get(i)
+                .is_some_and(|f| (f.t - t).abs() <= FRAME_TIME_TOLERANCE * scale)
+        };
+        if clash(idx) || (idx > 0 && clash(idx - 1)) {
+            return None;
+        }
+        self.frames.insert(
+            idx,
+            Frame {
+                t,
+                p: q,
+                m: q1,
+                pos_free: true,
+                vel_free: true,
+                keyframe: false,
+            },
+        );
+        Some(idx)
+    }
+
+    /// `(max, mean)` of `| |q(t)| − 1 |` over `samples` uniformly spaced times of the domain
+    /// (end points included; at least 2).
+    pub fn unit_deviation(&self, samples: usize) -> (f64, f64) {
+        let n = samples.clamp(2, MAX_SPLINE_SAMPLES);
+        let (t0, t1) = self.domain();
+        let mut max = 0.0f64;
+        let mut sum = 0.0;
+        for k in 0..n {
+            let t = t0 + (t1 - t0) * k as f64 / (n - 1) as f64;
+            let d = (self.eval(t)[0].length() - 1.0).abs();
+            max = max.max(d);
+            sum += d;
+        }
+        (max, sum / n as f64)
+    }
+}

@@ -1,0 +1,165 @@
+//! The named list of motion methods compared by the metrics, the CLI and the page.
+
+use std::fmt;
+use std::str::FromStr;
+
+use super::decoupled::DecoupledSmooth;
+use super::kim_kim_shin::KimKimShin;
+use super::rational::{Continuity, EndCondition, RationalMotion};
+use super::rb_optimizer::{RamamoorthiBarr, RbOptions};
+use super::slerp_polyline::SlerpPolyline;
+use super::triangle::ReferenceTriangle;
+use crate::error::{Error, ErrorKind};
+use crate::motion::Motion;
+use crate::polyscrew::Polyscrew;
+use crate::pose::Pose;
+use crate::screwbender::ScrewBender;
+use crate::subdivision::scheme::{Rules, Scheme};
+use crate::subdivision::Subdivision;
+
+/// Subdivision levels of the ScrewBender methods in the comparison (`2⁵ = 32` refined spans per
+/// control span).
+pub const COMPARISON_LEVELS: u32 = 5;
+
+/// A motion method, built from control poses with pose `i` at parameter `u = i`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Method {
+    /// Screws between consecutive poses ([`Polyscrew`]): the ScLERP polyline.
+    Polyscrew,
+    /// ScrewBender, cubic B-spline scheme, direct rules, [`COMPARISON_LEVELS`] levels.
+    BSpline,
+    /// ScrewBender, 4-point scheme, direct rules.
+    FourPoint,
+    /// ScrewBender, Jarek scheme, direct rules.
+    Jarek,
+    /// Piecewise SLERP + linear origins ([`SlerpPolyline`]).
+    Slerp,
+    /// Catmull–Rom origins + Squad rotations ([`DecoupledSmooth`]).
+    Decoupled,
+    /// Kim–Kim–Shin B-spline quaternion curve + B-spline origins ([`KimKimShin`]).
+    Kks,
+    /// Ramamoorthi–Barr quaternion spline + Catmull–Rom origins ([`RamamoorthiBarr`], default
+    /// options, free end velocities).
+    Rb,
+    /// Chaudhry–Cameron C⁰ ([`RationalMotion`], scene B1 reference triangle).
+    Cc0,
+    /// Chaudhry–Cameron C¹ with end condition (18) (open sequences only).
+    Cc1,
+}
+
+impl Method {
+    /// Every method, in table order.
+    pub const ALL: [Method; 10] = [
+        Method::Polyscrew,
+        Method::BSpline,
+        Method::FourPoint,
+        Method::Jarek,
+        Method::Slerp,
+        Method::Decoupled,
+        Method::Kks,
+        Method::Rb,
+        Method::Cc0,
+        Method::Cc1,
+    ];
+
+    /// The accepted names, for messages.
+    pub const NAMES: &'static str =
+        "polyscrew, bspline, fourpoint, jarek, slerp, decoupled, kks, rb, cc0, cc1";
+
+    /// The short name (as accepted by [`Method::from_str`]).
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Polyscrew => "polyscrew",
+            Method::BSpline => "bspline",
+            Method::FourPoint => "fourpoint",
+            Method::Jarek => "jarek",
+            Method::Slerp => "slerp",
+            Method::Decoupled => "decoupled",
+            Method::Kks => "kks",
+            Method::Rb => "rb",
+            Method::Cc0 => "cc0",
+            Method::Cc1 => "cc1",
+        }
+    }
+
+    /// Whether the method has a closed (cyclic) form. Only the C¹ Chaudhry–Cameron motion has not.
+    pub fn supports_closed(self) -> bool {
+        self != Method::Cc1
+    }
+
+    /// The methods that apply to a closed or open input, in table order.
+    pub fn applicable(closed: bool) -> Vec<Method> {
+        Method::ALL
+            .into_iter()
+            .filter(|m| !closed || m.supports_closed())
+            .collect()
+    }
+
+    /// Builds the motion through `poses` (pose `i` at `u = i`; a closed motion has period `n`).
+    pub fn build(self, poses: &[Pose], closed: bool) -> Result<Box<dyn Motion>, Error> {
+        let sb = |scheme| -> Result<Box<dyn Motion>, Error> {
+            let s = Subdivision::new(scheme, Rules::Direct, COMPARISON_LEVELS);
+            Ok(Box::new(ScrewBender::new(poses.to_vec(), closed, s)?))
+        };
+        let times: Vec<f64> = (0..poses.len() + usize::from(closed))
+            .map(|i| i as f64)
+            .collect();
+        let cc = |c| -> Result<Box<dyn Motion>, Error> {
+            // Validate the poses first so that errors name them.
+            super::slerp_polyline::validated_poses(poses, closed)?;
+            Ok(Box::new(RationalMotion::from_poses(
+                poses,
+                &times,
+                closed,
+                c,
+                &ReferenceTriangle::SCENE_B1,
+            )?))
+        };
+        match self {
+            Method::Polyscrew => Ok(Box::new(Polyscrew::new(poses.to_vec(), closed)?)),
+            Method::BSpline => sb(Scheme::BSpline),
+            Method::FourPoint => sb(Scheme::FourPoint),
+            Method::Jarek => sb(Scheme::Jarek),
+            Method::Slerp => Ok(Box::new(SlerpPolyline::new(poses, closed)?)),
+            Method::Decoupled => Ok(Box::new(DecoupledSmooth::new(poses, closed)?)),
+            Method::Kks => Ok(Box::new(KimKimShin::new(poses, closed)?)),
+            Method::Rb => {
+                super::slerp_polyline::validated_poses(poses, closed)?;
+                Ok(Box::new(RamamoorthiBarr::from_poses(
+                    poses,
+                    &times,
+                    closed,
+                    &RbOptions::default(),
+                )?))
+            }
+            Method::Cc0 => cc(Continuity::C0),
+            Method::Cc1 => cc(Continuity::C1(EndCondition::ZeroCurvatureStart)),
+        }
+    }
+}
+
+impl fmt::Display for Method {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Method {
+    type Err = Error;
+    /// Parses one of [`Method::NAMES`] (case-insensitive, surrounding spaces ignored).
+    fn from_str(s: &str) -> Result<Method, Error> {
+        let t = s.trim().to_ascii_lowercase();
+        Method::ALL
+            .into_iter()
+            .find(|m| m.name() == t)
+            .ok_or_else(|| {
+                Error::new(
+                    "methods",
+                    ErrorKind::UnknownValue {
+                        value: s.to_string(),
+                        expected: Method::NAMES,
+                    },
+                )
+            })
+    }
+}

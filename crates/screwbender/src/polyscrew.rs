@@ -1,0 +1,230 @@
+//! Polyscrews: poses joined by screws (docs/math/polyscrew.md).
+
+use glam::DVec3;
+
+use crate::error::{Error, ErrorKind};
+use crate::motion::{Kinematics, Motion};
+use crate::pose::{unit_to_rounding, Pose, UNIT_QUATERNION_TOLERANCE};
+use crate::screw::Screw;
+
+/// A sequence of poses joined by screws: on span `i` the motion is `screw(P_i, t, P_{i+1})`.
+///
+/// Cyclic (`closed`) polyscrews have `n` spans including `P_{n−1} → P_0`; open ones have `m − 1`.
+/// Each span's screw is computed once, on construction. The motion parameter `u` is in coarse units:
+/// span `i` covers `u ∈ [i·h, (i+1)·h]` where `h` is the span length (`1` for a control polyscrew,
+/// `2^−ℓ` for one refined by `ℓ` levels of subdivision), so refined and control motions share one
+/// parameter.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Polyscrew {
+    poses: Vec<Pose>,
+    closed: bool,
+    spans: Vec<Screw>,
+    span_length: f64,
+}
+
+impl Polyscrew {
+    /// A polyscrew through `poses` with span length 1 (pose `i` at `u = i`).
+    ///
+    /// Needs at least 2 poses, all finite with unit rotations (within
+    /// [`UNIT_QUATERNION_TOLERANCE`]; they are renormalised).
+    pub fn new(poses: Vec<Pose>, closed: bool) -> Result<Polyscrew, Error> {
+        Polyscrew::with_span_length(poses, closed, 1.0)
+    }
+
+    /// A polyscrew whose spans each cover `span_length` coarse units (must be positive and
+    /// finite).
+    pub fn with_span_length(
+        mut poses: Vec<Pose>,
+        closed: bool,
+        span_length: f64,
+    ) -> Result<Polyscrew, Error> {
+        if poses.len() < 2 {
+            return Err(Error::new(
+                "poses",
+                ErrorKind::TooFewPoses {
+                    found: poses.len(),
+                    min: 2,
+                },
+            ));
+        }
+        if !(span_length.is_finite() && span_length > 0.0) {
+            return Err(Error::new(
+                "span_length",
+                ErrorKind::OutOfRange {
+                    value: span_length.to_string(),
+                    expected: "a positive finite number".into(),
+                },
+            ));
+        }
+        for (i, p) in poses.iter_mut().enumerate() {
+            *p = checked_pose(p).map_err(|e| e.within(&format!("poses[{i}]")))?;
+        }
+        let spans = span_screws(&poses, closed);
+        Ok(Polyscrew {
+            poses,
+            closed,
+            spans,
+            span_length,
+        })
+    }
+
+    /// Mutable access to the poses for in-crate local updates; call
+    /// [`Polyscrew::refresh_spans`] for the changed range afterwards.
+    pub(crate) fn poses_mut(&mut self) -> &mut [Pose] {
+        &mut self.poses
+    }
+
+    /// Recomputes the screws of every span touching poses `start .. start + count` (indices
+    /// read cyclically for a closed polyscrew).
+    pub(crate) fn refresh_spans(&mut self, start: usize, count: usize) {
+        let n = self.poses.len();
+        let spans = self.spans.len();
+        if count >= n {
+            self.spans = span_screws(&self.poses, self.closed);
+            return;
+        }
+        // Spans start−1 … start+count−1 have an end in the range.
+        for k in 0..=count {
+            let i = (start + n + k - 1) % n;
+            if i < spans {
+                self.spans[i] = Screw::between(&self.poses[i], &self.poses[(i + 1) % n]);
+            }
+        }
+    }
+
+    /// The poses at the span ends (the control poses of a plain polyscrew).
+    pub fn poses(&self) -> &[Pose] {
+        &self.poses
+    }
+
+    /// Whether the last pose is joined back to the first.
+    pub fn closed(&self) -> bool {
+        self.closed
+    }
+
+    /// The screws of the spans, `spans()[i]` from pose `i` to pose `i+1` (mod `n` when closed).
+    pub fn spans(&self) -> &[Screw] {
+        &self.spans
+    }
+
+    /// Coarse parameter units covered by one span.
+    pub fn span_length(&self) -> f64 {
+        self.span_length
+    }
+
+    /// The span index and local fraction `t ∈ [0, 1)` (or beyond, extrapolating the end spans
+    /// of an open polyscrew) for coarse parameter `u`.
+    pub fn locate(&self, u: f64) -> (usize, f64) {
+        let x = u / self.span_length;
+        let count = self.spans.len();
+        if self.closed {
+            let x = x.rem_euclid(count as f64);
+            // rem_euclid may round up to exactly `count`.
+            let i = (x.floor() as usize).min(count - 1);
+            (i, x - i as f64)
+        } else {
+            let i = if x.is_nan() {
+                0
+            } else {
+                x.floor().clamp(0.0, (count - 1) as f64) as usize
+            };
+            (i, x - i as f64)
+        }
+    }
+
+    /// The pose at coarse parameter `u` (docs/math/polyscrew.md).
+    pub fn pose_at(&self, u: f64) -> Pose {
+        let (i, t) = self.locate(u);
+        self.spans[i].at(t)
+    }
+
+    /// Closed-form kinematics of the body point `local` at `u`, per coarse parameter unit.
+    ///
+    /// Along each span the twist is constant (`ω = θn/h`, `v₀`/h for span length `h`), so the
+    /// velocity is `ω × x + v₀`, the acceleration `ω × (ω × x + v₀)` and the angular acceleration
+    /// zero. At a span boundary the value of the span that starts there is returned.
+    pub fn point_kinematics(&self, u: f64, local: DVec3) -> Kinematics {
+        let (i, t) = self.locate(u);
+        self.span_kinematics(i, t, local)
+    }
+
+    /// Kinematics on span `i` at local fraction `t` (see [`Polyscrew::point_kinematics`]); with
+    /// `t = 1` this is the left-hand value at the span's end.
+    pub fn span_kinematics(&self, i: usize, t: f64, local: DVec3) -> Kinematics {
+        let span = &self.spans[i];
+        let x = span.at(t).transform_point(local);
+        let (omega, v0) = span.twist();
+        let inv_h = 1.0 / self.span_length;
+        let (omega, v0) = (omega * inv_h, v0 * inv_h);
+        let velocity = omega.cross(x) + v0;
+        Kinematics {
+            position: x,
+            velocity,
+            acceleration: omega.cross(velocity),
+            angular_velocity: omega,
+            angular_acceleration: DVec3::ZERO,
+        }
+    }
+}
+
+/// A pose checked for use in a motion: finite, rotation unit within
+/// [`UNIT_QUATERNION_TOLERANCE`] (then renormalised).
+pub(crate) fn checked_pose(p: &Pose) -> Result<Pose, Error> {
+    if !p.is_finite() {
+        return Err(Error::new(String::new(), ErrorKind::NonFinite));
+    }
+    // Rotations already unit to rounding pass through untouched, so validating twice changes
+    // nothing (a rebuilt motion is bit-identical to an edited one).
+    if unit_to_rounding(p.rotation.length_squared()) {
+        return Ok(*p);
+    }
+    let norm = p.rotation.length();
+    if (norm - 1.0).abs() > UNIT_QUATERNION_TOLERANCE {
+        return Err(Error::new(
+            "rotation",
+            ErrorKind::NonUnitQuaternion {
+                norm,
+                tolerance: UNIT_QUATERNION_TOLERANCE,
+            },
+        ));
+    }
+    let rotation = p.rotation / norm;
+    Ok(Pose::new(p.origin, rotation))
+}
+
+/// The screw of every span of a pose sequence.
+pub(crate) fn span_screws(poses: &[Pose], closed: bool) -> Vec<Screw> {
+    let n = poses.len();
+    let count = if closed { n } else { n - 1 };
+    (0..count)
+        .map(|i| Screw::between(&poses[i], &poses[(i + 1) % n]))
+        .collect()
+}
+
+impl Motion for Polyscrew {
+    fn name(&self) -> String {
+        "polyscrew".into()
+    }
+
+    fn domain(&self) -> (f64, f64) {
+        (0.0, self.spans.len() as f64 * self.span_length)
+    }
+
+    fn is_closed(&self) -> bool {
+        self.closed
+    }
+
+    fn pose_at(&self, u: f64) -> Pose {
+        Polyscrew::pose_at(self, u)
+    }
+
+    fn knots(&self) -> Vec<f64> {
+        (0..self.poses.len())
+            .map(|i| i as f64 * self.span_length)
+            .collect()
+    }
+
+    fn kinematics(&self, u: f64, local: DVec3) -> Option<Kinematics> {
+        Some(self.point_kinematics(u, local))
+    }
+}

@@ -1,0 +1,314 @@
+//! Many screws at once, several at a time on SIMD lanes (see `lanes` for why): eight or four on
+//! x86-64 with AVX-512 or AVX2, two elsewhere ([`run_widest`]).
+//!
+//! Every routine here gives *bit for bit* what the one-at-a-time [`Screw`] calls give: the lanes
+//! run the same kernel (`screw::kernel`) with the same operations in the same order. A group that
+//! holds a rare case (no rotation, a half turn, an argument outside the fast sine range, a
+//! non-finite value) is handed to the scalar route, which decides those cases.
+
+use crate::lanes::{run_widest, LanesOp, Width, Q, V3};
+use crate::pose::Pose;
+use crate::screw::kernel::{self as kernel, RegularSpan};
+use crate::screw::Screw;
+
+/// `N` poses, lane `k` holding pose `k` (lanes of the kind of `proto`).
+#[inline(always)]
+fn load<L: Width<N>, const N: usize>(proto: L, p: [&Pose; N]) -> (V3<L>, Q<L>) {
+    (
+        V3::new(
+            proto.gather(|k| p[k].origin.x),
+            proto.gather(|k| p[k].origin.y),
+            proto.gather(|k| p[k].origin.z),
+        ),
+        Q::new(
+            proto.gather(|k| p[k].rotation.x),
+            proto.gather(|k| p[k].rotation.y),
+            proto.gather(|k| p[k].rotation.z),
+            proto.gather(|k| p[k].rotation.w),
+        ),
+    )
+}
+
+/// Appends the `N` poses held in the lanes to `out`.
+#[inline(always)]
+fn push<L: Width<N>, const N: usize>(out: &mut Vec<Pose>, (o, q): (V3<L>, Q<L>)) {
+    // One `push` per lane: `extend` went through an iterator `fold` that was not inlined, so
+    // it ran outside the code compiled for the detected features.
+    for k in 0..N {
+        out.push(Pose::new(
+            glam::DVec3::new(o.x.lane(k), o.y.lane(k), o.z.lane(k)),
+            glam::DQuat::from_xyzw(q.x.lane(k), q.y.lane(k), q.z.lane(k), q.w.lane(k)),
+        ));
+    }
+}
+
+/// `N` items from `item(i)`, `i = first..first + N`, written in place.
+#[inline(always)]
+fn group<T: Copy, const N: usize>(first: usize, empty: T, item: impl Fn(usize) -> T) -> [T; N] {
+    let mut group = [empty; N];
+    for (k, slot) in group.iter_mut().enumerate() {
+        *slot = item(first + k);
+    }
+    group
+}
+
+/// The spans `a[k] → b[k]` in the regular case (see [`kernel::regular_span`]).
+///
+/// Inlined natively (the lanes then stay in registers across the calls, and the code is
+/// compiled for the features [`run_widest`] detected); out of line on wasm32 with SIMD, where
+/// the callers are instantiated once per closure type and an inlined copy in each would add
+/// kilobytes to the module (whose size is budgeted).
+#[cfg_attr(target_arch = "wasm32", inline(never))]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
+fn span_lanes<L: Width<N>, const N: usize>(
+    proto: L,
+    a: [&Pose; N],
+    b: [&Pose; N],
+) -> Option<RegularSpan<L>> {
+    let (oa, qa) = load(proto, a);
+    let (ob, qb) = load(proto, b);
+    kernel::regular_span(oa, qa, ob, qb)
+}
+
+/// The poses at `t` of regular spans (see [`kernel::regular_at`]). Inlined or not as
+/// [`span_lanes`].
+#[cfg_attr(target_arch = "wasm32", inline(never))]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
+fn at_lanes<L: Width<N>, const N: usize>(span: &RegularSpan<L>, t: L) -> Option<(V3<L>, Q<L>)> {
+    kernel::regular_at(span, t)
+}
+
+/// Appends `screw(a[k], t[k], b[k])` for every lane to `out`, through the scalar route when the
+/// group holds a rare case. (Out of line on wasm32, where each batch's closure type would
+/// otherwise get its own copy; inlined natively as [`span_lanes`].)
+#[cfg_attr(target_arch = "wasm32", inline(never))]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
+fn screw_group<L: Width<N>, const N: usize>(
+    proto: L,
+    a: [&Pose; N],
+    t: [f64; N],
+    b: [&Pose; N],
+    out: &mut Vec<Pose>,
+) {
+    match span_lanes(proto, a, b).and_then(|span| at_lanes(&span, proto.gather(|k| t[k]))) {
+        Some(lanes) => push(out, lanes),
+        None => (0..N).for_each(|k| out.push(scalar_screw(a[k], t[k], b[k]))),
+    }
+}
+
+/// Appends `screw(a[k], ½, b[k])` for every lane to `out` (see [`screw_group`]).
+#[cfg_attr(target_arch = "wasm32", inline(never))]
+#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
+fn midpoint_group<L: Width<N>, const N: usize>(
+    proto: L,
+    a: [&Pose; N],
+    b: [&Pose; N],
+    out: &mut Vec<Pose>,
+) {
+    match span_lanes(proto, a, b) {
+        Some(span) => push(out, kernel::regular_midpoint(&span)),
+        None => (0..N).for_each(|k| out.push(scalar_midpoint(a[k], b[k]))),
+    }
+}
+
+/// The scalar routes, out of line: they are rare, and one copy serves every caller.
+#[inline(never)]
+fn scalar_screw(a: &Pose, t: f64, b: &Pose) -> Pose {
+    super::screw(a, t, b)
+}
+
+#[inline(never)]
+fn scalar_midpoint(a: &Pose, b: &Pose) -> Pose {
+    Screw::midpoint(a, b)
+}
+
+/// Appends `screw(a, t, b)` for `(a, t, b) = item(i)`, `i = 0..n`, to `out`.
+pub(crate) fn screws<'p>(
+    n: usize,
+    item: impl Fn(usize) -> (&'p Pose, f64, &'p Pose),
+    out: &mut Vec<Pose>,
+) {
+    struct Screws<'a, F>(usize, F, &'a mut Vec<Pose>);
+    impl<'p, F: Fn(usize) -> (&'p Pose, f64, &'p Pose)> LanesOp for Screws<'_, F> {
+        type Output = ();
+        #[inline(always)]
+        fn run<L: Width<N>, const N: usize>(self, proto: L) {
+            let Screws(n, item, out) = self;
+            out.reserve(n);
+            let mut i = 0;
+            while i + N <= n {
+                let group: [_; N] = group(i, (&Pose::IDENTITY, 0.0, &Pose::IDENTITY), &item);
+                let (a, t, b) = (group.map(|g| g.0), group.map(|g| g.1), group.map(|g| g.2));
+                screw_group(proto, a, t, b, out);
+                i += N;
+            }
+            out.extend((i..n).map(|i| {
+                let (a, t, b) = item(i);
+                scalar_screw(a, t, b)
+            }));
+        }
+    }
+    run_widest(Screws(n, item, out));
+}
+
+/// Appends `screw(a, ½, b)` for `(a, b) = pair(i)`, `i = 0..n`, to `out` (as
+/// [`Screw::midpoint`]: no transcendental function).
+pub(crate) fn midpoints<'p>(
+    n: usize,
+    pair: impl Fn(usize) -> (&'p Pose, &'p Pose),
+    out: &mut Vec<Pose>,
+) {
+    struct Midpoints<'a, F>(usize, F, &'a mut Vec<Pose>);
+    impl<'p, F: Fn(usize) -> (&'p Pose, &'p Pose)> LanesOp for Midpoints<'_, F> {
+        type Output = ();
+        #[inline(always)]
+        fn run<L: Width<N>, const N: usize>(self, proto: L) {
+            let Midpoints(n, pair, out) = self;
+            out.reserve(n);
+            let mut i = 0;
+            while i + N <= n {
+                let group: [_; N] = group(i, (&Pose::IDENTITY, &Pose::IDENTITY), &pair);
+                midpoint_group(proto, group.map(|g| g.0), group.map(|g| g.1), out);
+                i += N;
+            }
+            out.extend((i..n).map(|i| {
+                let (a, b) = pair(i);
+                scalar_midpoint(a, b)
+            }));
+        }
+    }
+    run_widest(Midpoints(n, pair, out));
+}
+
+/// For every span `p[i] → p[(i+1) mod n]` of the cycle `p` and every fraction `ts[j]`, sets
+/// `out[j][i]` to the span's pose at `ts[j]` (`out[j]` is cleared first). Each span's logarithm
+/// is computed once for all the fractions.
+pub(crate) fn sample_cycle(p: &[Pose], ts: &[f64], out: &mut [Vec<Pose>]) {
+    struct SampleCycle<'a>(&'a [Pose], &'a [f64], &'a mut [Vec<Pose>]);
+    impl LanesOp for SampleCycle<'_> {
+        type Output = ();
+        #[inline(always)]
+        fn run<L: Width<N>, const N: usize>(self, proto: L) {
+            let SampleCycle(p, ts, out) = self;
+            let n = p.len();
+            for column in out.iter_mut() {
+                column.clear();
+                column.reserve(n);
+            }
+            let next = |i: usize| if i + 1 == n { 0 } else { i + 1 };
+            let scalar = |i: usize, out: &mut [Vec<Pose>]| {
+                let span = Screw::between(&p[i], &p[next(i)]);
+                for (column, &t) in out.iter_mut().zip(ts) {
+                    column.push(span.at(t));
+                }
+            };
+            let mut i = 0;
+            while i + N <= n {
+                let a: [&Pose; N] = std::array::from_fn(|k| &p[i + k]);
+                let b = std::array::from_fn(|k| &p[next(i + k)]);
+                // Every fraction is checked before any pose is written, so that a rare case
+                // sends the whole group to the scalar route.
+                let span = span_lanes(proto, a, b).filter(|span| {
+                    ts.iter()
+                        .all(|&t| kernel::regular_at_fits(span, span.s.constant(t)))
+                });
+                match span {
+                    Some(span) => {
+                        for (column, &t) in out.iter_mut().zip(ts) {
+                            if let Some(lanes) = at_lanes(&span, span.s.constant(t)) {
+                                push(column, lanes);
+                            }
+                        }
+                    }
+                    None => (i..i + N).for_each(|i| scalar(i, out)),
+                }
+                i += N;
+            }
+            (i..n).for_each(|i| scalar(i, out));
+        }
+    }
+    run_widest(SampleCycle(p, ts, out));
+}
+
+/// Run natively and, on wasm32, by wasm-bindgen-test (in Node): each platform's lanes.
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::{DQuat, DVec3};
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    /// Poses including every rare case next to regular ones: identical, opposite-sign and
+    /// nearly identical rotations, half turns, pure translations.
+    fn poses() -> Vec<Pose> {
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        let mut unit = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut out = Vec::new();
+        for k in 0..61 {
+            let axis = DVec3::new(unit() - 0.5, unit() - 0.5, unit() - 0.5).normalize();
+            let angle = match k % 7 {
+                0 => 0.0,
+                1 => std::f64::consts::PI,
+                2 => 1e-200,
+                _ => 6.0 * unit(),
+            };
+            let o = DVec3::new(unit(), unit(), unit()) * 10.0 - 5.0;
+            out.push(Pose::new(o, DQuat::from_axis_angle(axis, angle)));
+            if k % 5 == 0 {
+                // Same rotation, negated sign, and a pure translation of it.
+                let last = *out.last().unwrap();
+                out.push(Pose::new(last.origin + DVec3::X, -last.rotation));
+            }
+        }
+        out
+    }
+
+    fn same_bits(a: &Pose, b: &Pose) -> bool {
+        a.origin.to_array().map(f64::to_bits) == b.origin.to_array().map(f64::to_bits)
+            && a.rotation.to_array().map(f64::to_bits) == b.rotation.to_array().map(f64::to_bits)
+    }
+
+    #[test]
+    fn lanes_reproduce_the_scalar_route_bit_for_bit() {
+        // Every width this machine has: the widest, then capped to four and to two lanes.
+        for width in [usize::MAX, 4, 2] {
+            crate::lanes::with_max_width(width, same_as_scalar);
+        }
+    }
+
+    fn same_as_scalar() {
+        let p = poses();
+        let n = p.len();
+        let ts = [-1.0 / 16.0, 0.3, 9.0 / 8.0, 2.5e5];
+        for &t in &ts {
+            let mut got = Vec::new();
+            screws(n, |i| (&p[i], t, &p[(i * 7 + 3) % n]), &mut got);
+            for (i, g) in got.iter().enumerate() {
+                let want = crate::screw::screw(&p[i], t, &p[(i * 7 + 3) % n]);
+                assert!(same_bits(g, &want), "screw {i} at {t}: {g:?} vs {want:?}");
+            }
+        }
+        let mut mids = Vec::new();
+        midpoints(n, |i| (&p[i], &p[(i + 1) % n]), &mut mids);
+        for (i, m) in mids.iter().enumerate() {
+            assert!(
+                same_bits(m, &Screw::midpoint(&p[i], &p[(i + 1) % n])),
+                "{i}"
+            );
+        }
+        let mut columns = vec![Vec::new(); 3];
+        sample_cycle(&p, &ts[..3], &mut columns);
+        for (j, column) in columns.iter().enumerate() {
+            assert_eq!(column.len(), n);
+            for (i, g) in column.iter().enumerate() {
+                let want = Screw::between(&p[i], &p[(i + 1) % n]).at(ts[j]);
+                assert!(same_bits(g, &want), "span {i} at {}", ts[j]);
+            }
+        }
+    }
+}
