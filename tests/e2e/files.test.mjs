@@ -149,7 +149,7 @@ test(`${BACKEND}: a dropped OBJ becomes the object's mesh`, async () => {
   // The export carries the imported mesh: more than the placeholder's 12 triangles is not
   // expected here, but the mesh's 4 triangles must be there.
   const file = await page.evaluate(async () => {
-    const { exportMotion } = await import('./js/files.js');
+    const { exportMotion } = await import('./js/editor/files.js');
     const f = exportMotion(window.screwbender.app, 'gltf', {}, { save: false });
     return new TextDecoder().decode(f.data);
   });

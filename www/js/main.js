@@ -19,21 +19,11 @@ import { App } from './app.js';
 
 const app = new App();
 
-function fatal(e) {
-  const msg = e?.message ?? String(e);
-  const b = document.getElementById('banner');
-  b.querySelector('.msg').textContent = msg;
-  b.className = 'banner fatal';
-  b.hidden = false;
-  document.getElementById('backend').textContent = 'no graphics';
-  app.errors.push(msg);
-}
-
 window.addEventListener('error', (e) => app.showError(`Unexpected error: ${e.message}`));
 window.addEventListener('unhandledrejection', (e) => app.showError(`Unexpected error: ${e.reason?.message ?? e.reason}`));
 
 const ready = app.start().catch((e) => {
-  fatal(e);
+  app.parts.notices.fatal(e);
   throw e;
 });
 ready.catch(() => {});

@@ -3,8 +3,8 @@
 // (right-hand rule), and listed with angle, slide, pitch and kind. Hovering a row highlights that
 // span's axis and labels it in the 3-D view.
 import { Motion, spanScrewsOf } from '../../pkg/screwbender.js';
-import { el as h } from '../plot.js';
-import { LAYER, Segments, mix, poseOf } from '../scene.js';
+import { el as h } from './plot.js';
+import { LAYER, Segments, mix, poseOf } from '../view/scene.js';
 import { add, sub, scale, cross, normalize, length, hexLinear } from '../math.js';
 
 /** Levels offered by the selector (0 = the control polyscrew). */

@@ -1,11 +1,11 @@
-// Decoupled smoothing and frame independence (paper Fig. 9 V1 / Fig. 8 V2, spec §8.1, §10.8):
+// Decoupled smoothing and frame independence (paper Fig. 9 V1 / Fig. 8 V2, docs/math/properties.md §1, docs/math/decoupled-methods.md §1):
 // the control poses are re-expressed with their local origin at the body point c (P ∘ translate(c))
 // and subdivided twice — by screws, and decoupled (origins by the point rule, rotations by the
 // same rules on rotation-only poses; src/decoupled_blend.rs). The trajectories of the same body
 // points are drawn: the screw ones do not move when c changes, the decoupled ones do.
 import { compareFrames } from '../../pkg/screwbender.js';
-import { el as h } from '../plot.js';
-import { LAYER, Segments, poseOf } from '../scene.js';
+import { el as h } from './plot.js';
+import { LAYER, Segments, poseOf } from '../view/scene.js';
 import { add, sub, length, qrot, hexLinear } from '../math.js';
 
 const C = {
@@ -128,7 +128,7 @@ export default {
       } else state.radial = null;
       const v1 = o.rules === 'split' && circle && o.scheme !== 'bspline';
       info.textContent = `${o.scheme}, ${o.rules === 'split' ? 'split & tweak V1' : 'direct V2'}, ${o.levels} levels; c = (${state.c.map((v) => v.toFixed(2)).join(', ')}). ` +
-        (v1 ? 'Warning: with the V1 4-point/Jarek rules circle4 is degenerate (two-span screws are half turns, spec §6.3); use the direct rules. ' : '') +
+        (v1 ? 'Warning: with the V1 4-point/Jarek rules circle4 is degenerate (two-span screws are half turns, docs/math/subdivision.md §4); use the direct rules. ' : '') +
         'Blue: screw trajectories (unchanged by c). Orange: decoupled trajectories with the origin at c' +
         (state.showRef ? '; faint orange: decoupled with the origin at 0.' : '.');
     }

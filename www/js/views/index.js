@@ -1,4 +1,4 @@
-// The analysis views of the dock, in tab order (see dock.js for the view contract).
+// The analysis views of the dock, in tab order (see ../editor/dock.js for the view contract).
 import plots from './plots.js';
 import metrics from './metrics.js';
 import timing from './timing.js';

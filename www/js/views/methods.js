@@ -2,9 +2,9 @@
 // (trajectories of the body points in distinct colours), their metrics side by side, and for
 // Ramamoorthi–Barr the variable frames and the Euler–Lagrange error before/after optimisation.
 import { methods as listMethods } from '../../pkg/screwbender.js';
-import { LAYER, Segments, track, poseOf } from '../scene.js';
+import { LAYER, Segments, track, poseOf } from '../view/scene.js';
 import { hexLinear, poseMatrix, add, scale } from '../math.js';
-import { lineChart, fmt, el } from '../plot.js';
+import { lineChart, fmt, el } from './plot.js';
 
 /** Overlay colours of the three method slots. */
 const SLOT_COLORS = ['#0072b2', '#d55e00', '#009e73'];

@@ -1,6 +1,6 @@
 // Metrics view: smoothness and fidelity numbers of the current motion (its scheme, rules and
 // levels), measured on the refined poses, for the body points of the object.
-import { el, fmt } from '../plot.js';
+import { el, fmt } from './plot.js';
 
 const ROWS = [
   ['max velocity jump', 'Largest jump of a body point’s velocity at the knots (differences of refined poses)', (r) => r.velocity_jump],

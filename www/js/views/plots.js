@@ -2,7 +2,7 @@
 // acceleration, and the body's angular velocity and acceleration, over time, for the three
 // schemes and the plain polyscrew side by side, with the control-pose times marked.
 import { Motion } from '../../pkg/screwbender.js';
-import { lineChart, el } from '../plot.js';
+import { lineChart, el } from './plot.js';
 
 /** The paper's colours: B-spline red, 4-point blue, Jarek green; the polyscrew grey. */
 export const SCHEME_SERIES = [

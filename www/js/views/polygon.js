@@ -1,10 +1,10 @@
 // Polygon subdivision (paper Fig. 2, and Fig. 3's split & tweak): a planar control polygon refined
-// by the three point schemes of spec §4 — B-spline red, 4-point blue, Jarek green — computed by
+// by the three point schemes of docs/math/point-rules.md — B-spline red, 4-point blue, Jarek green — computed by
 // the core's point rules (subdividePolygon; the same generic code as the pose rules). The preset
 // polygons' vertices can be dragged; the control origins of the motion (projected to z = 0) are
 // shown read-only.
 import { polygonScenes, subdividePolygon, splitTweakStep } from '../../pkg/screwbender.js';
-import { el as h } from '../plot.js';
+import { el as h } from './plot.js';
 
 const SCHEMES = [
   { id: 'bspline', name: 'B-spline', color: '#d1202f' },
@@ -242,7 +242,7 @@ export default {
       g.fillText(`level ${state.level}`, 6, 14);
     }
 
-    /** The refined vertices as a table (at most MAX_ROWS rows; the spec's §4 vectors at level 1). */
+    /** The refined vertices as a table (at most MAX_ROWS rows; the vectors of docs/math/point-rules.md §5 at level 1). */
     function numbers() {
       const body = el.querySelector('.numbers tbody');
       if (!el.querySelector('.numbers').open) return;

@@ -1,9 +1,9 @@
-// Split/tweak step-through (paper Figs. 3–4, spec §6): one subdivision level at a time and, inside
+// Split/tweak step-through (paper Figs. 3–4, docs/math/subdivision.md): one subdivision level at a time and, inside
 // a level, (a) the split — the screw midpoint of every span inserted — then (b) the tweak of each
 // pose, drawn as arrows from before to after (origins), with the object before the tweak (pale
 // ghosts) and after it. The core's splitTweakStep computes both (src/split_tweak.rs).
 import { splitTweakStep } from '../../pkg/screwbender.js';
-import { LAYER, SLOT, Segments, instances, matricesOf, poseOf } from '../scene.js';
+import { LAYER, SLOT, Segments, instances, matricesOf, poseOf } from '../view/scene.js';
 import { add, sub, scale, cross, normalize, length, hexLinear } from '../math.js';
 
 /** Scale of the before-tweak ghosts relative to the object. */
@@ -24,7 +24,7 @@ const C = {
 
 const SCHEME_NAMES = { bspline: 'B-spline', fourpoint: '4-point', jarek: 'Jarek', j: 'J_s' };
 
-/** What the tweak of one step does, by scheme and rule set (spec §6.1 / §6.2). */
+/** What the tweak of one step does, by scheme and rule set (docs/math/subdivision.md §2 / §3). */
 function tweakText(o) {
   const s = o.scheme;
   if (o.rules === 'split') {
@@ -147,7 +147,7 @@ export default {
       const r = 0.015 * size;
       const rules = o.rules === 'split' ? 'split & tweak V1' : 'direct V2';
       const name = SCHEME_NAMES[o.scheme] ?? o.scheme;
-      const open = m.closed ? '' : ' (open motion: the dummy end poses of spec §7 are included)';
+      const open = m.closed ? '' : ' (open motion: the dummy end poses of docs/math/open-sequences.md are included)';
       if (phase === 'split') {
         seg.polyline(origins(step.input), m.closed, C.input, 1.5 * dpr, 0.9);
         seg.polyline(origins(step.split), m.closed, C.split, 1.2 * dpr, 0.6);

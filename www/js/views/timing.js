@@ -1,8 +1,8 @@
-// Timing view (paper §1, spec §9): per-control-pose times in a small table. The motion is
+// Timing view (paper §1, docs/math/timing.md): per-control-pose times in a small table. The motion is
 // retimed by a C¹ monotone piecewise-cubic map u = p(t) (the path is unchanged, only the speed
 // along it); the Plots view and glTF / CSV export use these times.
 import { timingMap } from '../../pkg/screwbender.js';
-import { lineChart, el, fmt } from '../plot.js';
+import { lineChart, el, fmt } from './plot.js';
 
 class TimingView {
   constructor(app, root) {

@@ -1,5 +1,5 @@
 // The controls: lil-gui panel, toolbar, timeline, help overlay, paste dialog.
-import GUI from '../vendor/lil-gui.esm.min.js';
+import GUI from '../../vendor/lil-gui.esm.min.js';
 import { exportMotion, importFiles } from './files.js';
 
 const SCHEMES = { 'Cubic B-spline': 'bspline', '4-point': 'fourpoint', Jarek: 'jarek', 'J_s (slider)': 'j' };

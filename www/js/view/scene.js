@@ -1,5 +1,5 @@
 // Builds the renderer's instance and segment arrays from the motion (typed arrays only).
-import { add, hexLinear, poseMatrix, qrot, scale, cross, normalize, dot } from './math.js';
+import { add, hexLinear, poseMatrix, qrot, scale, cross, normalize, dot } from '../math.js';
 
 /** Floats per mesh instance (matrix + RGBA) and per line segment (see src/web/render/mod.rs). */
 export const INSTANCE = 20;

@@ -1,13 +1,19 @@
-// File export (glTF .glb / .gltf + .bin, CSV) and drag-and-drop import of the playground.
+// Files in and out of the playground: motion documents and sessions (JSON), meshes (OBJ, glTF),
+// exports (glTF .glb / .gltf + .bin, CSV, JSON) and drag-and-drop import.
 //
 // Export and import go through the same core functions as `screwbender export` / `import`
-// (Motion.exportFile, importMotionFile), so a file written here equals the CLI's.
-import { importMotionFile } from '../pkg/screwbender.js';
+// (Motion.exportFile, importMotionFile), so a file written here equals the CLI's. Every import
+// is one undoable edit, and a failed one changes nothing. The functions take the app; the
+// default export is the app's part (see app.js for the part contract).
+import { Motion, importMotionFile } from '../../pkg/screwbender.js';
+import { IMPORT_SIZE } from '../view/drawing.js';
+import { SLOT } from '../view/scene.js';
+import { SESSION_VERSION, MAX_SAVED_MESH } from './session.js';
 
 /** Largest file the page reads (the core refuses more than 64 MiB as well). */
 export const MAX_IMPORT_BYTES = 64 << 20;
-/** Size of the cube an imported mesh is scaled to fit (scene units; the page shows it so). */
-export const IMPORT_SIZE = 1.6;
+/** Largest mesh file accepted by the page (the core also checks MAX_OBJ_BYTES / MAX_GLTF_BYTES). */
+export const MAX_MESH_BYTES = 32 << 20;
 
 /** Saves bytes as a download. */
 export function download(name, data, type) {
@@ -136,3 +142,108 @@ export function bindDrop(app) {
     importFiles(app, e.dataTransfer.files);
   });
 }
+
+/** Imports JSON text: a saved session (from Export) or a plain motion document. */
+function importJson(app, text, fileName = 'JSON') {
+  if (text.length > app.limits.maxDocumentBytes) {
+    return app.showError(`${fileName} is ${text.length} bytes; the limit is ${app.limits.maxDocumentBytes} bytes. Nothing was changed.`);
+  }
+  let motion;
+  try {
+    const trimmed = text.trim();
+    // Invalid JSON falls through to the core's parser, whose message names line and column.
+    let obj = null;
+    try {
+      obj = JSON.parse(trimmed);
+    } catch {
+      obj = null;
+    }
+    if (obj && obj.version === SESSION_VERSION && obj.document) {
+      // Validated before the edit, so that a bad session is an import error, not an edit error.
+      new Motion(obj.document, obj.options).free();
+      app.edit(() => app.applySession({ ...obj, camera: undefined }));
+      return true;
+    }
+    motion = Motion.fromJson(trimmed, app.motion.options());
+  } catch (e) {
+    app.showError(`Import failed, nothing was changed: ${fileName}: ${e.message}`);
+    return false;
+  }
+  return replaceMotion(app, motion);
+}
+
+/** Imports a motion document (from importMotionFile); the subdivision options are kept. */
+function importDocument(app, doc, fileName) {
+  let motion;
+  try {
+    motion = new Motion(doc, app.motion.options());
+  } catch (e) {
+    app.showError(`Import failed, nothing was changed: ${fileName}: ${e.message}`);
+    return false;
+  }
+  const ok = replaceMotion(app, motion);
+  if (ok) app.ui?.toast(`${fileName}: ${motion.poseCount} control poses (${motion.closed ? 'cycle' : 'open'})`);
+  return ok;
+}
+
+/** Replaces the motion by `motion` as one undoable edit (the view frames the new poses). */
+function replaceMotion(app, motion) {
+  app.edit(() => {
+    app.motion.free();
+    app.motion = motion;
+    app.selected = -1;
+    app.frameAll();
+  });
+  return true;
+}
+
+/** Imports a mesh file: OBJ text or glTF (`.gltf` text / `.glb` bytes as a Uint8Array). */
+function importMesh(app, kind, data, fileName = 'mesh', failure = null) {
+  const size = typeof data === 'string' ? data.length : data.byteLength;
+  if (size > MAX_MESH_BYTES) {
+    app.showError(`The mesh file is over ${MAX_MESH_BYTES >> 20} MiB. Nothing was changed.`);
+    return false;
+  }
+  let mesh;
+  if (kind === 'gltf') {
+    const bytes = typeof data === 'string' ? new TextEncoder().encode(data) : data;
+    let bin = '';
+    for (let i = 0; i < bytes.length; i += 0x8000) bin += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+    mesh = { kind: 'gltf', data: btoa(bin) };
+  } else mesh = { kind: 'obj', data };
+  try {
+    // Validate into the animation slot first; on failure nothing changed.
+    app.setImportedMesh(SLOT.anim, mesh);
+  } catch (e) {
+    app.meshesChanged();
+    app.showError(failure ? `${failure}; read as a mesh: ${e.message}` : `Mesh import failed, nothing was changed: ${fileName}: ${e.message}`);
+    return false;
+  }
+  app.edit(() => {
+    app.imported = mesh;
+    app.view.object = 'obj';
+    app.meshesChanged();
+  });
+  if (mesh.data.length > MAX_SAVED_MESH) {
+    app.showError('The mesh is too large to be autosaved or shared; it will be lost on reload.', 'warn');
+  }
+  return true;
+}
+
+function exportJson(app) {
+  download(`${app.motion.name ?? app.view.scene ?? 'motion'}.json`, app.motion.toJson(), 'application/json');
+}
+
+export default {
+  id: 'files',
+  create(app) {
+    return {
+      /** Makes the window a drop target (once the page runs). */
+      bind: () => bindDrop(app),
+      importJson: (text, fileName) => importJson(app, text, fileName),
+      importDocument: (doc, fileName) => importDocument(app, doc, fileName),
+      importMesh: (kind, data, fileName, failure) => importMesh(app, kind, data, fileName, failure),
+      exportJson: () => exportJson(app),
+    };
+  },
+};

@@ -1,5 +1,5 @@
 // Orbit camera (z up): yaw/pitch around a target, distance; mouse, wheel and touch controls.
-import { add, cross, lookAt, mmul, normalize, perspective, scale, sub } from './math.js';
+import { add, cross, lookAt, mmul, normalize, perspective, scale, sub } from '../math.js';
 
 export class OrbitCamera {
   constructor() {

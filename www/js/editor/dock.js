@@ -8,10 +8,10 @@
 // options or the view settings (reason 'edit'), during drags (reason 'drag', only for views
 // with `live: true`; the Motion then already holds the dragged pose), and when the view is
 // shown (reason 'show'). `show(false)` must remove the view's 3-D overlays (its LAYER / SLOT
-// entries of scene.js), so a hidden view costs nothing. No inline `style` attributes in markup
-// (the page's CSP refuses them): set styles through `element.style`, or give colour swatches a
-// `data-color` attribute.
-import { VIEWS } from './views/index.js';
+// entries of view/scene.js), so a hidden view costs nothing. No inline `style` attributes in
+// markup (the page's CSP refuses them): set styles through `element.style`, or give colour
+// swatches a `data-color` attribute.
+import { VIEWS } from '../views/index.js';
 
 export class Dock {
   constructor(app) {

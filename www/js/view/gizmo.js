@@ -3,7 +3,7 @@
 import {
   add, sub, scale, dot, cross, normalize, length, qaxis, qmul, qnormalize, rayPlane, lineRayParam,
   segmentDistance2, poseMatrix,
-} from './math.js';
+} from '../math.js';
 import { COLORS, Segments, circle, INSTANCE } from './scene.js';
 
 const AXES = [[1, 0, 0], [0, 1, 0], [0, 0, 1]];

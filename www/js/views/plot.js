@@ -1,5 +1,5 @@
 // Small line charts for the analysis views, on uPlot (vendored in www/vendor/).
-import uPlot from '../vendor/uPlot.esm.js';
+import uPlot from '../../vendor/uPlot.esm.js';
 
 /** Distinct colours (colour-blind safe, Okabe–Ito) for series that are not the paper's schemes. */
 export const PALETTE = ['#0072b2', '#d55e00', '#009e73', '#cc79a7', '#e69f00', '#56b4e9', '#000000'];

@@ -1,0 +1,146 @@
+// Editing with the pointer and the keyboard. The viewer turns the camera itself (view/pointer.js);
+// this part is its `tool`: a press on a handle selects the pose, a press on a gizmo part (or a
+// handle) drags the pose, hovering highlights what a press would grab. Keys are the editor's
+// shortcuts (listed in the help overlay of index.html). The part contract is in app.js.
+
+export default {
+  id: 'input',
+  create(app) {
+    function beginPoseDrag(part, pt, e) {
+      const pose = app.motion.pose(app.selected);
+      const drag = app.viewer.startDrag(part, pose, pt);
+      if (!drag) return false;
+      app.drag = { part, drag, index: app.selected, moved: false, before: app.snapshot(), session: app.viewer.drawing.dragSession() };
+      app.canvas.setPointerCapture?.(e.pointerId);
+      app.viewer.rebuildGizmo();
+      return true;
+    }
+
+    function dragMove(pt, snapOn) {
+      const d = app.drag;
+      const pose = d.drag.move(app.viewer.ray(pt), pt, snapOn || app.view.snap);
+      if (!pose) return;
+      applyDragPose(d.index, pose);
+    }
+
+    /**
+     * One drag step. With a drag session, the pose goes only into the session (validated
+     * there); the Motion (the document) receives the final pose on release, so a step costs
+     * only the local update. Without one, or with the polyscrew shown (it is rebuilt in full),
+     * the Motion is updated and everything rebuilt.
+     */
+    function applyDragPose(index, pose) {
+      const d = app.drag;
+      const t0 = performance.now();
+      const fast = d.session && !app.view.showPolyscrew;
+      try {
+        if (fast) d.session.setPose(index, Float64Array.from([...pose.origin, ...pose.rotation]));
+        // Views that follow drags read the Motion: give it the pose now, not only on release.
+        if (!fast || app.dock?.wantsLive) app.motion.setPose(index, pose);
+      } catch (err) {
+        app.showError(err.message);
+        return;
+      }
+      d.pose = pose;
+      if (!d.moved) {
+        // The undo step is recorded by the first move, so a click on a handle is no edit.
+        app.history.push(d.before);
+        d.moved = true;
+      }
+      if (fast) {
+        d.pending = true;
+        app.viewer.drawing.dragStep(d.session, index, pose);
+      } else app.viewer.rebuild();
+      app.dock?.changed('drag');
+      app.stats.dragMs = performance.now() - t0;
+    }
+
+    function endDrag() {
+      if (app.drag?.pending) app.motion.setPose(app.drag.index, app.drag.pose);
+      if (app.drag?.moved) {
+        app.viewer.rebuild();
+        app.autosave();
+        // Views that do not follow drags catch up now.
+        app.dock?.changed('edit');
+      }
+      app.drag?.session?.free();
+      app.drag = null;
+      app.viewer.rebuildGizmo();
+      app.requestDraw();
+      app.ui?.refresh();
+    }
+
+    const tool = {
+      press(pt, e) {
+        const part = app.viewer.gizmoHit(pt);
+        if (part && beginPoseDrag(part, pt, e)) return 'drag';
+        const k = app.viewer.pickPose(pt);
+        if (k < 0) return null;
+        if (k !== app.selected) app.select(k);
+        // A handle dragged right away moves its pose in the view plane.
+        return beginPoseDrag('view', pt, e) ? 'drag' : 'taken';
+      },
+      drag(pt, e) {
+        if (app.drag) dragMove(pt, e.shiftKey);
+      },
+      release: endDrag,
+      cancel() {
+        if (app.drag) endDrag();
+      },
+      hover(pt) {
+        const hov = app.viewer.gizmoHit(pt);
+        const hp = hov ? -1 : app.viewer.pickPose(pt);
+        if (hov !== app.hover || hp !== app.hoverPose) {
+          app.hover = hov;
+          app.hoverPose = hp;
+          app.canvas.style.cursor = hov || hp >= 0 ? 'pointer' : 'grab';
+          app.viewer.rebuildHandles();
+          app.requestDraw();
+        }
+      },
+      click() {
+        // A click on empty space deselects.
+        if (app.selected >= 0) app.select(-1);
+      },
+    };
+
+    function onKey(e) {
+      const t = e.target;
+      if (t && (t.tagName === 'INPUT' || t.tagName === 'TEXTAREA' || t.tagName === 'SELECT')) return;
+      const k = e.key;
+      const mod = e.ctrlKey || e.metaKey;
+      let handled = true;
+      if (mod && (k === 'z' || k === 'Z')) e.shiftKey ? app.redo() : app.undo();
+      else if (mod && (k === 'y' || k === 'Y')) app.redo();
+      else if (mod) handled = false;
+      else if (k >= '0' && k <= '8') app.setOption('levels', Number(k));
+      else if (k === 'b') app.setScheme('bspline');
+      else if (k === 'f') app.setScheme('fourpoint');
+      else if (k === 'j') app.setScheme('jarek');
+      else if (k === 'w' || k === 'W') app.setMode('translate');
+      else if (k === 'e' || k === 'E') app.setMode('rotate');
+      else if (k === ' ') app.setPlaying(!app.anim.playing);
+      else if (k === 'Delete' || k === 'Backspace') app.deleteSelected();
+      else if (k === 'Insert' || k === 'i') app.insertAfterSelected();
+      else if (k === 'a' || k === 'Home') app.frameAll();
+      else if (k === 'ArrowRight' || k === 'Tab') app.select((app.selected + 1) % app.motion.poseCount);
+      else if (k === 'ArrowLeft') app.select((app.selected - 1 + app.motion.poseCount) % app.motion.poseCount);
+      else if (k === 'Escape') {
+        if (!document.getElementById('help').hidden) app.ui.toggleHelp(false);
+        else app.select(-1);
+      } else if (k === '?' || k === 'h') app.ui.toggleHelp();
+      // The toolbar button knows which view to reopen.
+      else if (k === 'v' || k === 'V') document.getElementById('t-dock').click();
+      else handled = false;
+      if (handled) e.preventDefault();
+    }
+
+    return {
+      /** Binds the pointer (through the viewer) and the keyboard (once the page runs). */
+      bind() {
+        app.viewer.bindPointer(tool);
+        window.addEventListener('keydown', onKey);
+      },
+    };
+  },
+};

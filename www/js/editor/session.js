@@ -1,0 +1,271 @@
+// The session: everything the page restores — the motion document and options, the display
+// settings, the selection, the playback and the camera. Undo/redo keeps snapshots of it, the
+// autosave writes it to localStorage, share links carry it in the URL hash.
+//
+// The pure helpers (History, hash coding, storage) come first; the part (default export, see
+// app.js for the part contract) applies sessions to the app and records its edits.
+import { Motion } from '../../pkg/screwbender.js';
+import { SLOT } from '../view/scene.js';
+
+export const STORAGE_KEY = 'screwbender.playground.v1';
+/** Session format version written in saves and share links. */
+export const SESSION_VERSION = 1;
+/** Undo steps kept. */
+export const MAX_UNDO = 200;
+
+/** Undo/redo over serialized snapshots (strings). */
+export class History {
+  constructor() {
+    this.undoStack = [];
+    this.redoStack = [];
+  }
+  /** Records `snapshot` (the state *before* an edit). */
+  push(snapshot) {
+    if (this.undoStack[this.undoStack.length - 1] === snapshot) return;
+    this.undoStack.push(snapshot);
+    if (this.undoStack.length > MAX_UNDO) this.undoStack.shift();
+    this.redoStack.length = 0;
+  }
+  /** Returns the snapshot to restore, given the current one, or null. */
+  undo(current) {
+    const s = this.undoStack.pop();
+    if (s === undefined) return null;
+    this.redoStack.push(current);
+    return s;
+  }
+  redo(current) {
+    const s = this.redoStack.pop();
+    if (s === undefined) return null;
+    this.undoStack.push(current);
+    return s;
+  }
+  get canUndo() {
+    return this.undoStack.length > 0;
+  }
+  get canRedo() {
+    return this.redoStack.length > 0;
+  }
+}
+
+/**
+ * Longest share-link payload accepted, in base64url characters: 2 000 000, just under
+ * Chromium's 2 MiB URL limit (a session with the largest autosaved mesh, 1 MiB, fits). Longer
+ * payloads are refused before anything is decoded.
+ */
+export const MAX_SHARE_CHARS = 2_000_000;
+
+/** UTF-8 JSON → base64url, and back. */
+export function encodeHash(obj) {
+  const bytes = new TextEncoder().encode(JSON.stringify(obj));
+  let bin = '';
+  for (const b of bytes) bin += String.fromCharCode(b);
+  return btoa(bin).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+}
+
+/**
+ * Decodes a share-link payload into a session object. Throws an Error saying what is wrong
+ * (empty, too long, not base64url, not UTF-8, not JSON, not a session of this version); the
+ * session itself is validated by applySession (below).
+ */
+export function decodeHash(text) {
+  if (typeof text !== 'string' || text.length === 0) throw new Error('the link holds no session');
+  if (text.length > MAX_SHARE_CHARS) {
+    throw new Error(`the link's session is ${text.length} characters long; the limit is ${MAX_SHARE_CHARS}`);
+  }
+  if (!/^[A-Za-z0-9_-]+$/.test(text) || text.length % 4 === 1) {
+    throw new Error('the link is malformed (its session is not base64url text; was it cut off?)');
+  }
+  const bin = atob(text.replace(/-/g, '+').replace(/_/g, '/'));
+  const bytes = Uint8Array.from(bin, (c) => c.charCodeAt(0));
+  let json;
+  try {
+    json = new TextDecoder('utf-8', { fatal: true }).decode(bytes);
+  } catch {
+    throw new Error('the link is malformed (its session is not UTF-8 text)');
+  }
+  let obj;
+  try {
+    obj = JSON.parse(json);
+  } catch (e) {
+    throw new Error(`the link is malformed (its session is not JSON: ${e.message})`);
+  }
+  if (!obj || typeof obj !== 'object' || Array.isArray(obj) || !obj.document) {
+    throw new Error('the link holds no session object');
+  }
+  if (obj.version !== SESSION_VERSION) {
+    throw new Error(`the link's session has version ${JSON.stringify(obj.version)}; this page reads version ${SESSION_VERSION}`);
+  }
+  return obj;
+}
+
+export function loadSaved() {
+  try {
+    const text = localStorage.getItem(STORAGE_KEY);
+    return text ? JSON.parse(text) : null;
+  } catch {
+    return null;
+  }
+}
+
+/** Saves; returns an error message when storage is full or unavailable. */
+export function save(session) {
+  try {
+    localStorage.setItem(STORAGE_KEY, JSON.stringify(session));
+    return null;
+  } catch (e) {
+    return `autosave failed: ${e.message}`;
+  }
+}
+
+/** The largest strobe count (instances of the object along the motion) a session may ask for. */
+export const MAX_STROBE = 20000;
+/** Imported meshes up to this size are kept in the autosave and share links. */
+export const MAX_SAVED_MESH = 1 << 20;
+
+export default {
+  id: 'session',
+  create(app) {
+    let lastEdit = null;
+
+    /** The serializable session (what autosave, share links and undo store). */
+    function session(withCamera = true) {
+      const s = {
+        version: SESSION_VERSION,
+        document: app.motion.toDocument(),
+        options: app.motion.options(),
+        view: { ...app.view },
+        selected: app.selected,
+        mode: app.mode,
+        anim: { u: app.anim.u, speed: app.anim.speed, loop: app.anim.loop },
+      };
+      if (app.imported && app.imported.data.length <= MAX_SAVED_MESH) s.mesh = app.imported;
+      if (withCamera) s.camera = app.camera.toJSON();
+      return s;
+    }
+
+    /** Replaces the whole state by a session; throws (leaving everything as it was) if invalid. */
+    function applySession(s) {
+      if (!s || typeof s !== 'object') throw new Error('not a session object');
+      const motion = new Motion(s.document, s.options); // validates everything
+      if (s.mesh) {
+        app.setImportedMesh(SLOT.strobe, s.mesh); // validates the mesh
+        app.imported = s.mesh;
+      }
+      app.motion?.free();
+      app.motion = motion;
+      const v = s.view ?? {};
+      for (const k of Object.keys(app.view)) {
+        // Undo and imports do not switch the open analysis view (only the initial restore does).
+        if (k === 'dock' && app.dock) continue;
+        if (k in v && typeof v[k] === typeof app.view[k]) app.view[k] = v[k];
+      }
+      app.view.strobe = Math.max(1, Math.min(MAX_STROBE, Math.round(app.view.strobe)));
+      const t = app.view.times;
+      if (t !== null && !(Array.isArray(t) && t.length <= 1e5 && t.every(Number.isFinite))) app.view.times = null;
+      if (app.view.object === 'obj' && !app.imported) app.view.object = 'scene';
+      app.selected = Number.isInteger(s.selected) && s.selected < motion.poseCount ? s.selected : -1;
+      app.mode = s.mode === 'rotate' ? 'rotate' : 'translate';
+      if (s.anim) {
+        if (Number.isFinite(s.anim.u)) app.anim.u = s.anim.u;
+        if (Number.isFinite(s.anim.speed)) app.anim.speed = s.anim.speed;
+        if (typeof s.anim.loop === 'boolean') app.anim.loop = s.anim.loop;
+      }
+      if (s.camera) app.camera.load(s.camera);
+      else app.frameAll();
+      app.meshesChanged();
+      app.changed(false);
+    }
+
+    /** A snapshot for undo (no camera: undo does not move the view). */
+    function snapshot() {
+      return JSON.stringify(session(false));
+    }
+
+    function restoreSnapshot(text) {
+      const cam = app.camera.toJSON();
+      applySession({ ...JSON.parse(text), camera: cam });
+      app.ui?.refresh();
+    }
+
+    function autosave() {
+      if (!app.motion) return;
+      const err = save(session());
+      if (err) app.showError(err, 'warn');
+    }
+
+    return {
+      session,
+      applySession,
+      snapshot,
+      autosave,
+
+      /**
+       * Share link > autosave: applies the first that works and returns true; false when
+       * neither is there (or both failed, with a message each), so the caller loads a preset.
+       */
+      restoreInitial() {
+        const hash = location.hash.match(/^#s=(.+)$/);
+        if (hash) {
+          try {
+            applySession(decodeHash(hash[1]));
+            history.replaceState(null, '', location.pathname + location.search);
+            autosave();
+            return true;
+          } catch (e) {
+            app.showError(`The shared link could not be opened: ${e.message}`);
+          }
+        }
+        const saved = loadSaved();
+        if (saved) {
+          try {
+            applySession(saved);
+            return true;
+          } catch (e) {
+            app.showError(`The autosaved session could not be restored: ${e.message}`);
+          }
+        }
+        return false;
+      },
+
+      /** Records the current state before an edit. */
+      beginEdit() {
+        app.history.push(snapshot());
+      },
+
+      /**
+       * Runs `f` as one undoable edit; errors go to the banner and leave the state unchanged.
+       * Edits with the same `coalesce` key less than a second apart (a slider being dragged)
+       * make one undo step.
+       */
+      edit(f, coalesce = null) {
+        const before = snapshot();
+        try {
+          const r = f();
+          const now = performance.now();
+          const merge = coalesce !== null && coalesce === lastEdit?.key && now - lastEdit.time < 1000;
+          if (!merge) app.history.push(before);
+          lastEdit = { key: coalesce, time: now };
+          app.changed();
+          return r;
+        } catch (e) {
+          app.showError(e.message);
+          return undefined;
+        }
+      },
+
+      undo() {
+        const s = app.history.undo(snapshot());
+        if (s) restoreSnapshot(s);
+      },
+
+      redo() {
+        const s = app.history.redo(snapshot());
+        if (s) restoreSnapshot(s);
+      },
+
+      shareLink() {
+        return `${location.origin}${location.pathname}${location.search}#s=${encodeHash(session())}`;
+      },
+    };
+  },
+};

@@ -1,0 +1,94 @@
+// Pointer gestures on the viewer's canvas: orbit (drag), pan (right / middle / Shift-drag, two
+// fingers), zoom (wheel, pinch). The camera gestures live here, with the viewer, so an embedded
+// view can be turned without the editor; the editor claims presses on poses and gizmo parts
+// through `tool`:
+//   press(pt, e)  a primary-button press (no Alt): 'drag' when the tool starts a drag (it then
+//                 gets drag / release), any other truthy value when it used the press up,
+//                 falsy to leave it to the camera
+//   drag(pt, e)   pointer moves during the tool's drag;   release()  its end
+//   hover(pt)     pointer moves with no button down;     cancel()   a second finger arrived
+//   click()       a press and release on empty space without moving (not a drag of the view)
+// All hooks are optional.
+import { local } from './picking.js';
+
+export function bindPointer(viewer, tool = {}) {
+  const c = viewer.canvas;
+  const pointers = new Map();
+  let gesture = null; // {kind: 'orbit'|'pan'|'tool'|'pinch', ...}
+  c.addEventListener('contextmenu', (e) => e.preventDefault());
+  c.addEventListener('pointerdown', (e) => {
+    c.focus();
+    const pt = local(viewer, e);
+    pointers.set(e.pointerId, pt);
+    if (pointers.size === 2) {
+      // Second finger: cancel any drag, start pinch/pan.
+      tool.cancel?.();
+      const [a, b] = [...pointers.values()];
+      gesture = { kind: 'pinch', dist: Math.hypot(a[0] - b[0], a[1] - b[1]), mid: [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2] };
+      return;
+    }
+    if (pointers.size > 2) return;
+    const button = e.button;
+    if (button === 0 && !e.altKey) {
+      const took = tool.press?.(pt, e);
+      if (took === 'drag') {
+        gesture = { kind: 'tool' };
+        return;
+      }
+      if (took) return;
+    }
+    const pan = button === 1 || button === 2 || e.shiftKey;
+    gesture = { kind: pan ? 'pan' : 'orbit', last: pt, start: pt, moved: false };
+    c.setPointerCapture?.(e.pointerId);
+  });
+  c.addEventListener('pointermove', (e) => {
+    const pt = local(viewer, e);
+    if (pointers.has(e.pointerId)) pointers.set(e.pointerId, pt);
+    if (!gesture) {
+      tool.hover?.(pt);
+      return;
+    }
+    const { camera } = viewer;
+    if (gesture.kind === 'tool') {
+      tool.drag?.(pt, e);
+    } else if (gesture.kind === 'pinch' && pointers.size >= 2) {
+      const [a, b] = [...pointers.values()];
+      const dist = Math.hypot(a[0] - b[0], a[1] - b[1]);
+      const mid = [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
+      if (dist > 0 && gesture.dist > 0) camera.zoom(gesture.dist / dist);
+      camera.pan(mid[0] - gesture.mid[0], mid[1] - gesture.mid[1], viewer.pixelSize().cssH);
+      gesture.dist = dist;
+      gesture.mid = mid;
+      viewer.cameraMoved();
+    } else if (gesture.kind === 'orbit' || gesture.kind === 'pan') {
+      const dx = pt[0] - gesture.last[0];
+      const dy = pt[1] - gesture.last[1];
+      gesture.last = pt;
+      if (Math.hypot(pt[0] - gesture.start[0], pt[1] - gesture.start[1]) > 3) gesture.moved = true;
+      if (gesture.kind === 'orbit') camera.orbit(dx, dy);
+      else camera.pan(dx, dy, viewer.pixelSize().cssH);
+      c.style.cursor = 'grabbing';
+      viewer.cameraMoved();
+    }
+  });
+  const up = (e) => {
+    pointers.delete(e.pointerId);
+    if (!gesture) return;
+    if (gesture.kind === 'tool') tool.release?.();
+    else if (gesture.kind === 'orbit' && !gesture.moved && e.type === 'pointerup') tool.click?.();
+    c.style.cursor = 'grab';
+    gesture = pointers.size === 0 ? null : gesture.kind === 'pinch' ? null : gesture;
+  };
+  c.addEventListener('pointerup', up);
+  c.addEventListener('pointercancel', up);
+  c.addEventListener(
+    'wheel',
+    (e) => {
+      e.preventDefault();
+      const k = e.deltaMode === 1 ? 0.05 : 0.0015;
+      viewer.camera.zoom(Math.exp(e.deltaY * k));
+      viewer.cameraMoved();
+    },
+    { passive: false },
+  );
+}

@@ -1,0 +1,288 @@
+// The 3-D view on its own: a wasm Renderer on a canvas, an orbit camera with its pointer
+// gestures, the frame loop, and the drawing and picking of a motion model.
+//
+// It imports nothing of the editor (panel, dock, toolbar, timeline) and looks up no element of
+// the page, so the same view can be embedded elsewhere (a <screw-bender> element); the editor
+// drives it through this class and hears back through the hooks of the options.
+//
+//   const viewer = new Viewer(canvas, wasm, { model, webgl2, warn, onTime, onPlay });
+//   await viewer.start();           // renderer (WebGPU, else WebGL2), resize observer, frame loop
+//   viewer.meshesChanged(); viewer.rebuild(); viewer.frameAll();
+//   viewer.bindPointer(tool);       // camera gestures; `tool` (optional) takes presses on content
+//
+// `wasm` is the initialised wasm-bindgen module (Renderer, Motion, DragSession, scenes). The
+// model is read afresh on every rebuild, never copied, so its owner edits it in place and then
+// calls the matching rebuild (see newModel for its fields).
+import { OrbitCamera } from './camera.js';
+import { SLOT } from './scene.js';
+import { Drawing } from './drawing.js';
+import * as picking from './picking.js';
+import { bindPointer } from './pointer.js';
+
+/**
+ * A model with nothing selected and the default display; `motion` must be set (a wasm Motion)
+ * before the first rebuild. The editor's App is a model too: it has these fields.
+ */
+export function newModel(scene = '') {
+  return {
+    motion: null,
+    view: {
+      scene, // preset id: the object drawn for 'scene' and its body points
+      object: 'scene', // 'scene', a named shape (bar, block, …) or 'obj' (the imported mesh)
+      strobe: 64,
+      showStrobe: true,
+      showControl: true,
+      showTrajectories: true,
+      showPolyscrew: false,
+      showPolygon: true,
+      showTriads: true,
+      showGrid: true,
+    },
+    selected: -1, // selected control pose (gets the gizmo), or -1
+    mode: 'translate', // gizmo: 'translate' | 'rotate'
+    anim: { playing: false, u: 0, speed: 1, loop: true, visible: false },
+    imported: null, // {kind: 'obj', data: text} or {kind: 'gltf', data: base64}
+    hover: null, // gizmo part under the pointer
+    hoverPose: undefined, // control pose under the pointer (-1: none)
+    drag: null, // the drag in progress: its `part` is drawn highlighted
+  };
+}
+
+export class Viewer {
+  /**
+   * options: model (default newModel()); webgl2: true to skip WebGPU; warn(message): non-fatal
+   * problems (a backend fallback, drags without live update); onTime(u, a, b): the animated
+   * object moved; onPlay(playing): playback started or stopped.
+   */
+  constructor(canvas, wasm, { model = newModel(), webgl2 = false, warn, onTime, onPlay } = {}) {
+    this.canvas = canvas;
+    this.wasm = wasm;
+    this.model = model;
+    this.webgl2 = webgl2;
+    this.warn = warn ?? ((m) => console.warn(m));
+    this.onTime = onTime ?? (() => {});
+    this.onPlay = onPlay ?? (() => {});
+    this.scenes = wasm.scenes();
+    this.camera = new OrbitCamera();
+    this.drawing = new Drawing(this);
+    this.dirty = true;
+    this.frames = 0;
+    this.stats = { updateMs: 0, frameMs: 0, renderMs: 0 };
+  }
+
+  /** Starts the renderer (throws when the browser can draw neither way) and the frame loop. */
+  async start() {
+    const hasGpu = !!navigator.gpu;
+    const { w, h } = this.pixelSize();
+    const noGraphics = (e) =>
+      new Error(`This browser offers neither WebGPU nor WebGL2, so the playground cannot draw. (${e.message})`);
+    const { Renderer } = this.wasm;
+    try {
+      this.renderer = await Renderer.create(this.canvas, !this.webgl2, w, h);
+    } catch (e) {
+      if (this.webgl2 || !hasGpu) throw noGraphics(e);
+      // A failed WebGPU start falls back to WebGL2 on a fresh canvas (a canvas keeps the first
+      // kind of context it gave out).
+      this.replaceCanvas();
+      try {
+        this.renderer = await Renderer.create(this.canvas, false, w, h);
+      } catch (e2) {
+        throw noGraphics(e2);
+      }
+      this.warn(`WebGPU failed to start (${e.message}); using WebGL2.`);
+    }
+    this.backend = this.renderer.backend;
+    if (!this.webgl2 && hasGpu && this.backend !== 'WebGPU') {
+      this.warn('WebGPU is present but has no usable adapter; using WebGL2.');
+    }
+    this.renderer.setMesh(SLOT.handle, 'unit-sphere', true);
+    this.renderer.setMesh(SLOT.arrow, 'unit-cone', true);
+    new ResizeObserver(() => {
+      this.sizeCache = null;
+      this.requestDraw();
+    }).observe(this.canvas);
+    this.loop = this.loop.bind(this);
+    requestAnimationFrame(this.loop);
+  }
+
+  replaceCanvas() {
+    const fresh = this.canvas.cloneNode(false);
+    this.canvas.replaceWith(fresh);
+    this.canvas = fresh;
+  }
+
+  /** Camera gestures on the canvas; `tool` gets the presses on scene content (see pointer.js). */
+  bindPointer(tool) {
+    bindPointer(this, tool);
+  }
+
+  // ---------------------------------------------------------------- size and frame loop
+
+  /** Canvas size (physical and CSS pixels), measured once per frame (layout reads are slow). */
+  pixelSize() {
+    if (!this.sizeCache) this.sizeCache = this.measure();
+    return this.sizeCache;
+  }
+
+  /** Forgets the measured size (the canvas changed size outside a resize observation). */
+  invalidateSize() {
+    this.sizeCache = null;
+  }
+
+  measure() {
+    const dpr = window.devicePixelRatio || 1;
+    const r = this.canvas.getBoundingClientRect();
+    return {
+      w: Math.max(1, Math.round(r.width * dpr)),
+      h: Math.max(1, Math.round(r.height * dpr)),
+      cssW: r.width,
+      cssH: r.height,
+      dpr,
+    };
+  }
+
+  requestDraw() {
+    this.dirty = true;
+  }
+
+  loop(now) {
+    requestAnimationFrame(this.loop);
+    const { anim, motion } = this.model;
+    // Nothing to draw until the model has a motion (the loop runs from start()).
+    if (!motion) return;
+    if (anim.playing) {
+      const dt = this.lastNow ? Math.min(0.5, (now - this.lastNow) / 1000) : 0;
+      const [a, b] = motion.domain();
+      let u = anim.u + dt * anim.speed;
+      if (u > b) {
+        if (motion.closed || anim.loop) u = a + ((u - a) % (b - a));
+        else {
+          u = b;
+          this.setPlaying(false);
+        }
+      }
+      anim.u = u;
+      this.updateAnim();
+      this.dirty = true;
+    }
+    this.lastNow = now;
+    if (this.dirty) this.draw();
+  }
+
+  draw() {
+    const t0 = performance.now();
+    this.sizeCache = this.measure();
+    const { w, h, cssW, cssH } = this.sizeCache;
+    this.renderer.resize(w, h);
+    this.camera.aspect = cssW / Math.max(1, cssH);
+    const vp = this.camera.viewProj();
+    // Kept for picking: gizmo hits are tested against what was last drawn.
+    this.vp = vp;
+    this.renderer.setCamera(Float32Array.from(vp), Float32Array.from(this.camera.eye));
+    const t1 = performance.now();
+    // A frame the renderer could not draw (surface not ready) stays due.
+    if (this.renderer.render()) this.dirty = false;
+    const t2 = performance.now();
+    this.stats.renderMs = t2 - t1;
+    this.stats.frameMs = t2 - t0;
+    this.frames++;
+  }
+
+  /** Starts or stops playback; either way the animated object stays shown. */
+  setPlaying(on) {
+    const { anim } = this.model;
+    anim.playing = on;
+    anim.visible = true;
+    this.lastNow = undefined;
+    this.onPlay(on);
+  }
+
+  // ---------------------------------------------------------------- camera
+
+  /** Frames the control poses (with a margin). */
+  frameAll() {
+    const { lo, hi } = this.drawing.bounds();
+    const pad = 1.2;
+    const { cssW, cssH } = this.pixelSize();
+    this.camera.aspect = cssW / Math.max(1, cssH);
+    this.camera.frame(lo.map((x) => x - pad), hi.map((x) => x + pad));
+    this.cameraMoved();
+  }
+
+  /** After the camera moved: handles keep their size on screen, so they are rebuilt. */
+  cameraMoved() {
+    if (this.model.motion) this.drawing.rebuildHandles();
+    this.requestDraw();
+  }
+
+  // ---------------------------------------------------------------- drawing (see drawing.js)
+
+  /** After any change of the motion, its options or the display: everything but the meshes. */
+  rebuild() {
+    this.drawing.rebuildMotion();
+    this.drawing.rebuildControls();
+  }
+
+  /** After a change of the selection: the control poses, handles and gizmo. */
+  rebuildControls() {
+    this.drawing.rebuildControls();
+  }
+
+  /** After a change of the pointer's hover: the handles (and gizmo). */
+  rebuildHandles() {
+    this.drawing.rebuildHandles();
+  }
+
+  /** After a change of the gizmo mode or of the drag state. */
+  rebuildGizmo() {
+    this.drawing.rebuildGizmo();
+  }
+
+  /** After a change of model.anim (u or visible). */
+  updateAnim() {
+    this.drawing.updateAnim();
+  }
+
+  /** After a change of the object (view.object, view.scene, imported). */
+  meshesChanged() {
+    this.drawing.meshesChanged();
+  }
+
+  setImportedMesh(slot, mesh) {
+    this.drawing.setImportedMesh(slot, mesh);
+  }
+
+  bodyPoints() {
+    return this.drawing.bodyPoints();
+  }
+
+  // ---------------------------------------------------------------- picking (see picking.js)
+
+  pickPose(pt) {
+    return picking.pickPose(this, pt);
+  }
+
+  gizmoHit(pt) {
+    return picking.gizmoHit(this, pt);
+  }
+
+  ray(pt) {
+    return picking.ray(this, pt);
+  }
+
+  startDrag(part, pose, pt) {
+    return picking.startGizmoDrag(this, part, pose, pt);
+  }
+
+  toPage(p) {
+    return picking.toPage(this, p);
+  }
+
+  screenOfPose(k) {
+    return picking.screenOfPose(this, k);
+  }
+
+  screenOfGizmo(part) {
+    return picking.screenOfGizmo(this, part);
+  }
+}
