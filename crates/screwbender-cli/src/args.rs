@@ -114,3 +114,14 @@ pub fn levels(text: &str) -> Result<u32, Failure> {
         ))
     })
 }
+
+/// A comma-separated list of key velocities: numbers ≥ 0, or `-` for a free slope
+/// (`--velocities -,0.5,-`).
+pub fn velocities(name: &str, text: &str) -> Result<Vec<Option<f64>>, Failure> {
+    text.split(',')
+        .map(|t| match t.trim() {
+            "-" => Ok(None),
+            t => number(name, t).map(Some),
+        })
+        .collect()
+}

@@ -10,7 +10,7 @@ use screwbender::{
     export_motion, scenes, ExportFormat, ExportSettings, SamplingMode, DEFAULT_TOLERANCE,
 };
 
-use crate::args::{number, numbers, ArgReader, SubdivisionArgs};
+use crate::args::{number, numbers, velocities, ArgReader, SubdivisionArgs};
 use crate::failure::Failure;
 use crate::input::read_document;
 
@@ -21,6 +21,8 @@ struct ExportOptions {
     tolerance: Option<f64>,
     fps: Option<f64>,
     times: Option<Vec<f64>>,
+    velocities: Option<Vec<Option<f64>>>,
+    radius: Option<f64>,
     point: Option<DVec3>,
     sub: SubdivisionArgs,
     control_nodes: bool,
@@ -41,6 +43,8 @@ fn parse(args: &[String]) -> Result<ExportOptions, Failure> {
             "--tolerance" => o.tolerance = Some(number(arg, &r.value(arg)?)?),
             "--fps" => o.fps = Some(number(arg, &r.value(arg)?)?),
             "--times" => o.times = Some(numbers(arg, &r.value(arg)?)?),
+            "--velocities" => o.velocities = Some(velocities(arg, &r.value(arg)?)?),
+            "--radius" => o.radius = Some(number(arg, &r.value(arg)?)?),
             "--point" => {
                 let v = numbers(arg, &r.value(arg)?)?;
                 let [x, y, z] = v[..] else {
@@ -94,7 +98,11 @@ pub fn export(args: &[String]) -> Result<String, Failure> {
         return Err(Failure("export --format glb|gltf needs -o OUT".into()));
     }
     let mut doc = read_document(o.file.as_deref())?;
-    doc.closed = doc.closed && !o.sub.open;
+    doc.set_closed(doc.closed && !o.sub.open);
+    // Key times and velocities: the options override the document's own.
+    let times = o.times.clone().or_else(|| doc.times.clone());
+    let given = o.velocities.clone().or_else(|| doc.velocities.clone());
+    doc.set_timing(times, given)?;
     let sub = o.sub.subdivision(5)?;
     let mesh = doc
         .name
@@ -118,7 +126,8 @@ pub fn export(args: &[String]) -> Result<String, Failure> {
         &ExportSettings {
             format,
             sampling,
-            times: o.times.clone(),
+            times: None,
+            radius: o.radius,
             point: o.point,
             control_nodes: o.control_nodes,
             mesh: mesh.as_ref(),
@@ -144,7 +153,10 @@ pub fn export(args: &[String]) -> Result<String, Failure> {
     if o.verbose {
         let sampling = match sampling {
             SamplingMode::FixedRate(fps) => format!("{fps} fps"),
-            SamplingMode::Adaptive(t) => format!("tolerance {t:e}"),
+            SamplingMode::Adaptive(t) => match exported.radius {
+                Some(r) if o.point.is_none() => format!("tolerance {t:e} at radius {r:.4}"),
+                _ => format!("tolerance {t:e}"),
+            },
         };
         eprintln!(
             "screwbender: export: {} samples ({sampling}, {}) -> {written}",

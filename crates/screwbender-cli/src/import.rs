@@ -1,11 +1,18 @@
-//! `screwbender import FILE.glb|.gltf|.csv|.json [--node NAME | --nodes A,B,…] [-o motion.json]`:
-//! control poses from a glTF asset, a CSV file or a motion document, as a JSON motion document.
+//! `screwbender import FILE.glb|.gltf|.csv|.json [--node NAME | --nodes A,B,…]
+//! [--reduce every:K | fit:TOL[:RADIUS]] [-o motion.json]`: control poses from a glTF asset, a
+//! CSV file or a motion document, as a JSON motion document. A file of more than
+//! [`MANY_POSES`] poses (samples rather than keys) gets a note on standard error saying how many
+//! it has and how to reduce them; `--reduce` keeps every K-th pose, or the fewest whose polyscrew
+//! stays within TOL of all of them (docs/math/formats.md §6).
 
 use std::path::Path;
 
-use screwbender::{import_motion_file, Error, ErrorKind, NodeSelection, MAX_GLTF_BYTES};
+use screwbender::{
+    import_motion_file, reduce_poses, Error, ErrorKind, NodeSelection, Reduction, MANY_POSES,
+    MAX_GLTF_BYTES,
+};
 
-use crate::args::ArgReader;
+use crate::args::{number, ArgReader};
 use crate::failure::Failure;
 
 /// Reads a file of at most [`MAX_GLTF_BYTES`] (checked before reading).
@@ -56,12 +63,37 @@ fn uri_to_path(uri: &str) -> Result<String, Error> {
     })
 }
 
+/// Parses `--reduce every:K` or `--reduce fit:TOL[:RADIUS]` (radius default 0: the origin).
+fn reduction(text: &str) -> Result<Reduction, Failure> {
+    let bad = || {
+        Failure(format!(
+            "--reduce: '{text}' is not every:K (a whole number ≥ 1) or fit:TOL[:RADIUS]"
+        ))
+    };
+    match text.split(':').collect::<Vec<_>>()[..] {
+        ["every", k] => match k.parse::<usize>() {
+            Ok(k) if k >= 1 => Ok(Reduction::Every(k)),
+            _ => Err(bad()),
+        },
+        ["fit", tol] => Ok(Reduction::Fit {
+            tolerance: number("--reduce fit", tol)?,
+            radius: 0.0,
+        }),
+        ["fit", tol, radius] => Ok(Reduction::Fit {
+            tolerance: number("--reduce fit", tol)?,
+            radius: number("--reduce radius", radius)?,
+        }),
+        _ => Err(bad()),
+    }
+}
+
 /// Runs `screwbender import`; returns the document for standard output (empty with `-o`).
 pub fn import(args: &[String]) -> Result<String, Failure> {
     let mut output = None;
     let mut selection = NodeSelection::Auto;
     let mut open = false;
     let mut verbose = false;
+    let mut reduce = None;
     let mut r = ArgReader::new(args);
     while let Some(arg) = r.next_arg() {
         match arg {
@@ -75,6 +107,7 @@ pub fn import(args: &[String]) -> Result<String, Failure> {
                 )
             }
             "--open" => open = true,
+            "--reduce" => reduce = Some(reduction(&r.value(arg)?)?),
             "--verbose" | "-v" => verbose = true,
             "-o" | "--output" => output = Some(r.value("-o")?),
             other => r.positional(other)?,
@@ -94,7 +127,28 @@ pub fn import(args: &[String]) -> Result<String, Failure> {
     let result = import_motion_file(name, &bytes, &mut resolve, &selection);
     let mut doc = result.map_err(|e| Failure(format!("{file}: {e}")))?;
     if open {
-        doc.closed = false;
+        doc.set_closed(false);
+    }
+    let found = doc.poses.len();
+    match reduce {
+        Some(how) => {
+            doc = reduce_poses(&doc, how).map_err(|e| Failure(format!("--reduce: {e}")))?;
+            eprintln!(
+                "screwbender: import: kept {} of {found} poses ({})",
+                doc.poses.len(),
+                match how {
+                    Reduction::Every(k) => format!("every {k}th"),
+                    Reduction::Fit { tolerance, radius } =>
+                        format!("within {tolerance:e} at radius {radius}"),
+                }
+            );
+        }
+        None if found > MANY_POSES => eprintln!(
+            "screwbender: import: {file} has {found} poses, more than make sense as control \
+             poses (they look like samples); keep fewer with --reduce every:K or --reduce \
+             fit:TOL"
+        ),
+        None => {}
     }
     if verbose {
         eprintln!(

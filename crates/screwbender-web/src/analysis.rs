@@ -3,20 +3,38 @@
 
 use wasm_bindgen::prelude::*;
 
-use super::convert::{count, f64_array, is_absent, point_from_js, push_kinematics, string};
+use super::convert::{
+    count, f64_array, from_js, is_absent, plain, point_from_js, push_kinematics, string,
+};
 use super::motion::sample_parameters;
 use super::MotionHandle;
 use screwbender::methods::{sampled_difference, Side};
 use screwbender::{Error, ErrorKind, Timing, MAX_REFINED_POSES};
 
-/// The timing of a motion with `poses` control poses from optional `times` (default uniform).
-fn timing(times: &JsValue, poses: usize, closed: bool) -> Result<Timing, Error> {
+/// The timing of a motion with `poses` control poses from optional `times` (default uniform)
+/// and optional key `velocities` (numbers ≥ 0 in poses per second, or `null` where free).
+fn timing(
+    times: &JsValue,
+    velocities: &JsValue,
+    poses: usize,
+    closed: bool,
+) -> Result<Timing, Error> {
     let times = if is_absent(times) {
         None
     } else {
         Some(f64_array(times, "times", poses + 2)?)
     };
-    Timing::for_poses(times, poses, closed)
+    let velocities = if is_absent(velocities) {
+        None
+    } else {
+        let list = plain(velocities, "velocities")?;
+        Some(from_js::<Vec<Option<f64>>>(
+            &list,
+            "velocities",
+            "velocity list (numbers or null)",
+        )?)
+    };
+    Timing::for_keys(times, velocities.as_deref(), poses, closed)
 }
 
 #[wasm_bindgen(js_class = Motion)]
@@ -25,7 +43,8 @@ impl MotionHandle {
     /// pose `i` is reached at `times[i]` (a cycle has one more time: pose 0 again), sampled at
     /// `count` uniform times. 16 numbers per sample as in `sampleKinematics`, except that the
     /// first is the time `t` and the derivatives are per second (chain rule through the C¹ map).
-    /// Without `times`, pose `i` is at `t = i`.
+    /// Without `times`, the motion's own key times and velocities (`motion.times`,
+    /// `motion.velocities`; uniform when it has none: pose `i` at `t = i`).
     ///
     /// `derivatives`: `'analytic'` (default) gives the closed-form kinematics of the refined
     /// polyscrew (one screw per refined span: constant angular velocity inside a span, jumps at
@@ -62,7 +81,11 @@ impl MotionHandle {
             }
         };
         let (doc, sub) = self.snapshot()?;
-        let timing = timing(&times, doc.poses.len(), doc.closed)?;
+        let timing = if is_absent(&times) {
+            doc.timing()?
+        } else {
+            timing(&times, &JsValue::UNDEFINED, doc.poses.len(), doc.closed)?
+        };
         let (start, end) = (0.0, (doc.poses.len() - usize::from(!doc.closed)) as f64);
         let h = 0.5f64.powi(sub.levels as i32);
         self.with_refined(|m| {
@@ -91,17 +114,20 @@ impl MotionHandle {
 /// The retiming map of a motion with `poses` control poses reached at `times` (a cycle: one more
 /// time, when pose 0 is reached again): `count` triples `t, u = p(t), du/dt` at uniform times.
 /// The map is C¹ and monotone (Fritsch–Carlson slopes), so the object never moves backwards.
+/// Optional `velocities` (one per control pose, a number ≥ 0 in poses per second or `null`)
+/// fix the rate `du/dt` at those keys (docs/math/timing.md §3).
 #[wasm_bindgen(js_name = timingMap)]
 pub fn timing_map(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] times: JsValue,
     #[wasm_bindgen(unchecked_param_type = "number")] poses: JsValue,
     #[wasm_bindgen(unchecked_param_type = "boolean")] closed: JsValue,
     #[wasm_bindgen(unchecked_param_type = "number")] samples: JsValue,
+    #[wasm_bindgen(unchecked_optional_param_type = "(number | null)[]")] velocities: JsValue,
 ) -> Result<Vec<f64>, JsError> {
     let poses = count(&poses, "poses", MAX_REFINED_POSES)?;
     let closed = super::convert::boolean(&closed, "closed")?;
     let n = count(&samples, "count", MAX_REFINED_POSES)?;
-    let timing = timing(&times, poses, closed)?;
+    let timing = timing(&times, &velocities, poses, closed)?;
     let mut out = Vec::with_capacity(3 * n);
     for t in sample_parameters(timing.duration(), closed, n) {
         let (u, du) = timing.parameter(t);

@@ -2,23 +2,27 @@
 //! glTF 2.0 (`.glb`, or `.gltf` + `.bin`) or CSV, exactly like `screwbender export`, and
 //! `importMotionFile(name, bytes)` reads control poses from a `.glb`, `.gltf`, `.csv` or `.json`
 //! file, exactly like `screwbender import` (both call [`screwbender::export_motion`] and
-//! [`screwbender::import_motion_file`]).
+//! [`screwbender::import_motion_file`]). `reducePoses(document, how)` thins a dense import
+//! (more than [`MANY_POSES`] poses, e.g. a CSV of samples) to fewer control poses, and
+//! `importedMesh(name, bytes)` gives a dropped glTF's mesh.
 
 use std::collections::HashMap;
 
 use glam::DVec3;
-use js_sys::{Object, Reflect, Uint8Array};
+use js_sys::{Float64Array, Object, Reflect, Uint32Array, Uint8Array};
 use serde::Deserialize;
 use wasm_bindgen::prelude::*;
 
 use super::convert::{
-    bytes, check_keys, check_object, document_to_js, from_js, is_absent, plain, string,
+    bytes, check_keys, check_object, document_from_js, document_to_js, from_js, is_absent, plain,
+    string,
 };
 use super::MotionHandle;
 use screwbender::mesh::Mesh;
 use screwbender::{
-    export_motion, import_motion_file, Error, ErrorKind, ExportFormat, ExportSettings,
-    NodeSelection, SamplingMode, DEFAULT_TOLERANCE, MAX_GLTF_BYTES,
+    export_motion, import_motion_file, mesh_radius, reduce_poses, Error, ErrorKind, ExportFormat,
+    ExportSettings, NodeSelection, Reduction, SamplingMode, DEFAULT_TOLERANCE, MANY_POSES,
+    MAX_GLTF_BYTES,
 };
 
 #[wasm_bindgen(typescript_custom_section)]
@@ -27,11 +31,13 @@ const TS_INTEROP: &'static str = r#"
 export interface ExportSettings {
   /** `glb` (one file), `gltf` (JSON + `.bin` buffer) or `csv` (sampled poses or a trajectory). */
   format: 'glb' | 'gltf' | 'csv';
-  /** Adaptive sampling: the largest distance between the keyframe interpolation and the true motion (default 1e-4). */
+  /** Adaptive sampling: the largest distance (scene units) between the keyframe interpolation and the true motion at the object's points (default 1e-4). */
   tolerance?: number;
+  /** Adaptive sampling of poses: the object's extent around its local origin at which the tolerance holds (default: the mesh's farthest vertex, else the placeholder box's). */
+  radius?: number;
   /** Fixed-rate sampling instead (frames per second); not with `tolerance`. */
   fps?: number;
-  /** Control-pose times in seconds (n for an open motion, n + 1 for a cycle); default 1 s per span. */
+  /** Control-pose times in seconds (n for an open motion, n + 1 for a cycle); default: the motion's own (`motion.times`), else 1 s per span. The motion's key velocities apply either way. */
   times?: number[];
   /** CSV only: the trajectory of this body point (local coordinates) instead of the poses. */
   point?: Vec3;
@@ -41,8 +47,21 @@ export interface ExportSettings {
   object?: string;
   /** glTF only: an imported mesh (OBJ text or glTF/GLB bytes), scaled to fit a cube of side `size`. */
   mesh?: { kind: 'obj' | 'gltf'; data: string | Uint8Array; size: number };
-  /** File name without extension (default: the document's name, else `motion`). */
+  /** File name without extension, used as given (default: the document's name, else `motion`, followed by what the file holds: `-motion` for glTF, `-poses` or `-path` for CSV). */
   name?: string;
+}
+
+/** How `reducePoses` thins a dense pose sequence: keep every k-th pose, or the fewest poses whose polyscrew stays within `tolerance` (scene units, at body points within `radius` of the origin; default 0) of all of them. */
+export type Reduction = { every: number } | { tolerance: number; radius?: number };
+
+/** A mesh read from a glTF file (its own units and frame). */
+export interface ImportedMesh {
+  /** Vertex positions, 3 numbers each. */
+  positions: Float64Array;
+  /** Triangle vertex indices, 3 each. */
+  indices: Uint32Array;
+  /** The farthest vertex's distance from the origin. */
+  radius: number;
 }
 
 /** The result of `Motion.exportFile`. */
@@ -58,6 +77,8 @@ export interface ExportedFile {
   bin?: Uint8Array;
   /** Keyframes (glTF) or rows (CSV) written. */
   sampleCount: number;
+  /** Adaptive sampling: the radius the tolerance holds at (0 for a trajectory, which is bounded at its point). */
+  radius?: number;
   /** The sampled motion, e.g. `screwbender 4-point ×5 (direct)`. */
   motionName: string;
 }
@@ -69,6 +90,7 @@ export interface ExportedFile {
 struct ExportInput {
     format: String,
     tolerance: Option<f64>,
+    radius: Option<f64>,
     fps: Option<f64>,
     times: Option<Vec<f64>>,
     point: Option<[f64; 3]>,
@@ -149,6 +171,7 @@ impl MotionHandle {
             &[
                 "format",
                 "tolerance",
+                "radius",
                 "fps",
                 "times",
                 "point",
@@ -194,11 +217,20 @@ impl MotionHandle {
             )
             .into());
         }
-        let base = input
-            .name
-            .clone()
-            .or_else(|| doc.name.clone())
-            .unwrap_or_else(|| "motion".into());
+        // Default names say what the file holds (a glTF motion, sampled poses, a path).
+        let base = input.name.clone().unwrap_or_else(|| {
+            let stem = doc.name.clone().unwrap_or_else(|| "motion".into());
+            let holds = match (format, input.point) {
+                (ExportFormat::Csv, Some(_)) => "path",
+                (ExportFormat::Csv, None) => "poses",
+                _ => "motion",
+            };
+            if stem == "motion" && holds == "motion" {
+                stem
+            } else {
+                format!("{stem}-{holds}")
+            }
+        });
         let bin_name = format!("{base}.bin");
         let exported = export_motion(
             &doc,
@@ -207,6 +239,7 @@ impl MotionHandle {
                 format,
                 sampling,
                 times: input.times,
+                radius: input.radius,
                 point: input.point.map(DVec3::from_array),
                 control_nodes: input.control_nodes.unwrap_or(false),
                 mesh: imported.as_ref().or(named.as_ref()),
@@ -227,9 +260,90 @@ impl MotionHandle {
             set(&out, "bin", Uint8Array::from(&bin[..]).into());
         }
         set(&out, "sampleCount", (exported.sample_count as f64).into());
+        if let Some(r) = exported.radius {
+            set(&out, "radius", r.into());
+        }
         set(&out, "motionName", exported.motion_name.into());
         Ok(out.into())
     }
+}
+
+/// A thinner copy of a motion document (e.g. an imported CSV of more than [`MANY_POSES`]
+/// samples): `{every: k}` keeps poses `0, k, 2k, …` (and an open motion's last), `{tolerance,
+/// radius?}` the fewest poses whose polyscrew stays within `tolerance` of all of them (origin
+/// distance plus `radius` × rotation angle; docs/math/formats.md §6). The name, `closed` and the
+/// kept poses' times are kept. Throws naming `every`, `tolerance` or `radius`.
+#[wasm_bindgen(js_name = reducePoses, unchecked_return_type = "MotionDocument")]
+pub fn reduce_poses_js(
+    #[wasm_bindgen(unchecked_param_type = "MotionDocumentInput")] document: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Reduction")] how: JsValue,
+) -> Result<JsValue, JsError> {
+    #[derive(Deserialize)]
+    #[serde(deny_unknown_fields)]
+    struct How {
+        every: Option<f64>,
+        tolerance: Option<f64>,
+        radius: Option<f64>,
+    }
+    let doc = document_from_js(&document)?;
+    let how = plain(&how, "how")?;
+    check_object(&how, "how", "reduction", "{every} or {tolerance, radius?}")?;
+    check_keys(&how, &["every", "tolerance", "radius"], "how", "reduction")?;
+    let h: How = from_js(&how, "how", "reduction")?;
+    let reduction = match (h.every, h.tolerance) {
+        (Some(k), None) if h.radius.is_none() => {
+            if !(k.is_finite() && k >= 1.0 && k.fract() == 0.0 && k <= MANY_POSES as f64 * 1e6) {
+                return Err(Error::new(
+                    "every",
+                    ErrorKind::OutOfRange {
+                        value: k.to_string(),
+                        expected: "a whole number ≥ 1".into(),
+                    },
+                )
+                .into());
+            }
+            Reduction::Every(k as usize)
+        }
+        (None, Some(tolerance)) => Reduction::Fit {
+            tolerance,
+            radius: h.radius.unwrap_or(0.0),
+        },
+        _ => {
+            return Err(Error::new(
+                "how",
+                ErrorKind::Unsupported {
+                    reason: "give either {every: k} or {tolerance, radius?}".into(),
+                },
+            )
+            .into())
+        }
+    };
+    document_to_js(&reduce_poses(&doc, reduction)?)
+}
+
+/// The mesh of a glTF file (`.glb`, or `.gltf` with embedded buffers) in its own units, or
+/// `undefined` when the file has none (a motion without an object). Throws on a malformed file,
+/// starting with the file name.
+#[wasm_bindgen(js_name = importedMesh, unchecked_return_type = "ImportedMesh | undefined")]
+pub fn imported_mesh(
+    #[wasm_bindgen(js_name = fileName, unchecked_param_type = "string")] file_name: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Uint8Array")] data: JsValue,
+) -> Result<JsValue, JsError> {
+    let name = string(&file_name, "fileName")?;
+    let content =
+        bytes(&data, "data", MAX_GLTF_BYTES).map_err(|e| JsError::new(&format!("{name}: {e}")))?;
+    let mesh = match Mesh::from_gltf(&content) {
+        Ok(mesh) => mesh,
+        // A file without any mesh is a motion without an object, not an error.
+        Err(e) if e.to_string().contains("no triangles found") => return Ok(JsValue::UNDEFINED),
+        Err(e) => return Err(JsError::new(&format!("{name}: {e}"))),
+    };
+    let positions: Vec<f64> = mesh.positions.iter().flat_map(|p| p.to_array()).collect();
+    let out = Object::new();
+    set(&out, "positions", Float64Array::from(&positions[..]).into());
+    set(&out, "indices", Uint32Array::from(&mesh.indices[..]).into());
+    set(&out, "radius", mesh_radius(&mesh).into());
+    Ok(out.into())
 }
 
 /// Reads control poses from a file, like `screwbender import`: a `.glb` / `.gltf` (the keyframes
@@ -304,6 +418,13 @@ pub fn import_motion_file_js(
             )
         })
     };
-    let doc = import_motion_file(&name, &content, &mut resolve, &selection).map_err(prefix)?;
+    let mut doc = import_motion_file(&name, &content, &mut resolve, &selection).map_err(prefix)?;
+    if doc.name.is_none() {
+        // A file whose assets name nothing is titled by its file name.
+        let stem = name
+            .rsplit_once('.')
+            .map_or(name.as_str(), |(stem, _)| stem);
+        doc.name = Some(stem.rsplit(['/', '\\']).next().unwrap_or(stem).to_string());
+    }
     document_to_js(&doc)
 }

@@ -37,6 +37,7 @@ impl State {
         self.subdivision.validate()?;
         self.subdivision
             .output_len(self.doc.poses.len(), self.doc.closed)?;
+        self.doc.timing()?;
         Ok(())
     }
 
@@ -201,11 +202,8 @@ impl MotionHandle {
         #[wasm_bindgen(unchecked_param_type = "SceneId")] id: JsValue,
     ) -> Result<MotionHandle, JsError> {
         let scene = find_scene(&string(&id, "scene")?)?;
-        let doc = MotionDocument {
-            name: Some(scene.id.to_string()),
-            closed: scene.closed,
-            poses: scene.poses,
-        };
+        let mut doc = MotionDocument::new(scene.poses, scene.closed);
+        doc.name = Some(scene.id.to_string());
         let subdivision = Subdivision::new(scene.scheme, Rules::Direct, scene.levels);
         Ok(MotionHandle::from_state(State { doc, subdivision })?)
     }
@@ -288,9 +286,64 @@ impl MotionHandle {
     ) -> Result<(), JsError> {
         let closed = convert::boolean(&closed, "closed")?;
         self.update(|s| {
-            s.doc.closed = closed;
+            s.doc.set_closed(closed);
             Ok(())
         })
+    }
+
+    /// The key times in seconds (`n` for an open motion, `n + 1` for a cycle: the last is when
+    /// pose 0 is reached again), or `undefined` for the uniform timing (pose `i` at `i` s).
+    #[wasm_bindgen(getter, unchecked_return_type = "Float64Array | undefined")]
+    pub fn times(&self) -> Result<Option<Vec<f64>>, JsError> {
+        self.read(|s| s.doc.times.clone())
+    }
+
+    /// Sets the key times (strictly increasing, finite; `null` / `undefined`: uniform). Throws
+    /// naming `times` (count) or `times[i]`, and then leaves the motion unchanged; given
+    /// velocities must still keep the retiming monotone with the new times.
+    #[wasm_bindgen(js_name = setTimes)]
+    pub fn set_times(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[] | null")] times: JsValue,
+    ) -> Result<(), JsError> {
+        let times = if is_absent(&times) {
+            None
+        } else {
+            Some(f64_array(&times, "times", MAX_REFINED_POSES)?)
+        };
+        self.update(|s| s.doc.set_timing(times, s.doc.velocities.clone()))
+    }
+
+    /// The key velocities `p'(T_i)` in poses per second, one per control pose (`null` where
+    /// free), or `undefined` when all are free.
+    #[wasm_bindgen(getter, unchecked_return_type = "(number | null)[] | undefined")]
+    pub fn velocities(&self) -> Result<JsValue, JsError> {
+        match self.read(|s| s.doc.velocities.clone())? {
+            Some(v) => to_js(&v),
+            None => Ok(JsValue::UNDEFINED),
+        }
+    }
+
+    /// Sets the key velocities (one per control pose: a number ≥ 0 in poses per second, or
+    /// `null` for a free slope; `null` / `undefined` for all free). Throws naming `velocities`
+    /// (count) or `velocities[i]` (negative, not finite, or making time run backwards next to
+    /// that key), and then leaves the motion unchanged.
+    #[wasm_bindgen(js_name = setVelocities)]
+    pub fn set_velocities(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "(number | null)[] | null")] velocities: JsValue,
+    ) -> Result<(), JsError> {
+        let velocities = if is_absent(&velocities) {
+            None
+        } else {
+            let list = convert::plain(&velocities, "velocities")?;
+            Some(convert::from_js::<Vec<Option<f64>>>(
+                &list,
+                "velocities",
+                "velocity list (numbers or null)",
+            )?)
+        };
+        self.update(|s| s.doc.set_timing(s.doc.times.clone(), velocities))
     }
 
     /// The number of control poses.
@@ -368,7 +421,7 @@ impl MotionHandle {
                 Some(p) => p,
                 None => screw(&s.doc.poses[i], 0.5, &s.doc.poses[(i + 1) % n]),
             };
-            s.doc.poses.insert(i + 1, new);
+            s.doc.insert_pose(i + 1, new);
             inserted = i + 1;
             Ok(())
         })?;
@@ -384,7 +437,7 @@ impl MotionHandle {
         let i = convert::number(&i, "index")?;
         self.update(|s| {
             let i = check_index(i, "index", s.doc.poses.len())?;
-            s.doc.poses.remove(i);
+            s.doc.remove_pose(i);
             Ok(())
         })
     }

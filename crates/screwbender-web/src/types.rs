@@ -38,6 +38,10 @@ export type PoseInput =
 export interface MotionDocumentInput {
   name?: string;
   closed?: boolean;
+  /** When each control pose is reached, in seconds, strictly increasing (n times for an open motion, n + 1 for a cycle: the last is pose 0 again); default 1 s per span from 0. */
+  times?: number[];
+  /** The rate du/dt at each key in poses per second (one per control pose, >= 0, `null` where free); the retiming is refused where a velocity makes time run backwards. */
+  velocities?: (number | null)[];
   poses: PoseInput[];
 }
 
@@ -45,6 +49,10 @@ export interface MotionDocumentInput {
 export interface MotionDocument {
   name?: string;
   closed: boolean;
+  /** Key times in seconds (present only when set). */
+  times?: number[];
+  /** Key velocities in poses per second, `null` where free (present only when set). */
+  velocities?: (number | null)[];
   poses: Pose[];
 }
 

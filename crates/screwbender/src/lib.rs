@@ -132,14 +132,15 @@ pub use formats::gltf::{
 pub use formats::gltf::{is_glb, split_glb};
 #[cfg(feature = "gltf")]
 pub use formats::interop::{
-    export_motion, import_motion_file, ExportFormat, ExportSettings, ExportedMotion, ImportKind,
-    SamplingMode,
+    export_motion, import_motion_file, mesh_radius, ExportFormat, ExportSettings, ExportedMotion,
+    ImportKind, SamplingMode,
 };
 pub use formats::keyframes::REPEAT_TOLERANCE;
+pub use formats::reduce::{reduce_poses, Reduction, MANY_POSES};
 pub use formats::sampling::{
     check_timing, check_tolerance, interpolate_linear, linear_deviation, sample_fixed_rate,
-    sample_motion, sample_polyscrew, sample_screwbender, trajectory, Sample, DEFAULT_TOLERANCE,
-    MAX_SAMPLES, MAX_SAMPLE_ANGLE, MIN_TOLERANCE,
+    sample_motion, sample_polyscrew, sample_polyscrew_within, sample_screwbender, trajectory,
+    Deviation, Sample, DEFAULT_TOLERANCE, MAX_SAMPLES, MAX_SAMPLE_ANGLE, MIN_TOLERANCE,
 };
 pub use motion::{Kinematics, Motion};
 pub use polyscrew::Polyscrew;

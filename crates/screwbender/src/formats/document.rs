@@ -8,13 +8,17 @@
 //!
 //! A pose gives `origin` and either `rotation` (a unit quaternion `[w, x, y, z]`, scalar first) or
 //! `basis` (the three column vectors `I, J, K`). `closed` defaults to `true`; `name` is optional.
-//! Output always writes `origin` and `rotation`. Errors name the bad element, e.g.
-//! `poses[3].rotation: zero quaternion`.
+//! Optional key timing (docs/math/timing.md): `times` (seconds at which each control pose is
+//! reached; a cycle has one more, pose 0 again) and `velocities` (`p'` at each key in poses per
+//! second, `null` where free). Output always writes `origin` and `rotation`, and the timing only
+//! when the document has one. Errors name the bad element, e.g. `poses[3].rotation: zero
+//! quaternion`, `times[2]: …`.
 
 use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, ErrorKind};
 use crate::pose::Pose;
+use crate::timing::Timing;
 
 /// Largest motion-document text accepted by [`MotionDocument::from_json`]: 16 MiB (about 150 000
 /// poses). Larger input is rejected before parsing.
@@ -29,6 +33,12 @@ pub struct MotionDocument {
     pub closed: bool,
     /// The control poses.
     pub poses: Vec<Pose>,
+    /// When each control pose is reached, in seconds (`n` times for an open motion, `n + 1` for a
+    /// cycle); `None`: one second per span from 0.
+    pub times: Option<Vec<f64>>,
+    /// The velocity `p'` at each key in poses per second (`n` entries, `None` where free);
+    /// `None`: all free.
+    pub velocities: Option<Vec<Option<f64>>>,
 }
 
 /// One pose as it appears in a file, before validation.
@@ -59,6 +69,12 @@ pub struct RawDocument {
     pub closed: bool,
     /// The poses.
     pub poses: Vec<RawPose>,
+    /// Key times in seconds (optional).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub times: Option<Vec<f64>>,
+    /// Key velocities in poses per second, `null` where free (optional).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub velocities: Option<Vec<Option<f64>>>,
 }
 
 fn default_closed() -> bool {
@@ -115,11 +131,15 @@ impl RawDocument {
                 },
             ));
         }
-        Ok(MotionDocument {
+        let doc = MotionDocument {
             name: self.name.clone(),
             closed: self.closed,
             poses,
-        })
+            times: self.times.clone(),
+            velocities: self.velocities.clone(),
+        };
+        doc.timing()?;
+        Ok(doc)
     }
 }
 
@@ -130,7 +150,89 @@ impl MotionDocument {
             name: None,
             closed,
             poses,
+            times: None,
+            velocities: None,
         }
+    }
+
+    /// The document's timing (docs/math/timing.md): its key times and velocities, uniform where
+    /// absent. Errors name `times`, `times[i]`, `velocities` or `velocities[i]`.
+    pub fn timing(&self) -> Result<Timing, Error> {
+        Timing::for_keys(
+            self.times.clone(),
+            self.velocities.as_deref(),
+            self.poses.len(),
+            self.closed,
+        )
+    }
+
+    /// Sets the key times and velocities after checking them against the poses (see
+    /// [`MotionDocument::timing`]); on an error the document is unchanged.
+    pub fn set_timing(
+        &mut self,
+        times: Option<Vec<f64>>,
+        velocities: Option<Vec<Option<f64>>>,
+    ) -> Result<(), Error> {
+        Timing::for_keys(
+            times.clone(),
+            velocities.as_deref(),
+            self.poses.len(),
+            self.closed,
+        )?;
+        self.times = times;
+        self.velocities = velocities;
+        Ok(())
+    }
+
+    /// Inserts `pose` as control pose `index` (`1 ≤ index ≤ n`, after pose `index − 1`) and
+    /// keeps the timing's counts: the new key is reached halfway between its neighbours' times
+    /// (one second after the last key at the end of an open motion) with a free velocity.
+    pub fn insert_pose(&mut self, index: usize, pose: Pose) {
+        let index = index.clamp(1, self.poses.len());
+        if let Some(times) = &mut self.times {
+            let t = match times.get(index) {
+                Some(&next) => 0.5 * (times[index - 1] + next),
+                None => times[index - 1] + 1.0,
+            };
+            times.insert(index, t);
+        }
+        if let Some(v) = &mut self.velocities {
+            v.insert(index.min(v.len()), None);
+        }
+        self.poses.insert(index, pose);
+    }
+
+    /// Removes control pose `index` (`< n`) and its key time and velocity (removing pose 0 of a
+    /// timed motion drops its time: the motion then starts at pose 1's time).
+    pub fn remove_pose(&mut self, index: usize) {
+        if let Some(times) = &mut self.times {
+            if index < times.len() {
+                times.remove(index);
+            }
+        }
+        if let Some(v) = &mut self.velocities {
+            if index < v.len() {
+                v.remove(index);
+            }
+        }
+        self.poses.remove(index);
+    }
+
+    /// Makes the motion a cycle or an open sequence, keeping the timing's counts: closing adds
+    /// the return to pose 0 one mean span after the last time, opening drops it.
+    pub fn set_closed(&mut self, closed: bool) {
+        if closed != self.closed {
+            if let Some(times) = &mut self.times {
+                if closed {
+                    let (first, last) = (times[0], times[times.len() - 1]);
+                    let mean = (last - first) / (times.len() - 1).max(1) as f64;
+                    times.push(last + mean);
+                } else {
+                    times.pop();
+                }
+            }
+        }
+        self.closed = closed;
     }
 
     /// Parses and validates a JSON motion document.
@@ -165,6 +267,8 @@ impl MotionDocument {
             name: self.name.clone(),
             closed: self.closed,
             poses: self.poses.iter().map(RawPose::from_pose).collect(),
+            times: self.times.clone(),
+            velocities: self.velocities.clone(),
         }
     }
 
@@ -176,7 +280,16 @@ impl MotionDocument {
         if let Some(name) = &raw.name {
             s += &format!("  \"name\": {},\n", json_string(name));
         }
-        s += &format!("  \"closed\": {},\n  \"poses\": [\n", raw.closed);
+        s += &format!("  \"closed\": {},\n", raw.closed);
+        if let Some(times) = &raw.times {
+            let line = serde_json::to_string(times).expect("finite numbers always serialise");
+            s += &format!("  \"times\": {line},\n");
+        }
+        if let Some(v) = &raw.velocities {
+            let line = serde_json::to_string(v).expect("finite numbers always serialise");
+            s += &format!("  \"velocities\": {line},\n");
+        }
+        s += "  \"poses\": [\n";
         for (i, p) in raw.poses.iter().enumerate() {
             let line = serde_json::to_string(p).expect("finite numbers always serialise");
             s += "    ";
@@ -209,6 +322,63 @@ mod tests {
         assert!((q[0] - h).abs() < 1e-15 && (q[3] - h).abs() < 1e-15);
         let again = MotionDocument::from_json(&doc.to_json()).unwrap();
         assert_eq!(again, doc);
+    }
+
+    #[test]
+    fn key_timing_round_trips_and_old_files_are_unchanged() {
+        let old = "{\n  \"name\": \"x\",\n  \"closed\": false,\n  \"poses\": [\n    \
+                   {\"origin\":[0.0,0.0,0.0],\"rotation\":[1.0,0.0,0.0,0.0]},\n    \
+                   {\"origin\":[1.0,0.0,0.0],\"rotation\":[1.0,0.0,0.0,0.0]}\n  ]\n}\n";
+        let doc = MotionDocument::from_json(old).unwrap();
+        assert_eq!(doc.times, None);
+        assert_eq!(
+            doc.to_json(),
+            old,
+            "a file without timing is written back byte for byte"
+        );
+        let timed = old.replace(
+            "\"closed\": false,\n",
+            "\"closed\": false,\n  \"times\": [0.5,2.0],\n  \"velocities\": [null,0.25],\n",
+        );
+        let doc = MotionDocument::from_json(&timed).unwrap();
+        assert_eq!(doc.times, Some(vec![0.5, 2.0]));
+        assert_eq!(doc.velocities, Some(vec![None, Some(0.25)]));
+        assert_eq!(doc.to_json(), timed);
+        let t = doc.timing().unwrap();
+        assert!((t.parameter(2.0).1 - 0.25).abs() < 1e-12);
+    }
+
+    #[test]
+    fn bad_key_timing_is_named_and_changes_nothing() {
+        let base = r#"{"closed": true, "poses": [{"origin":[0,0,0],"rotation":[1,0,0,0]},
+            {"origin":[1,0,0],"rotation":[1,0,0,0]}],"#;
+        for (extra, path) in [
+            (r#""times": [0, 1]}"#, "times"),
+            (r#""times": [0, 2, 1]}"#, "times[2]"),
+            (r#""velocities": [-1, null]}"#, "velocities[0]"),
+            (r#""velocities": [null, 9]}"#, "velocities[1]"),
+            (r#""velocities": [null]}"#, "velocities"),
+        ] {
+            let e = MotionDocument::from_json(&format!("{base}{extra}")).unwrap_err();
+            assert_eq!(e.path(), path, "{extra}: {e}");
+        }
+        let mut doc = MotionDocument::from_json(&format!("{base}\"times\": [0, 1, 3]}}")).unwrap();
+        let before = doc.clone();
+        assert!(doc.set_timing(Some(vec![0.0, 1.0]), None).is_err());
+        assert!(doc
+            .set_timing(None, Some(vec![Some(f64::NAN), None]))
+            .is_err());
+        assert_eq!(doc, before);
+        // Editing poses keeps the counts valid.
+        doc.insert_pose(1, Pose::IDENTITY);
+        assert_eq!(doc.times, Some(vec![0.0, 0.5, 1.0, 3.0]));
+        doc.timing().unwrap();
+        doc.set_closed(false);
+        doc.timing().unwrap();
+        doc.remove_pose(0);
+        doc.timing().unwrap();
+        doc.set_closed(true);
+        doc.timing().unwrap();
     }
 
     #[test]

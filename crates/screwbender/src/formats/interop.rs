@@ -8,10 +8,13 @@ use glam::DVec3;
 use crate::error::{Error, ErrorKind};
 use crate::formats::csv::{parse_csv_poses, poses_csv, trajectory_csv};
 use crate::formats::document::MotionDocument;
+use crate::formats::gltf::export::PLACEHOLDER_HALF_EXTENTS;
 use crate::formats::gltf::export::{GltfAsset, GltfMotion};
 use crate::formats::gltf::glb::is_glb;
 use crate::formats::gltf::import::{import_glb, import_gltf, NodeSelection, MAX_GLTF_BYTES};
-use crate::formats::sampling::{sample_fixed_rate, sample_polyscrew, DEFAULT_TOLERANCE};
+use crate::formats::sampling::{
+    sample_fixed_rate, sample_polyscrew_within, Deviation, DEFAULT_TOLERANCE,
+};
 use crate::motion::Motion;
 use crate::polyscrew::Polyscrew;
 use crate::scenes::mesh::Mesh;
@@ -51,8 +54,9 @@ impl ExportFormat {
 /// How the motion is sampled in time.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum SamplingMode {
-    /// Adaptive keyframes: linear interpolation between them stays within this distance of the
-    /// true motion (see [`sample_polyscrew`]).
+    /// Adaptive keyframes: linear interpolation between them stays within this distance (scene
+    /// units) of the true motion at the object's points (see [`sample_polyscrew_within`] and
+    /// [`ExportSettings::radius`]).
     Adaptive(f64),
     /// A fixed frame rate (frames per second).
     FixedRate(f64),
@@ -72,8 +76,13 @@ pub struct ExportSettings<'a> {
     /// Time sampling.
     pub sampling: SamplingMode,
     /// Control-pose times in seconds (`n` for an open motion, `n + 1` for a cycle); `None`:
-    /// one second per span.
+    /// the document's own ([`MotionDocument::times`]; one second per span when it has none).
+    /// The document's key velocities apply either way.
     pub times: Option<Vec<f64>>,
+    /// Adaptive sampling of poses: the largest distance of the object's points from its local
+    /// origin, at which the tolerance is met; `None`: the mesh's ([`mesh_radius`]), else the
+    /// placeholder box's. (A CSV trajectory is bounded at its point instead.)
+    pub radius: Option<f64>,
     /// CSV only: write the trajectory of this body point instead of the poses.
     pub point: Option<DVec3>,
     /// glTF only: also one empty node per control pose.
@@ -90,6 +99,7 @@ impl Default for ExportSettings<'_> {
             format: ExportFormat::Glb,
             sampling: SamplingMode::default(),
             times: None,
+            radius: None,
             point: None,
             control_nodes: false,
             mesh: None,
@@ -107,6 +117,9 @@ pub struct ExportedMotion {
     pub bin: Option<Vec<u8>>,
     /// How many keyframes / CSV rows were sampled.
     pub sample_count: usize,
+    /// The radius the adaptive tolerance was met at (`0` for a CSV trajectory, whose point is
+    /// bounded; `None` for fixed-rate sampling).
+    pub radius: Option<f64>,
     /// The sampled motion's name (e.g. `screwbender 4-point ×5 (direct)`).
     pub motion_name: String,
 }
@@ -132,7 +145,21 @@ pub fn export_motion(
     let closed = doc.closed;
     let n = doc.poses.len();
     let coarse_spans = if closed { n } else { n.saturating_sub(1) };
-    let timing = Timing::for_poses(settings.times.clone(), n, closed)?;
+    let timing = match &settings.times {
+        Some(times) => Timing::for_keys(Some(times.clone()), doc.velocities.as_deref(), n, closed)?,
+        None => doc.timing()?,
+    };
+    let radius = match settings.point {
+        Some(_) => 0.0,
+        None => settings.radius.unwrap_or_else(|| match settings.mesh {
+            Some(mesh) => mesh_radius(mesh),
+            None => DVec3::from_array(PLACEHOLDER_HALF_EXTENTS).length(),
+        }),
+    };
+    let deviation = match settings.point {
+        Some(p) => Deviation::Point(p),
+        None => Deviation::Body { radius },
+    };
     let (motion, polyscrew): (Box<dyn Motion>, Polyscrew) = if sub.levels == 0 {
         let p = Polyscrew::new(doc.poses.clone(), closed)?;
         (Box::new(p.clone()), p)
@@ -144,7 +171,7 @@ pub fn export_motion(
     let samples = match settings.sampling {
         SamplingMode::FixedRate(fps) => sample_fixed_rate(motion.as_ref(), &timing, fps)?,
         SamplingMode::Adaptive(tolerance) => {
-            sample_polyscrew(&polyscrew, coarse_spans, &timing, tolerance)?
+            sample_polyscrew_within(&polyscrew, coarse_spans, &timing, tolerance, deviation)?
         }
     };
     let (data, bin) = match settings.format {
@@ -183,8 +210,21 @@ pub fn export_motion(
         data,
         bin,
         sample_count: samples.len(),
+        radius: match settings.sampling {
+            SamplingMode::Adaptive(_) => Some(radius),
+            SamplingMode::FixedRate(_) => None,
+        },
         motion_name: motion.name(),
     })
+}
+
+/// The largest distance of a mesh vertex from the local origin (0 for an empty mesh): the
+/// radius at which exports of that object meet their tolerance.
+pub fn mesh_radius(mesh: &Mesh) -> f64 {
+    mesh.positions
+        .iter()
+        .map(|p| p.length())
+        .fold(0.0, f64::max)
 }
 
 /// The kinds of file [`import_motion_file`] reads.

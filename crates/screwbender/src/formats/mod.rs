@@ -2,8 +2,9 @@
 //! sampling that turns a motion into keyframes within a tolerance.
 //!
 //! From the bottom up: `keyframes.rs` (what every keyframe import shares), `document.rs`,
-//! `sampling.rs`, `csv.rs`, `gltf/` (the GLB container, export, import) and `interop.rs`, which
-//! picks a format for the CLI and the JS API.
+//! `sampling.rs`, `csv.rs`, `gltf/` (the GLB container, export, import), `reduce.rs` (fewer
+//! control poses from dense imported ones) and `interop.rs`, which picks a format for the CLI
+//! and the JS API.
 
 pub(crate) mod csv;
 pub(crate) mod document;
@@ -11,4 +12,5 @@ pub(crate) mod gltf;
 #[cfg(feature = "gltf")]
 pub(crate) mod interop;
 pub(crate) mod keyframes;
+pub(crate) mod reduce;
 pub(crate) mod sampling;

@@ -9,8 +9,10 @@
 //! [`sample_polyscrew`] uses that bound in closed form: each span of a (refined) polyscrew is one
 //! screw, so it gets `k` uniform sub-steps in time from its angle, slide and axis distance, and the
 //! spans are merged. Non-uniform [`Timing`] adds the bound's speed terms (see
-//! [`sample_polyscrew`]). Any other [`Motion`] goes through [`sample_motion`], which bisects
-//! numerically. [`sample_fixed_rate`] samples at a fixed frame rate instead.
+//! [`sample_polyscrew`]); [`sample_polyscrew_within`] bounds the error where it is seen, at the
+//! object's points in scene units ([`Deviation`], docs/math/sampling.md §3). Any other [`Motion`]
+//! goes through [`sample_motion`], which bisects numerically. [`sample_fixed_rate`] samples at a
+//! fixed frame rate instead.
 
 use std::f64::consts::FRAC_PI_2;
 
@@ -49,6 +51,23 @@ const MAX_BISECTION_DEPTH: u32 = 30;
 /// Initial uniform sub-steps per knot interval in [`sample_motion`] (so that features narrower
 /// than a knot interval are not skipped by the first probes).
 const INITIAL_STEPS_PER_KNOT: usize = 8;
+
+/// What the tolerance of [`sample_polyscrew_within`] bounds (docs/math/sampling.md §3).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Deviation {
+    /// The origin's distance (scene units) and, separately, the rotation angle (radians): what
+    /// [`sample_polyscrew`] bounds.
+    OriginAndAngle,
+    /// A keyframe player's pose (lerped origin, slerped rotation, as glTF `LINEAR`): the
+    /// distance of every body point within `radius` of the local origin (scene units), e.g. the
+    /// vertices of the object's mesh with `radius` = [`crate::mesh::Mesh::radius`].
+    Body {
+        /// The largest distance of a body point from the local origin.
+        radius: f64,
+    },
+    /// A body point's trajectory interpolated linearly (CSV positions): its distance.
+    Point(DVec3),
+}
 
 /// One keyframe: time, motion parameter and pose.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -156,15 +175,27 @@ fn rate_bounds((a, b, c): (f64, f64, f64), h: f64, sa: f64, sb: f64) -> (f64, f6
 }
 
 /// The largest time step on one span such that linear keyframes stay within `tolerance`:
-/// `ω` = rotation rate and `v` = origin speed (per coarse unit), `rho` = origin's axis distance,
-/// `p1 = max |p'|`, `p2 = max |p''|`.
-fn max_step(omega: f64, v: f64, rho: f64, p1: f64, p2: f64, tolerance: f64) -> f64 {
-    // Origin: |x''(t)| ≤ ρ ω² p'² + v |p''|; rotation angle: |φ''(t)| ≤ ω |p''| (radians,
-    // measured against the same number).
+/// `ω` = rotation rate and `v` = the tracked point's speed (per coarse unit), `rho` = its axis
+/// distance, `p1 = max |p'|`, `p2 = max |p''|`, `radius` = the body's extent around the origin
+/// (`None`: bound the rotation angle in radians on its own).
+fn max_step(
+    omega: f64,
+    v: f64,
+    rho: f64,
+    (p1, p2): (f64, f64),
+    radius: Option<f64>,
+    tolerance: f64,
+) -> f64 {
+    // Tracked point: |x''(t)| ≤ ρ ω² p'² + v |p''|; rotation angle: |φ''(t)| ≤ ω |p''|, which
+    // moves a body point at distance r by at most r |Δφ| (docs/math/sampling.md §3).
     let c_pos = rho * omega * omega * p1 * p1 + v * p2;
     let c_ang = omega * p2;
+    let bounds = match radius {
+        None => [c_pos, c_ang],
+        Some(r) => [c_pos + r * c_ang, 0.0],
+    };
     let mut step = f64::INFINITY;
-    for c in [c_pos, c_ang] {
+    for c in bounds {
         if c > 0.0 {
             step = step.min((8.0 * tolerance / c).sqrt());
         }
@@ -199,7 +230,53 @@ pub fn sample_polyscrew(
     timing: &Timing,
     tolerance: f64,
 ) -> Result<Vec<Sample>, Error> {
+    sample_polyscrew_within(
+        polyscrew,
+        coarse_spans,
+        timing,
+        tolerance,
+        Deviation::OriginAndAngle,
+    )
+}
+
+/// [`sample_polyscrew`] with the tolerance bounding `deviation`: with
+/// [`Deviation::Body`] the keyframe player's error at every body point within the radius
+/// (`Δt² (ρ ω² P₁² + v P₂ + r ω P₂) / 8 ≤ tolerance`: the origin's lerp error plus the slerp's
+/// angle error times the radius), with [`Deviation::Point`] the error of a linearly interpolated
+/// trajectory of that point (its own `ρ` and `v`). With uniform timing (`P₂ = 0`) the body
+/// bound equals the origin's, because slerp is then exact along each screw.
+///
+/// Errors: those of [`sample_polyscrew`]; a radius that is negative or not finite (`radius`), a
+/// point not finite (`point`).
+pub fn sample_polyscrew_within(
+    polyscrew: &Polyscrew,
+    coarse_spans: usize,
+    timing: &Timing,
+    tolerance: f64,
+    deviation: Deviation,
+) -> Result<Vec<Sample>, Error> {
     check_tolerance(tolerance)?;
+    let (local, radius) = match deviation {
+        Deviation::OriginAndAngle => (DVec3::ZERO, None),
+        Deviation::Body { radius } => {
+            if !(radius.is_finite() && radius >= 0.0) {
+                return Err(Error::new(
+                    "radius",
+                    ErrorKind::OutOfRange {
+                        value: radius.to_string(),
+                        expected: "a finite number ≥ 0 (scene units)".into(),
+                    },
+                ));
+            }
+            (DVec3::ZERO, Some(radius))
+        }
+        Deviation::Point(p) => {
+            if !p.is_finite() {
+                return Err(Error::new("point", ErrorKind::NonFinite));
+            }
+            (p, Some(0.0))
+        }
+    };
     // One knot per coarse pose, plus the return to pose 0 for a cycle: spans + 1 either way.
     let expected = coarse_spans + 1;
     if timing.knots().len() != expected {
@@ -225,7 +302,7 @@ pub fn sample_polyscrew(
         let (p1, p2) = rate_bounds(quad, kh, sa, sb);
         let theta = span.angle();
         let (omega_t, v0) = span.twist();
-        let start = span.start().origin;
+        let start = span.start().transform_point(local);
         let vel = omega_t.cross(start) + v0;
         let rho = if theta > 0.0 {
             let n = omega_t / theta;
@@ -233,7 +310,14 @@ pub fn sample_polyscrew(
         } else {
             0.0
         };
-        let step = max_step(theta / h, vel.length() / h, rho, p1, p2, tolerance);
+        let step = max_step(
+            theta / h,
+            vel.length() / h,
+            rho,
+            (p1, p2),
+            radius,
+            tolerance,
+        );
         let steps = if step.is_finite() {
             ((tb - ta) / step).ceil().max(1.0)
         } else {
