@@ -9,6 +9,7 @@ pub(crate) mod blend;
 pub(crate) mod decoupled;
 pub(crate) mod scheme;
 pub(crate) mod split_tweak;
+pub(crate) mod warnings;
 
 use crate::error::{Error, ErrorKind};
 use blend::Blend;
