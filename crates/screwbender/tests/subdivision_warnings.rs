@@ -203,6 +203,9 @@ fn degenerate_input_gives_no_warning() {
     let s = Subdivision::new(Scheme::FourPoint, Rules::SplitTweak, 2);
     assert!(s.warnings(&[], true).is_empty());
     assert!(s.warnings(&[Pose::IDENTITY], false).is_empty());
+    // No levels: nothing is subdivided.
+    let none = Subdivision::new(Scheme::FourPoint, Rules::SplitTweak, 0);
+    assert!(none.warnings(&circle(3, TAU), true).is_empty());
     // Invalid options: the subdivision reports the error, the warnings stay quiet.
     let bad = Subdivision::new(Scheme::J(0.3), Rules::SplitTweak, 2);
     assert!(bad.warnings(&circle(3, TAU), true).is_empty());

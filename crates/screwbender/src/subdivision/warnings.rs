@@ -62,11 +62,13 @@ impl Subdivision {
     /// span before, the span, the half of the span after) is named, in order. An open sequence
     /// counts its extension beyond each end (docs/math/open-sequences.md §2), whose spans repeat
     /// the end spans; a span of the extension that fails is reported as the end span it
-    /// continues. Fewer than 2 poses, or invalid options, give no warnings (the subdivision
+    /// continues. No levels (nothing subdivided), fewer than 2 poses, or invalid options, give no
+    /// warnings (the subdivision
     /// itself reports those).
     pub fn warnings(&self, poses: &[Pose], closed: bool) -> Vec<Warning> {
         let n = poses.len();
-        if self.rules != Rules::SplitTweak || self.validate().is_err() || n < 2 {
+        if self.levels == 0 || self.rules != Rules::SplitTweak || self.validate().is_err() || n < 2
+        {
             return Vec::new();
         }
         // The rules that tweak new poses: every scheme but the B-spline (which tweaks old poses

@@ -1,0 +1,124 @@
+//! `screwbender: warning: …` lines on standard error where a subdivision is silently poor
+//! (`Subdivision::warnings`), with standard output unchanged.
+#![cfg(not(target_arch = "wasm32"))]
+
+mod support;
+
+use screwbender::{scenes, MotionDocument, Rules, Scheme, Subdivision};
+use support::run;
+
+fn preset(id: &str) -> String {
+    let out = run(&["preset", id], "");
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    out.stdout
+}
+
+/// The warning lines of a run's standard error.
+fn warnings(stderr: &str) -> Vec<&str> {
+    stderr
+        .lines()
+        .filter(|l| l.starts_with("screwbender: warning: "))
+        .collect()
+}
+
+#[test]
+fn split_rules_on_the_four_pose_circle_warn_per_span_and_keep_stdout() {
+    let circle = preset("circle4");
+    let split = run(
+        &[
+            "subdivide",
+            "--scheme",
+            "jarek",
+            "--rules",
+            "split",
+            "--levels",
+            "2",
+        ],
+        &circle,
+    );
+    assert_eq!(split.code, 0, "{}", split.stderr);
+    let lines = warnings(&split.stderr);
+    assert_eq!(lines.len(), 4, "{}", split.stderr);
+    for (span, line) in lines.iter().enumerate() {
+        assert!(line.contains(&format!("span {span}:")), "{line}");
+        assert!(line.contains("Jarek") && line.contains("180.0°"), "{line}");
+    }
+    // Standard output is the library's result, warnings or not.
+    let doc = MotionDocument::from_json(&split.stdout).unwrap();
+    let lib = Subdivision::new(Scheme::Jarek, Rules::SplitTweak, 2)
+        .apply(&scenes::scene("circle4").unwrap().poses, true)
+        .unwrap();
+    assert_eq!(doc.poses.len(), lib.len());
+    for (a, b) in doc.poses.iter().zip(&lib) {
+        assert!(a.approx_eq(b, 1e-12));
+    }
+    // eval and export say the same.
+    let eval = run(
+        &[
+            "eval",
+            "--scheme",
+            "fourpoint",
+            "--rules",
+            "split",
+            "--u",
+            "0.5",
+        ],
+        &circle,
+    );
+    assert_eq!(eval.code, 0, "{}", eval.stderr);
+    assert_eq!(warnings(&eval.stderr).len(), 4, "{}", eval.stderr);
+    let export = run(
+        &[
+            "export",
+            "--format",
+            "csv",
+            "--rules",
+            "split",
+            "--scheme",
+            "fourpoint",
+        ],
+        &circle,
+    );
+    assert_eq!(export.code, 0, "{}", export.stderr);
+    assert_eq!(warnings(&export.stderr).len(), 4, "{}", export.stderr);
+}
+
+#[test]
+fn no_warning_where_the_result_is_good() {
+    let circle = preset("circle4");
+    for args in [
+        // The direct rules, the B-spline with the split rules, no levels at all.
+        &["subdivide", "--scheme", "jarek", "--levels", "2"][..],
+        &[
+            "subdivide",
+            "--scheme",
+            "bspline",
+            "--rules",
+            "split",
+            "--levels",
+            "2",
+        ],
+        &[
+            "eval",
+            "--scheme",
+            "fourpoint",
+            "--rules",
+            "split",
+            "--levels",
+            "0",
+            "--u",
+            "0.5",
+        ],
+    ] {
+        let out = run(args, &circle);
+        assert_eq!(out.code, 0, "{args:?}: {}", out.stderr);
+        assert!(out.stderr.is_empty(), "{args:?}: {}", out.stderr);
+    }
+    // Six poses: split rules are fine.
+    let out = run(
+        &["subdivide", "--scheme", "fourpoint", "--rules", "split"],
+        &preset("l_cycle_rotated"),
+    );
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    assert!(out.stderr.is_empty(), "{}", out.stderr);
+}
