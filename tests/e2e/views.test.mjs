@@ -118,6 +118,9 @@ test(`${BACKEND}: Metrics of the current motion: 4-point interpolates, B-spline 
 
 test(`${BACKEND}: Timing retimes the plots; bad times are refused and change nothing`, async () => {
   await openView('timing');
+  // Let the view finish any update it has scheduled: a rebuild of its table between the `fill`
+  // and the `change` below would send the change to a fresh, empty input.
+  await sb(() => window.screwbender.flushViews());
   const inputs = page.locator('#dock section[data-view=timing] input[type=number]');
   assert.equal(await inputs.count(), 7); // 6 poses of a cycle + the time back at pose 0
   await inputs.nth(6).fill('12');
