@@ -1,7 +1,7 @@
 // Split/tweak step-through (paper Figs. 3–4, docs/math/subdivision.md): one subdivision level at a time and, inside
 // a level, (a) the split — the screw midpoint of every span inserted — then (b) the tweak of each
 // pose, drawn as arrows from before to after (origins), with the object before the tweak (pale
-// ghosts) and after it. The core's splitTweakStep computes both (src/split_tweak.rs).
+// ghosts) and after it. The core's splitTweakStep computes both (crates/screwbender/src/subdivision/split_tweak.rs).
 import { splitTweakStep } from '../../pkg/screwbender.js';
 import { LAYER, SLOT, Segments, instances, matricesOf, poseOf } from '../view/scene.js';
 import { add, sub, scale, cross, normalize, length, hexLinear } from '../math.js';
