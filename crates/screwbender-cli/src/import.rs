@@ -3,7 +3,7 @@
 //! CSV file or a motion document, as a JSON motion document. A file of more than
 //! [`MANY_POSES`] poses (samples rather than keys) gets a note on standard error saying how many
 //! it has and how to reduce them; `--reduce` keeps every K-th pose, or the fewest whose polyscrew
-//! stays within TOL of all of them (docs/math/formats.md §6).
+//! stays within TOL of all of them (docs/math/formats.md §7).
 
 use std::path::Path;
 

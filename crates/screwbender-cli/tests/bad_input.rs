@@ -524,3 +524,45 @@ fn oversized_files_are_refused_before_parsing() {
     // Standard input has no size to check first: the document limit applies after reading.
     cli_refuses(&["subdivide"], &big, &["document: ", "out of range"]);
 }
+
+#[test]
+fn bad_key_timing_is_refused_and_named() {
+    // In a document (times not increasing, wrong count; velocities negative, not finite as a
+    // huge literal, or making time run backwards) and as export options.
+    let poses = format!("{GOOD},{GOOD},{GOOD}");
+    for (extra, message) in [
+        (r#""times":[0,2,1,3]"#, "times[2]"),
+        (r#""times":[0,1]"#, "times: 2 times given, expected 4"),
+        (r#""velocities":[null,-1,null]"#, "velocities[1]"),
+        (
+            r#""velocities":[1e999,null,null]"#,
+            "invalid motion document",
+        ),
+        (r#""velocities":[null,40,null]"#, "velocities[1]"),
+    ] {
+        let text = format!(r#"{{"closed":true,{extra},"poses":[{poses}]}}"#);
+        let e = MotionDocument::from_json(&text).unwrap_err().to_string();
+        assert!(e.contains(message), "{e}");
+        for args in [&["subdivide"][..], &["export", "--format", "csv"]] {
+            cli_refuses(args, &text, &[message]);
+        }
+    }
+    let doc = format!(r#"{{"closed":true,"poses":[{poses}]}}"#);
+    for (args, message) in [
+        (&["--times", "0,1,1,3"][..], "times[2]"),
+        (&["--velocities", "-,-1,-"][..], "velocities[1]"),
+        (
+            &["--velocities", "-,nan,-"][..],
+            "--velocities: 'nan' is not a finite number",
+        ),
+        (
+            &["--velocities", "-,-"][..],
+            "velocities: 2 velocities given, expected 3",
+        ),
+        (&["--velocities", "9,-,-"][..], "velocities[0]"),
+    ] {
+        let mut all = vec!["export", "--format", "csv"];
+        all.extend_from_slice(args);
+        cli_refuses(&all, &doc, &[message]);
+    }
+}

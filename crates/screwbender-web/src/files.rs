@@ -47,7 +47,7 @@ export interface ExportSettings {
   object?: string;
   /** glTF only: an imported mesh (OBJ text or glTF/GLB bytes), scaled to fit a cube of side `size`. */
   mesh?: { kind: 'obj' | 'gltf'; data: string | Uint8Array; size: number };
-  /** File name without extension, used as given (default: the document's name, else `motion`, followed by what the file holds: `-motion` for glTF, `-poses` or `-path` for CSV). */
+  /** The file name's stem (default: the document's name, else `motion`); the suggested name adds what the file holds: `<name>-motion.glb` / `.gltf` (+ `-motion.bin`), `<name>-poses.csv`, `<name>-path.csv` (not repeated when the stem already ends with it). */
   name?: string;
 }
 
@@ -66,7 +66,7 @@ export interface ImportedMesh {
 
 /** The result of `Motion.exportFile`. */
 export interface ExportedFile {
-  /** Suggested file name (`<name>.glb`, `.gltf` or `.csv`). */
+  /** Suggested file name: `<name>-motion.glb`, `<name>-motion.gltf`, `<name>-poses.csv` or `<name>-path.csv`. */
   fileName: string;
   /** MIME type of `data`. */
   mimeType: string;
@@ -217,20 +217,22 @@ impl MotionHandle {
             )
             .into());
         }
-        // Default names say what the file holds (a glTF motion, sampled poses, a path).
-        let base = input.name.clone().unwrap_or_else(|| {
-            let stem = doc.name.clone().unwrap_or_else(|| "motion".into());
-            let holds = match (format, input.point) {
-                (ExportFormat::Csv, Some(_)) => "path",
-                (ExportFormat::Csv, None) => "poses",
-                _ => "motion",
-            };
-            if stem == "motion" && holds == "motion" {
-                stem
-            } else {
-                format!("{stem}-{holds}")
-            }
-        });
+        // File names say what the file holds (a glTF motion, sampled poses, a path).
+        let stem = input
+            .name
+            .clone()
+            .or_else(|| doc.name.clone())
+            .unwrap_or_else(|| "motion".into());
+        let holds = match (format, input.point) {
+            (ExportFormat::Csv, Some(_)) => "path",
+            (ExportFormat::Csv, None) => "poses",
+            _ => "motion",
+        };
+        let base = if stem == holds || stem.ends_with(&format!("-{holds}")) {
+            stem
+        } else {
+            format!("{stem}-{holds}")
+        };
         let bin_name = format!("{base}.bin");
         let exported = export_motion(
             &doc,
@@ -271,7 +273,7 @@ impl MotionHandle {
 /// A thinner copy of a motion document (e.g. an imported CSV of more than [`MANY_POSES`]
 /// samples): `{every: k}` keeps poses `0, k, 2k, …` (and an open motion's last), `{tolerance,
 /// radius?}` the fewest poses whose polyscrew stays within `tolerance` of all of them (origin
-/// distance plus `radius` × rotation angle; docs/math/formats.md §6). The name, `closed` and the
+/// distance plus `radius` × rotation angle; docs/math/formats.md §7). The name, `closed` and the
 /// kept poses' times are kept. Throws naming `every`, `tolerance` or `radius`.
 #[wasm_bindgen(js_name = reducePoses, unchecked_return_type = "MotionDocument")]
 pub fn reduce_poses_js(

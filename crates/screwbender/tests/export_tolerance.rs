@@ -241,3 +241,28 @@ fn a_csv_trajectory_meets_the_tolerance_at_its_point() {
         "trajectory deviates by {worst:e}"
     );
 }
+
+#[test]
+fn key_times_survive_a_glb_round_trip_and_uniform_files_stay_untimed() {
+    let scene = scenes::scene("l_cycle_rotated").unwrap();
+    let sub = Subdivision::new(scene.scheme, Rules::Direct, 3);
+    let mut doc = MotionDocument::new(scene.poses.clone(), scene.closed);
+    for times in [None, Some(vec![0.5, 1.5, 3.25, 4.0, 6.5, 7.0, 9.5])] {
+        doc.times = times.clone();
+        let glb = export_motion(&doc, sub, &ExportSettings::default())
+            .unwrap()
+            .data;
+        let back = screwbender::import_glb(&glb, &screwbender::NodeSelection::Auto).unwrap();
+        match (&times, &back.times) {
+            (None, None) => {}
+            (Some(a), Some(b)) => {
+                assert_eq!(a.len(), b.len());
+                for (x, y) in a.iter().zip(b) {
+                    // Stored as f32 after subtracting the first time.
+                    assert!((x - y).abs() < 1e-6, "{x} vs {y}");
+                }
+            }
+            other => panic!("times {other:?}"),
+        }
+    }
+}

@@ -1,4 +1,4 @@
-//! Fewer control poses from dense ones (docs/math/formats.md §6): an imported CSV or glTF of
+//! Fewer control poses from dense ones (docs/math/formats.md §7): an imported CSV or glTF of
 //! sampled poses holds hundreds of keyframes, far more than make sense as control poses.
 //! [`reduce_poses`] keeps every k-th pose, or the fewest poses whose polyscrew stays within a
 //! tolerance of the dense poses.

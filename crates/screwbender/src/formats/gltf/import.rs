@@ -139,13 +139,20 @@ fn import_json(
                 glb_bin,
                 loaded: vec![None; root.buffers.len()],
             };
-            let poses = animation_poses(&root, a, node, &mut buffers, resolve)
+            let (poses, times) = animation_poses(&root, a, node, &mut buffers, resolve)
                 .map_err(|e| e.within(&format!("animations[{a}]")))?;
-            let closed = root.animations[a]
+            let extras = root.animations[a]
                 .extras
                 .as_ref()
-                .and_then(|raw| serde_json::from_str::<serde_json::Value>(raw.get()).ok())
+                .and_then(|raw| serde_json::from_str::<serde_json::Value>(raw.get()).ok());
+            let closed = extras
+                .as_ref()
                 .and_then(|v| v[EXTRAS_KEY]["closed"].as_bool());
+            let offset = extras
+                .as_ref()
+                .and_then(|v| v[EXTRAS_KEY]["timeOffset"].as_f64())
+                .filter(|t| t.is_finite())
+                .unwrap_or(0.0);
             let mut doc = MotionDocument::new(poses, false);
             // The control node's name says nothing: take the scene's (the motion's) name.
             doc.name = match root.nodes[node].name.as_deref() {
@@ -156,7 +163,9 @@ fn import_json(
                     .and_then(|s| s.name.clone()),
                 Some(name) => Some(name.to_string()),
             };
-            finish(doc, closed)
+            let mut doc = finish(doc, closed)?;
+            doc.times = key_times(&doc, &times, offset);
+            Ok(doc)
         }
     }
 }
@@ -356,7 +365,7 @@ fn animation_poses(
     node: usize,
     buffers: &mut Buffers,
     resolve: &mut dyn FnMut(&str) -> Result<Vec<u8>, Error>,
-) -> Result<Vec<Pose>, Error> {
+) -> Result<(Vec<Pose>, Vec<f64>), Error> {
     use json::animation::{Interpolation, Property};
     let anim = &root.animations[a];
     let mut inputs: Vec<(usize, Vec<f64>)> = Vec::new();
@@ -415,7 +424,7 @@ fn animation_poses(
         ));
     }
     let rest = node_pose(&root.nodes[node]).map_err(|e| e.within(&format!("nodes[{node}]")))?;
-    (0..times.len())
+    let poses = (0..times.len())
         .map(|k| {
             let t = translations
                 .as_ref()
@@ -425,7 +434,24 @@ fn animation_poses(
             });
             Pose::from_wxyz(t, q).map_err(|e| e.within(&format!("keyframe[{k}]")))
         })
-        .collect()
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok((poses, times.clone()))
+}
+
+/// The key times of imported keyframes (`times` as stored plus the exporter's `timeOffset`):
+/// `None` when they are the uniform `0, 1, 2, …` (the default timing, so such files round-trip
+/// unchanged), when their count does not fit the document (`n`, or `n + 1` for a cycle), or when
+/// they do not make a valid timing (docs/math/timing.md §3).
+fn key_times(doc: &MotionDocument, times: &[f64], offset: f64) -> Option<Vec<f64>> {
+    let uniform = offset == 0.0 && times.iter().enumerate().all(|(k, &t)| t == k as f64);
+    let want = doc.poses.len() + usize::from(doc.closed);
+    if uniform || times.len() != want {
+        return None;
+    }
+    let times: Vec<f64> = times.iter().map(|t| t + offset).collect();
+    crate::timing::Timing::for_poses(Some(times.clone()), doc.poses.len(), doc.closed)
+        .ok()
+        .map(|_| times)
 }
 
 #[cfg(test)]
