@@ -12,7 +12,8 @@ use screwbender::{Error, Pose};
 /// (all but `cc1` for a closed input), and one that does not support these particular poses is
 /// listed as skipped. An unknown name gives [`Error::UnknownValue`] at `methods`; a named method
 /// that rejects the input (e.g. `cc1` on a closed input) gives its error, prefixed with the
-/// method's name.
+/// method's name. A motion that is poor though it was built ([`Method::warnings`]) is noted in
+/// its row and gets a `screwbender: warning: METHOD: …` line on standard error.
 pub fn compare(
     poses: &[Pose],
     closed: bool,
@@ -34,6 +35,14 @@ pub fn compare(
     } else {
         compare_methods(poses, closed, &chosen, &options)?
     };
+    // Where a motion is poor though it was built: one line each on standard error.
+    for row in &table.rows {
+        for note in &row.notes {
+            if let Some(w) = note.strip_prefix("warning: ") {
+                eprintln!("screwbender: warning: {}: {w}", row.method);
+            }
+        }
+    }
     Ok(if json {
         table.to_json() + "\n"
     } else {

@@ -122,3 +122,38 @@ fn no_warning_where_the_result_is_good() {
     assert_eq!(out.code, 0, "{}", out.stderr);
     assert!(out.stderr.is_empty(), "{}", out.stderr);
 }
+
+/// `n` poses zig-zagging sideways while moving forward, as a motion document (open).
+fn zigzag(n: usize) -> String {
+    let poses: Vec<String> = (0..n)
+        .map(|i| {
+            let side: f64 = if i % 2 == 0 { 0.3 } else { -0.3 };
+            let (s, c) = (0.5 * side).sin_cos();
+            format!(r#"{{"origin":[{i},{side},0],"rotation":[{c},0,0,{s}]}}"#)
+        })
+        .collect();
+    format!(r#"{{"closed":false,"poses":[{}]}}"#, poses.join(","))
+}
+
+#[test]
+fn compare_warns_where_the_c1_recursion_runs_away() {
+    let out = run(&["compare", "--methods", "cc0,cc1"], &zigzag(60));
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    let lines = warnings(&out.stderr);
+    assert_eq!(lines.len(), 1, "{}", out.stderr);
+    assert!(
+        lines[0].starts_with("screwbender: warning: cc1: "),
+        "{}",
+        lines[0]
+    );
+    assert!(lines[0].contains("grows without damping"), "{}", lines[0]);
+    // The table notes it too, and a short zig-zag is not flagged.
+    assert!(
+        out.stdout.contains("grows without damping"),
+        "{}",
+        out.stdout
+    );
+    let short = run(&["compare", "--methods", "cc1"], &zigzag(8));
+    assert_eq!(short.code, 0, "{}", short.stderr);
+    assert!(warnings(&short.stderr).is_empty(), "{}", short.stderr);
+}

@@ -266,7 +266,8 @@ pub struct MetricsRow {
     pub circle_error: Option<f64>,
     /// The same for a helical (screw) motion (open, 6 poses).
     pub helix_error: Option<f64>,
-    /// Messages for metrics that could not be computed (e.g. the method rejected a test input).
+    /// Messages for metrics that could not be computed (e.g. the method rejected a test input),
+    /// and, starting with `warning: `, where the motion itself is poor ([`Method::warnings`]).
     pub notes: Vec<String>,
 }
 
@@ -565,6 +566,9 @@ pub fn evaluate(
         _ => Derivatives::Auto,
     };
     let mut row = motion_metrics(method.name(), motion.as_ref(), poses, derivatives, options);
+    for w in method.warnings(poses, closed) {
+        row.notes.push(format!("warning: {w}"));
+    }
     let build = |p: &[Pose], c: bool| method.build(p, c);
     match frame_dependence(&build, motion.as_ref(), poses, closed, options) {
         Ok(v) => row.frame_dependence = Some(v),

@@ -70,7 +70,7 @@ pub use slerp_polyline::SlerpPolyline;
 // Chaudhry & Cameron.
 pub use rational::{
     Continuity, EndCondition, RationalBezierExport, RationalBezierSegment, RationalMotion,
-    MIN_DENOMINATOR,
+    GROWTH_WARNING, MIN_DENOMINATOR,
 };
 pub use triangle::{
     rotation_between, samples_from_poses, validate_samples, ReferenceTriangle, TriangleSample,

@@ -95,6 +95,31 @@ impl Method {
             .collect()
     }
 
+    /// Sentences for where this method's motion through `poses` is poor though it was built
+    /// without error: the C¹ Chaudhry–Cameron recursion running away on long sequences
+    /// ([`RationalMotion::warning`]); empty for every other method, and when the method rejects
+    /// the input (its error says why).
+    pub fn warnings(self, poses: &[Pose], closed: bool) -> Vec<String> {
+        let continuity = match self {
+            Method::Cc1 => Continuity::C1(EndCondition::ZeroCurvatureStart),
+            _ => return Vec::new(),
+        };
+        let times: Vec<f64> = (0..poses.len() + usize::from(closed))
+            .map(|i| i as f64)
+            .collect();
+        RationalMotion::from_poses(
+            poses,
+            &times,
+            closed,
+            continuity,
+            &ReferenceTriangle::SCENE_B1,
+        )
+        .ok()
+        .and_then(|m| m.warning())
+        .into_iter()
+        .collect()
+    }
+
     /// Builds the motion through `poses` (pose `i` at `u = i`; a closed motion has period `n`).
     pub fn build(self, poses: &[Pose], closed: bool) -> Result<Box<dyn Motion>, Error> {
         let sb = |scheme| -> Result<Box<dyn Motion>, Error> {

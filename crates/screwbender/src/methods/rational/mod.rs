@@ -18,6 +18,11 @@ use crate::pose::Pose;
 use segment::Segment;
 pub use segment::{EndCondition, MIN_DENOMINATOR};
 
+/// The [`RationalMotion::growth`] above which the C¹ motion is reported as poor: a middle control
+/// point more than this many chord lengths off its chord bends the segment far outside the data
+/// (smooth data stay below 1; docs/math/rational-motion.md §6.1).
+pub const GROWTH_WARNING: f64 = 10.0;
+
 /// Smoothness of the Chaudhry–Cameron motion.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub enum Continuity {
@@ -263,6 +268,64 @@ impl RationalMotion {
             Continuity::C0 => Vec::new(),
             Continuity::C1(_) => self.segments.iter().map(|s| s.quats[1]).collect(),
         }
+    }
+
+    /// How far the C¹ end-condition recursion has carried the middle control points from the
+    /// data (docs/math/rational-motion.md §6.1, caution): the largest distance of a middle
+    /// control point `M_i` (quaternions) or `Â_i` (translation spline) from the midpoint of its
+    /// segment's chord, relative to the longest chord of the same curve; the larger of the two.
+    ///
+    /// Smooth data keep it near `h·curvature/4` (well below 1); the recursion amplifies any
+    /// misfit by `h_i/h_{i−1}` per step and never damps it, so on long or irregular sequences it
+    /// grows without bound. `0` for C⁰ (no recursion) and for data on a straight line.
+    pub fn growth(&self) -> f64 {
+        let Continuity::C1(end) = self.continuity else {
+            return 0.0;
+        };
+        let n = self.samples.len() - 1;
+        let h: Vec<f64> = (0..n)
+            .map(|i| self.samples[i + 1].t - self.samples[i].t)
+            .collect();
+        fn relative<T: crate::methods::polynomial::Vector>(
+            values: &[T],
+            mids: &[T],
+            norm: impl Fn(T) -> f64,
+        ) -> f64 {
+            let chord = values
+                .windows(2)
+                .map(|w| norm(w[1] - w[0]))
+                .fold(0.0, f64::max);
+            let off = mids
+                .iter()
+                .enumerate()
+                .map(|(i, &m)| norm(m - (values[i] + values[i + 1]) * 0.5))
+                .fold(0.0, f64::max);
+            if chord > 0.0 {
+                off / chord
+            } else {
+                0.0
+            }
+        }
+        let mq = c1::quadratic_spline_middles(&self.quats, &h, end);
+        let points: Vec<DVec3> = self.samples.iter().map(|s| s.a).collect();
+        let ma = c1::quadratic_spline_middles(&points, &h, end);
+        relative(&self.quats, &mq, DQuat::length).max(relative(&points, &ma, DVec3::length))
+    }
+
+    /// A sentence when [`RationalMotion::growth`] exceeds [`GROWTH_WARNING`]: the C¹ recursion
+    /// has run away from the data and the motion is poor (large accelerations between samples)
+    /// though nothing failed; `None` otherwise.
+    pub fn warning(&self) -> Option<String> {
+        let g = self.growth();
+        (g > GROWTH_WARNING).then(|| {
+            format!(
+                "the C1 end-condition recursion grows without damping over {} samples: a middle \
+                 control point lies {g:.3e} chord lengths off its chord (over {GROWTH_WARNING}), \
+                 so the motion swings far between samples; use C0, fewer samples, or the other \
+                 end condition",
+                self.samples.len()
+            )
+        })
     }
 
     /// The samples the motion was fitted to (for a closed motion including the closing sample).
