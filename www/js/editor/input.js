@@ -1,7 +1,10 @@
 // Editing with the pointer and the keyboard. The viewer turns the camera itself (view/pointer.js);
 // this part is its `tool`: a press on a handle selects the pose, a press on a gizmo part (or a
 // handle) drags the pose, hovering highlights what a press would grab. Keys are the editor's
-// shortcuts (listed in the help overlay of index.html). The part contract is in app.js.
+// shortcuts (listed in the help overlay of index.html); they act only while the canvas or the
+// page itself has the focus, never inside a control. The part contract is in app.js.
+import { qaxis, qmul, qnormalize } from '../math.js';
+import { SNAP_ROTATE, SNAP_TRANSLATE } from '../view/gizmo.js';
 
 export default {
   id: 'input',
@@ -104,15 +107,66 @@ export default {
       },
     };
 
+    /**
+     * Where the page's shortcuts act: the canvas, or the page itself (nothing focused). Inside
+     * a control (button, field, slider, the panel, the dock) keys keep their own meaning.
+     */
+    function shortcutTarget(t) {
+      return !t || t === app.canvas || t === document.body || t === document.documentElement;
+    }
+
+    /**
+     * Moves (or with `rotate`, turns) the selected pose by one keyboard step along or about the
+     * world axis `axis` (0, 1, 2) in direction `sign`: 0.25 units or 15° (the snapping steps),
+     * a tenth of that with `fine`. Presses within a second make one undo step.
+     */
+    function nudge(axis, sign, rotate, fine) {
+      const i = app.selected;
+      if (i < 0) return;
+      const pose = app.motion.pose(i);
+      const f = fine ? 0.1 : 1;
+      let next;
+      if (rotate) {
+        const a = [0, 0, 0];
+        a[axis] = 1;
+        const dq = qaxis(a, sign * f * SNAP_ROTATE);
+        next = { origin: [...pose.origin], rotation: qnormalize(qmul(dq, pose.rotation)) };
+      } else {
+        const o = [...pose.origin];
+        o[axis] += sign * f * SNAP_TRANSLATE;
+        next = { origin: o, rotation: [...pose.rotation] };
+      }
+      app.edit(() => app.motion.setPose(i, next), `key:${rotate ? 'rotate' : 'move'}:${i}`);
+    }
+
+    /** Arrow keys and PageUp / PageDown: [world axis, direction]. */
+    const NUDGE = {
+      ArrowRight: [0, 1], ArrowLeft: [0, -1], ArrowUp: [1, 1], ArrowDown: [1, -1], PageUp: [2, 1], PageDown: [2, -1],
+    };
+
     function onKey(e) {
       const t = e.target;
-      if (t && (t.tagName === 'INPUT' || t.tagName === 'TEXTAREA' || t.tagName === 'SELECT')) return;
+      if (!shortcutTarget(t)) {
+        // Esc still closes the help overlay from a control inside it.
+        if (e.key === 'Escape' && !document.getElementById('help').hidden) {
+          app.ui.toggleHelp(false);
+          e.preventDefault();
+        }
+        return;
+      }
       const k = e.key;
       const mod = e.ctrlKey || e.metaKey;
+      const count = app.motion.poseCount;
       let handled = true;
       if (mod && (k === 'z' || k === 'Z')) e.shiftKey ? app.redo() : app.undo();
       else if (mod && (k === 'y' || k === 'Y')) app.redo();
       else if (mod) handled = false;
+      else if (NUDGE[k] && app.selected >= 0) {
+        const [axis, sign] = NUDGE[k];
+        nudge(axis, sign, e.altKey || app.mode === 'rotate', e.shiftKey);
+      } else if (k === 'ArrowRight' || k === 'n') app.select((app.selected + 1) % count);
+      else if (k === 'ArrowLeft' || k === 'p') app.select(app.selected <= 0 ? count - 1 : app.selected - 1);
+      else if (e.altKey) handled = false;
       else if (k >= '0' && k <= '8') app.setOption('levels', Number(k));
       else if (k === 'b') app.setScheme('bspline');
       else if (k === 'f') app.setScheme('fourpoint');
@@ -123,8 +177,6 @@ export default {
       else if (k === 'Delete' || k === 'Backspace') app.deleteSelected();
       else if (k === 'Insert' || k === 'i') app.insertAfterSelected();
       else if (k === 'a' || k === 'Home') app.frameAll();
-      else if (k === 'ArrowRight' || k === 'Tab') app.select((app.selected + 1) % app.motion.poseCount);
-      else if (k === 'ArrowLeft') app.select((app.selected - 1 + app.motion.poseCount) % app.motion.poseCount);
       else if (k === 'Escape') {
         if (!document.getElementById('help').hidden) app.ui.toggleHelp(false);
         else app.select(-1);

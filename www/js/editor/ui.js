@@ -217,6 +217,8 @@ export function buildUi(app) {
     if (app.view.dock) app.lastView = app.view.dock;
     $('play').textContent = app.anim.playing ? '❚❚' : '▶';
     $('play').title = app.anim.playing ? 'Pause (Space)' : 'Play (Space)';
+    $('play').setAttribute('aria-label', app.anim.playing ? 'Pause' : 'Play');
+    for (const id of ['t-translate', 't-rotate', 't-dock']) $(id).setAttribute('aria-pressed', String($(id).classList.contains('on')));
     speed.value = app.anim.speed;
     loop.checked = app.anim.loop;
     loop.disabled = m.closed;

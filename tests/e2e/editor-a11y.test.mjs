@@ -1,0 +1,61 @@
+// End-to-end: an accessibility audit of the playground with axe-core (from npm, injected by the
+// test: the page does not ship it). The page with the help overlay, the settings panel and each
+// analysis view of the dock open must have no serious or critical violation.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import path from 'node:path';
+import { playgroundPage, waitFrames, ROOT, BACKEND } from './lib.mjs';
+
+const AXE = fs.readFileSync(path.join(ROOT, 'node_modules/axe-core/axe.min.js'), 'utf8');
+let play;
+let page;
+let problems;
+
+before(async () => {
+  ({ play, page, problems } = await playgroundPage());
+  // Evaluated through the debugging protocol: the page's CSP (rightly) refuses inline scripts.
+  await page.evaluate(AXE);
+});
+
+after(async () => {
+  await play?.close();
+});
+
+/** The serious and critical violations of the page as it is now, as readable lines. */
+async function audit() {
+  const found = await page.evaluate(async () => {
+    const r = await window.axe.run(document, { resultTypes: ['violations'] });
+    return r.violations.map((v) => ({ id: v.id, impact: v.impact, nodes: v.nodes.map((n) => n.target.join(' ')) }));
+  });
+  return found.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => `${v.impact} ${v.id}: ${v.nodes.slice(0, 4).join(', ')}`);
+}
+
+test(`${BACKEND}: axe finds no serious or critical violation (page, panel, help)`, async () => {
+  // The audit runs at all (a broken injection would find nothing to report).
+  assert.equal(await page.evaluate(() => typeof window.axe?.run), 'function');
+  assert.deepEqual(await audit(), [], 'plain page');
+  // Every folder of the settings panel open.
+  await page.evaluate(() => {
+    for (const f of window.screwbender.app.ui.gui.foldersRecursive()) f.open();
+    window.screwbender.app.ui.gui.open();
+  });
+  assert.deepEqual(await audit(), [], 'settings panel open');
+  await page.locator('#t-help').click();
+  assert.ok(await page.locator('#help').isVisible());
+  assert.deepEqual(await audit(), [], 'help overlay');
+  await page.keyboard.press('Escape');
+  assert.ok(!(await page.locator('#help').isVisible()), 'Esc closes the help from its button');
+});
+
+test(`${BACKEND}: axe finds no serious or critical violation in any analysis view`, async () => {
+  const ids = await page.evaluate(() => [...document.querySelectorAll('#dock .tabs button')].map((b) => b.dataset.view));
+  assert.ok(ids.length >= 8, `only ${ids.length} views`);
+  for (const id of ids) {
+    await page.evaluate((v) => window.screwbender.openView(v), id);
+    await page.evaluate(() => window.screwbender.flushViews());
+    await waitFrames(page, 1);
+    assert.deepEqual(await audit(), [], `view ${id}`);
+  }
+  assert.deepEqual(problems, []);
+});

@@ -1,0 +1,175 @@
+// End-to-end: the playground with the keyboard alone. Tab reaches every control (toolbar, panel,
+// dock, timeline) and the 3-D view; the page's shortcuts act only while the view (or the page
+// itself) has the focus; with the view focused a pose is selected, moved and rotated in steps,
+// and undo takes the key edits back.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { playgroundPage, waitFrames, BACKEND } from './lib.mjs';
+
+let play;
+let page;
+let problems;
+
+before(async () => {
+  ({ play, page, problems } = await playgroundPage());
+});
+
+after(async () => {
+  await play?.close();
+});
+
+const sb = (f, arg) => page.evaluate(f, arg);
+const poses = async () => Array.from(await sb(() => window.screwbender.poses()));
+
+/** A description of the focused element: its id or a selector-like path, and its accessible name. */
+const focused = () =>
+  sb(() => {
+    const e = document.activeElement;
+    if (!e || e === document.body) return { key: 'body', name: 'body' };
+    const labelled = e.getAttribute('aria-labelledby');
+    const name = (
+      e.getAttribute('aria-label') ||
+      (labelled && document.getElementById(labelled)?.textContent) ||
+      (e.labels?.length ? [...e.labels].map((l) => l.textContent).join(' ') : '') ||
+      (e.tagName === 'BUTTON' ? e.textContent : '') ||
+      e.title ||
+      ''
+    ).trim();
+    const path = e.id ? `#${e.id}` : `${e.closest('[id]')?.id ?? ''} ${e.tagName.toLowerCase()}${e.type ? `[${e.type}]` : ''}`;
+    return { key: path, name, dock: !!e.closest('#dock'), panel: !!e.closest('#panel'), toolbar: !!e.closest('#toolbar'), timeline: !!e.closest('#timeline') };
+  });
+
+async function fresh() {
+  await sb(() => {
+    window.screwbender.app.ui.toggleHelp(false);
+    window.screwbender.app.loadPreset('l_cycle_rotated', false);
+    window.screwbender.app.history.clear?.();
+    document.activeElement?.blur();
+  });
+  await waitFrames(page, 1);
+}
+
+/** Presses Tab until the focus comes back to where it started; returns every stop. */
+async function tabRound() {
+  const seen = [];
+  for (let k = 0; k < 150; k++) {
+    await page.keyboard.press('Tab');
+    const f = await focused();
+    if (seen.length && f.key === seen[0].key && f.name === seen[0].name) break;
+    seen.push(f);
+  }
+  return seen;
+}
+
+test(`${BACKEND}: Tab walks toolbar, panel, dock, timeline and the view; every stop has a name`, async () => {
+  await fresh();
+  const sel0 = await sb(() => window.screwbender.selected());
+  // The panel open, the dock closed.
+  await sb(() => window.screwbender.app.ui.gui.open());
+  let seen = await tabRound();
+  // Tab moves the focus and nothing else (it used to cycle the selected pose).
+  assert.equal(await sb(() => window.screwbender.selected()), sel0);
+  const enabled = await sb(() =>
+    [...document.querySelectorAll('#toolbar button, #timeline button, #timeline input')].filter((e) => !e.disabled).map((e) => `#${e.id}`),
+  );
+  const keys = seen.map((f) => f.key);
+  for (const id of ['#view', ...enabled]) assert.ok(keys.includes(id), `${id} not reached by Tab: ${keys.join(', ')}`);
+  const inPanel = seen.filter((f) => f.panel).length;
+  const panelControls = await sb(
+    () => [...document.querySelectorAll('#panel button, #panel input, #panel select')].filter((e) => !e.disabled && e.offsetParent && e.tabIndex >= 0).length,
+  );
+  assert.ok(inPanel >= 10 && inPanel === panelControls, `${inPanel} of the panel's ${panelControls} controls reached`);
+  let unnamed = seen.filter((f) => f.key !== 'body' && !f.name);
+  assert.deepEqual(unnamed, [], 'controls without an accessible name');
+  // The dock open: its tabs and the open view's controls are reached too.
+  await sb(() => window.screwbender.openView('steps'));
+  seen = await tabRound();
+  const inDock = seen.filter((f) => f.dock).length;
+  assert.ok(inDock >= 8 + 3, `only ${inDock} stops in the dock`);
+  unnamed = seen.filter((f) => f.key !== 'body' && !f.name);
+  assert.deepEqual(unnamed, [], 'controls without an accessible name');
+  // The play button is named in words, not by its symbol.
+  assert.equal(await page.locator('#play').getAttribute('aria-label'), 'Play');
+  // Focus is visible: the focused control draws an outline.
+  await page.locator('#t-frame').focus();
+  await page.keyboard.press('Shift+Tab');
+  await page.keyboard.press('Tab');
+  assert.equal(await sb(() => document.activeElement.id), 't-frame');
+  const outline = await sb(() => getComputedStyle(document.activeElement).outlineStyle);
+  assert.notEqual(outline, 'none');
+  await sb(() => window.screwbender.openView(''));
+});
+
+test(`${BACKEND}: keys inside a control keep their meaning there`, async () => {
+  await fresh();
+  await sb(() => window.screwbender.app.select(2));
+  const p0 = await poses();
+  // Space on a focused toolbar button presses that button; it does not toggle playback.
+  await page.locator('#t-frame').focus();
+  await page.keyboard.press(' ');
+  assert.equal(await sb(() => window.screwbender.app.anim.playing), false);
+  // Backspace and Delete on the timeline slider do not delete the selected pose; arrows move the slider.
+  await page.locator('#scrub').focus();
+  await page.keyboard.press('Backspace');
+  await page.keyboard.press('Delete');
+  await page.keyboard.press('ArrowRight');
+  assert.deepEqual(await poses(), p0);
+  assert.ok((await sb(() => Number(document.getElementById('scrub').value))) > 0, 'the slider moved');
+  // Digits inside the panel's number field do not change the levels.
+  const levels = await sb(() => window.screwbender.options().levels);
+  await page.locator('#play').focus();
+  await page.keyboard.press('b');
+  assert.equal(await sb(() => window.screwbender.options().scheme), 'fourpoint', 'b on a focused button changed the scheme');
+  assert.equal(await sb(() => window.screwbender.options().levels), levels);
+});
+
+test(`${BACKEND}: with the view focused, keys select, move and rotate a pose; undo takes them back`, async () => {
+  await fresh();
+  await sb(() => window.screwbender.app.select(-1));
+  const p0 = await poses();
+  await page.locator('#view').focus();
+  await page.keyboard.press('n');
+  assert.equal(await sb(() => window.screwbender.selected()), 0);
+  await page.keyboard.press('n');
+  assert.equal(await sb(() => window.screwbender.selected()), 1);
+  await page.keyboard.press('p');
+  assert.equal(await sb(() => window.screwbender.selected()), 0);
+  const i = 0;
+  // Moves: 0.25 along x, 0.025 along y (Shift: fine), 0.25 along z (Page Up).
+  await page.keyboard.press('ArrowRight');
+  await page.keyboard.press('Shift+ArrowUp');
+  await page.keyboard.press('PageUp');
+  const p1 = await poses();
+  const d = [0, 1, 2].map((a) => p1[7 * i + a] - p0[7 * i + a]);
+  assert.ok(Math.abs(d[0] - 0.25) < 1e-12 && Math.abs(d[1] - 0.025) < 1e-12 && Math.abs(d[2] - 0.25) < 1e-12, `moved by ${d}`);
+  assert.deepEqual(p1.slice(7 * i + 3, 7 * i + 7), p0.slice(7 * i + 3, 7 * i + 7), 'a move keeps the rotation');
+  for (let k = 0; k < p0.length; k++) if (Math.floor(k / 7) !== i) assert.equal(p1[k], p0[k], 'other poses stay');
+  // Rotation: Alt + → turns the pose by 15° about world x (q' = q_x(15°) q).
+  await page.keyboard.press('Alt+ArrowRight');
+  const p2 = await poses();
+  const q1 = p1.slice(7 * i + 3, 7 * i + 7);
+  const q2 = p2.slice(7 * i + 3, 7 * i + 7);
+  const h = (15 * Math.PI) / 360;
+  const [c, s] = [Math.cos(h), Math.sin(h)];
+  const want = [c * q1[0] - s * q1[1], c * q1[1] + s * q1[0], c * q1[2] - s * q1[3], c * q1[3] + s * q1[2]];
+  for (let k = 0; k < 4; k++) assert.ok(Math.abs(q2[k] - want[k]) < 1e-9, `quaternion ${q2} != ${want}`);
+  assert.deepEqual(p2.slice(7 * i, 7 * i + 3), p1.slice(7 * i, 7 * i + 3), 'a rotation keeps the origin');
+  // Undo: the rotation, then the moves (presses within a second are one step).
+  await page.keyboard.press('Control+z');
+  assert.deepEqual(await poses(), p1);
+  await page.keyboard.press('Control+z');
+  assert.deepEqual(await poses(), p0);
+  await page.keyboard.press('Control+Shift+z');
+  assert.deepEqual(await poses(), p1);
+  // Delete removes the selected pose from the view.
+  await page.keyboard.press('Delete');
+  assert.equal((await poses()).length / 7, p0.length / 7 - 1);
+  await page.keyboard.press('Control+z');
+  assert.equal((await poses()).length, p0.length);
+  // Space on the view toggles playback.
+  await page.keyboard.press(' ');
+  assert.equal(await sb(() => window.screwbender.app.anim.playing), true);
+  await page.keyboard.press(' ');
+  assert.equal(await sb(() => window.screwbender.app.anim.playing), false);
+  assert.deepEqual(problems, []);
+});
