@@ -1,8 +1,18 @@
 //! `screwbender compare [--methods a,b,c] [--json] [FILE]`: the metrics of the comparison
-//! methods on one set of control poses, as an aligned text table or JSON.
+//! methods on one set of control poses, as an aligned text table or JSON; and `screwbender
+//! rational`: the Chaudhry–Cameron motion's rational Bézier form, from poses or triangles.
 
-use screwbender::methods::{compare_applicable, compare_methods, Method, MetricsOptions};
-use screwbender::{Error, Pose};
+use std::io::Read;
+
+use screwbender::methods::{
+    compare_applicable, compare_methods, triangle_samples, Continuity, EndCondition, Method,
+    MetricsOptions, RationalMotion, ReferenceTriangle, TriangleSample, TRIANGLE_STRIDE,
+};
+use screwbender::{Error, ErrorKind, Pose, MAX_DOCUMENT_BYTES};
+
+use crate::args::{number, ArgReader};
+use crate::failure::Failure;
+use crate::input::read_document;
 
 /// The comparison table of the named `methods` on `poses` (pose `i` at parameter `u = i`; a
 /// closed input is a cycle of period `n`).
@@ -48,4 +58,168 @@ pub fn compare(
     } else {
         table.to_text()
     })
+}
+
+/// The options of `screwbender rational`.
+struct RationalOptions {
+    continuity: Continuity,
+    triangles: bool,
+    closing_time: Option<f64>,
+    file: Option<String>,
+}
+
+fn parse_rational(args: &[String]) -> Result<RationalOptions, Failure> {
+    let mut r = ArgReader::new(args);
+    let (mut c1, mut end) = (true, EndCondition::ZeroCurvatureStart);
+    let (mut triangles, mut closing_time) = (false, None);
+    while let Some(arg) = r.next_arg() {
+        match arg {
+            "--continuity" => {
+                c1 = match r.value(arg)?.to_ascii_lowercase().as_str() {
+                    "c0" => false,
+                    "c1" => true,
+                    other => {
+                        return Err(Failure(format!(
+                            "--continuity: unknown value '{other}' (expected c0 or c1)"
+                        )))
+                    }
+                }
+            }
+            "--end" => {
+                end = match r.value(arg)?.as_str() {
+                    "18" => EndCondition::ZeroCurvatureStart,
+                    "19" => EndCondition::ZeroCurvatureEnd,
+                    other => {
+                        return Err(Failure(format!(
+                            "--end: unknown value '{other}' (expected 18: zero curvature at the \
+                             start, or 19: at the end)"
+                        )))
+                    }
+                }
+            }
+            "--triangles" => triangles = true,
+            "--closing-time" => closing_time = Some(number(arg, &r.value(arg)?)?),
+            other => r.positional(other)?,
+        }
+    }
+    Ok(RationalOptions {
+        continuity: if c1 {
+            Continuity::C1(end)
+        } else {
+            Continuity::C0
+        },
+        triangles,
+        closing_time,
+        file: r.file,
+    })
+}
+
+/// The text of `file` (`None` or `-`: standard input), at most [`MAX_DOCUMENT_BYTES`], and the
+/// name to report it by.
+fn read_text(file: Option<&str>) -> Result<(String, String), Failure> {
+    let mut text = String::new();
+    let name = match file {
+        None | Some("-") => {
+            std::io::stdin()
+                .take(MAX_DOCUMENT_BYTES as u64 + 1)
+                .read_to_string(&mut text)
+                .map_err(|e| Failure(format!("standard input: {e}")))?;
+            "standard input".to_string()
+        }
+        Some(path) => {
+            std::fs::File::open(path)
+                .and_then(|f| {
+                    f.take(MAX_DOCUMENT_BYTES as u64 + 1)
+                        .read_to_string(&mut text)
+                })
+                .map_err(|e| Failure(format!("{path}: {e}")))?;
+            path.to_string()
+        }
+    };
+    if text.len() > MAX_DOCUMENT_BYTES {
+        return Err(Failure(format!(
+            "{name}: larger than the limit of {MAX_DOCUMENT_BYTES} bytes"
+        )));
+    }
+    Ok((name, text))
+}
+
+/// A raw triangle sequence: one key per line, `t` and the vertices `a`, `x`, `y` (10 numbers
+/// separated by commas or spaces); empty lines and `#` comments are skipped.
+fn parse_triangles(text: &str) -> Result<Vec<TriangleSample>, Error> {
+    let mut data = Vec::new();
+    for (i, line) in text.lines().enumerate() {
+        let line = line.split('#').next().unwrap_or("").trim();
+        if line.is_empty() {
+            continue;
+        }
+        let fields: Vec<&str> = line
+            .split(|c: char| c == ',' || c.is_whitespace())
+            .filter(|f| !f.is_empty())
+            .collect();
+        let at = format!("line {}", i + 1);
+        if fields.len() != TRIANGLE_STRIDE {
+            return Err(Error::new(
+                at,
+                ErrorKind::OutOfRange {
+                    value: format!("{} numbers", fields.len()),
+                    expected: format!("{TRIANGLE_STRIDE}: t, then a, x, y (3 each)"),
+                },
+            ));
+        }
+        for f in fields {
+            data.push(f.parse::<f64>().map_err(|_| {
+                Error::new(
+                    at.clone(),
+                    ErrorKind::Parse {
+                        message: format!("'{f}' is not a number"),
+                    },
+                )
+            })?);
+        }
+    }
+    triangle_samples(&data)
+}
+
+/// `screwbender rational [--continuity c0|c1] [--end 18|19] [--triangles] [--closing-time T]
+/// [FILE]`: the Chaudhry–Cameron rational motion (docs/math/rational-motion.md) as its rational
+/// Bézier control points (JSON), fitted to a motion document's poses (at the document's key
+/// times, else one second per span) or, with `--triangles`, to a raw triangle sequence
+/// ([`parse_triangles`]; closed only with `--closing-time`, C⁰). A C¹ fit whose recursion runs
+/// away gets a `screwbender: warning: …` line on standard error.
+pub fn rational(args: &[String]) -> Result<String, Failure> {
+    let o = parse_rational(args)?;
+    let motion = if o.triangles {
+        let (name, text) = read_text(o.file.as_deref())?;
+        let samples = parse_triangles(&text).map_err(|e| Failure(format!("{name}: {e}")))?;
+        match o.closing_time {
+            Some(tc) => RationalMotion::fit_closed(&samples, tc, o.continuity)?,
+            None => RationalMotion::fit(&samples, o.continuity)?,
+        }
+    } else {
+        if o.closing_time.is_some() {
+            return Err(Failure(
+                "--closing-time is for --triangles (a document gives its own times)".into(),
+            ));
+        }
+        let doc = read_document(o.file.as_deref())?;
+        let times = doc.times.clone().unwrap_or_else(|| {
+            (0..doc.poses.len() + usize::from(doc.closed))
+                .map(|i| i as f64)
+                .collect()
+        });
+        RationalMotion::from_poses(
+            &doc.poses,
+            &times,
+            doc.closed,
+            o.continuity,
+            &ReferenceTriangle::SCENE_B1,
+        )?
+    };
+    if let Some(w) = motion.warning() {
+        eprintln!("screwbender: warning: {w}");
+    }
+    let bezier = serde_json::to_string_pretty(&motion.bezier())
+        .map_err(|e| Failure(format!("writing the Bézier form: {e}")))?;
+    Ok(bezier + "\n")
 }

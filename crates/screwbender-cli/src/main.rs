@@ -34,6 +34,10 @@ USAGE:
                                                  metrics of the comparison methods on the poses
                                                  (polyscrew bspline fourpoint jarek slerp
                                                  decoupled kks rb cc0 cc1; default: all that apply)
+  screwbender rational [--continuity c0|c1] [--end 18|19] [--triangles [--closing-time T]] [FILE]
+                                                 the Chaudhry–Cameron motion's rational Bézier
+                                                 control points (JSON), from the poses or from a
+                                                 raw triangle sequence (lines t,a,x,y: 10 numbers)
   screwbender export --format glb|gltf|csv [EXPORT OPTIONS] [FILE] -o OUT
                                                  the motion as a glTF 2.0 asset (OUT.glb, or
                                                  OUT.gltf + OUT.bin) or CSV samples (stdout
@@ -120,10 +124,11 @@ fn run(args: &[String]) -> Result<String, Failure> {
         "screw" => screw_command(rest),
         "preset" => preset(rest),
         "compare" => compare_command(rest),
+        "rational" => compare::rational(rest),
         "export" => export::export(rest),
         "import" => import::import(rest),
         other => Err(Failure(format!(
-            "unknown command '{other}' (expected subdivide, eval, screw, preset, compare, export, import; try --help)"
+            "unknown command '{other}' (expected subdivide, eval, screw, preset, compare, rational, export, import; try --help)"
         ))),
     }
 }

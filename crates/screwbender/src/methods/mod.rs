@@ -69,8 +69,8 @@ pub use slerp_polyline::SlerpPolyline;
 
 // Chaudhry & Cameron.
 pub use rational::{
-    Continuity, EndCondition, RationalBezierExport, RationalBezierSegment, RationalMotion,
-    GROWTH_WARNING, MIN_DENOMINATOR,
+    triangle_samples, Continuity, EndCondition, RationalBezierExport, RationalBezierSegment,
+    RationalMotion, GROWTH_WARNING, MIN_DENOMINATOR, TRIANGLE_STRIDE,
 };
 pub use triangle::{
     rotation_between, samples_from_poses, validate_samples, ReferenceTriangle, TriangleSample,

@@ -270,6 +270,16 @@ impl RationalMotion {
         }
     }
 
+    /// The three vertices `[a(t), x(t), y(t)]` of the triangle the motion was fitted to (for a
+    /// motion from poses: the reference triangle placed by the poses) at time `t`:
+    /// `v(t) = a(t) + R(t)(v_0 − a_0)` (docs/math/rational-motion.md §3).
+    pub fn vertices(&self, t: f64) -> [DVec3; 3] {
+        let first = &self.samples[0];
+        let a = self.translation(t);
+        let r = self.rotation(t);
+        [a, a + r * (first.x - first.a), a + r * (first.y - first.a)]
+    }
+
     /// How far the C¹ end-condition recursion has carried the middle control points from the
     /// data (docs/math/rational-motion.md §6.1, caution): the largest distance of a middle
     /// control point `M_i` (quaternions) or `Â_i` (translation spline) from the midpoint of its
@@ -426,6 +436,37 @@ impl RationalMotion {
             segments,
         }
     }
+}
+
+/// Numbers per key of a raw triangle sequence: `t, a_x, a_y, a_z, x_x, x_y, x_z, y_x, y_y, y_z`.
+pub const TRIANGLE_STRIDE: usize = 10;
+
+/// A raw triangle sequence (docs/math/rational-motion.md §1) from flat numbers, [`TRIANGLE_STRIDE`]
+/// per key: the time, then the three vertices `a`, `x`, `y`. The length must be a multiple of the
+/// stride; the samples are not validated here ([`RationalMotion::fit`] does, naming
+/// `samples[i]`).
+pub fn triangle_samples(data: &[f64]) -> Result<Vec<TriangleSample>, Error> {
+    if data.len() % TRIANGLE_STRIDE != 0 {
+        return Err(Error::new(
+            "samples",
+            ErrorKind::OutOfRange {
+                value: format!("{} numbers", data.len()),
+                expected: format!(
+                    "a multiple of {TRIANGLE_STRIDE} (t and the vertices a, x, y of each key)"
+                ),
+            },
+        ));
+    }
+    let v = |c: &[f64]| DVec3::new(c[0], c[1], c[2]);
+    Ok(data
+        .chunks_exact(TRIANGLE_STRIDE)
+        .map(|c| TriangleSample {
+            t: c[0],
+            a: v(&c[1..4]),
+            x: v(&c[4..7]),
+            y: v(&c[7..10]),
+        })
+        .collect())
 }
 
 fn wxyz(q: DQuat) -> [f64; 4] {
