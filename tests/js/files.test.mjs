@@ -24,7 +24,7 @@ describe('Motion.exportFile', () => {
   it('writes a GLB with the adaptive keyframe count, and importMotionFile reads the control poses back', () => {
     const m = Motion.fromScene('l_cycle_rotated');
     const f = m.exportFile({ format: 'glb' });
-    assert.equal(f.fileName, 'l_cycle_rotated.glb');
+    assert.equal(f.fileName, 'l_cycle_rotated-motion.glb');
     assert.equal(f.mimeType, 'model/gltf-binary');
     assert.ok(f.data instanceof Uint8Array);
     assert.equal(new TextDecoder().decode(f.data.subarray(0, 4)), 'glTF');
@@ -41,13 +41,13 @@ describe('Motion.exportFile', () => {
   it('writes .gltf + .bin that import together (the JSON names the buffer)', () => {
     const m = Motion.fromScene('helix_open');
     const f = m.exportFile({ format: 'gltf', name: 'walk' });
-    assert.equal(f.fileName, 'walk.gltf');
-    assert.equal(f.binName, 'walk.bin');
+    assert.equal(f.fileName, 'walk-motion.gltf');
+    assert.equal(f.binName, 'walk-motion.bin');
     const json = JSON.parse(new TextDecoder().decode(f.data));
-    assert.equal(json.buffers[0].uri, 'walk.bin');
+    assert.equal(json.buffers[0].uri, 'walk-motion.bin');
     assert.equal(json.buffers[0].byteLength, f.bin.length);
-    assert.throws(() => importMotionFile('walk.gltf', f.data), /walk\.gltf: .*walk\.bin/);
-    const doc = importMotionFile('walk.gltf', f.data, { 'walk.bin': f.bin });
+    assert.throws(() => importMotionFile('walk-motion.gltf', f.data), /walk-motion\.gltf: .*walk-motion\.bin/);
+    const doc = importMotionFile('walk-motion.gltf', f.data, { 'walk-motion.bin': f.bin });
     samePoses(new Motion(doc).poses(), m.poses(), 1e-6);
     assert.equal(doc.closed, false);
   });

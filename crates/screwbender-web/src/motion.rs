@@ -318,10 +318,14 @@ impl MotionHandle {
     /// free), or `undefined` when all are free.
     #[wasm_bindgen(getter, unchecked_return_type = "(number | null)[] | undefined")]
     pub fn velocities(&self) -> Result<JsValue, JsError> {
-        match self.read(|s| s.doc.velocities.clone())? {
-            Some(v) => to_js(&v),
-            None => Ok(JsValue::UNDEFINED),
-        }
+        Ok(match self.read(|s| s.doc.velocities.clone())? {
+            Some(v) => v
+                .iter()
+                .map(|v| v.map_or(JsValue::NULL, JsValue::from_f64))
+                .collect::<js_sys::Array>()
+                .into(),
+            None => JsValue::UNDEFINED,
+        })
     }
 
     /// Sets the key velocities (one per control pose: a number ≥ 0 in poses per second, or

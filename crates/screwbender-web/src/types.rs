@@ -51,8 +51,8 @@ export interface MotionDocument {
   closed: boolean;
   /** Key times in seconds (present only when set). */
   times?: number[];
-  /** Key velocities in poses per second, `null` where free (present only when set). */
-  velocities?: (number | null)[];
+  /** Key velocities in poses per second, `null` (in JSON text) or `undefined` (in this object) where free; present only when set. */
+  velocities?: (number | null | undefined)[];
   poses: Pose[];
 }
 
