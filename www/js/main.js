@@ -15,7 +15,9 @@
 //   openView(id): instance          opens an analysis view of the dock ('' closes it)
 //   flushViews()                    runs the open view's pending update now
 //   app                             the App object itself (for benchmarks / debugging)
+//   lessons: Promise<player>        the lesson player once started (js/lessons/player.js documents it)
 import { App } from './app.js';
+import { startLessons } from './lessons/player.js';
 
 const app = new App();
 
@@ -27,10 +29,23 @@ const ready = app.start().catch((e) => {
   throw e;
 });
 ready.catch(() => {});
+// Lessons: the Lessons menu, ?lesson=…, the first-visit tour (a failure leaves the page as it is).
+const lessons = ready.then(
+  () => {
+    try {
+      return startLessons(app);
+    } catch (e) {
+      app.showError(`Lessons unavailable: ${e.message}`);
+      return null;
+    }
+  },
+  () => null,
+);
 
 window.screwbender = {
   ready,
   app,
+  lessons,
   backend: () => app.backend,
   errors: () => [...app.errors],
   // During a drag the live state is the drag session's (the Motion gets the pose on release).
