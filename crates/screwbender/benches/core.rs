@@ -10,7 +10,9 @@ use std::hint::black_box;
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use glam::{DQuat, DVec3};
 use nalgebra::{Isometry3, Quaternion, Translation3, UnitDualQuaternion, UnitQuaternion};
-use screwbender::{screw, Blend, Pose, Rules, Scheme, Screw, Subdivision};
+use screwbender::{
+    screw, Blend, Pose, Rules, Scheme, Screw, ScrewBender, Subdivision, SubdivisionBuffers,
+};
 
 /// Pairs per batch (fixed seed).
 const PAIRS: usize = 1024;
@@ -186,15 +188,137 @@ fn screws(c: &mut Criterion) {
     g.finish();
 }
 
-fn subdivision(c: &mut Criterion) {
-    let mut rng = Rng(7);
-    // A smooth-ish 32-pose cycle: consecutive poses 0.3 rad and ~1 unit apart.
+/// A smooth-ish cycle of `n` poses: consecutive poses 0.3 rad and ~1 unit apart.
+fn cycle(rng: &mut Rng, n: usize) -> Vec<Pose> {
     let mut poses = vec![rng.pose()];
-    for _ in 1..32 {
+    for _ in 1..n {
         let last = *poses.last().unwrap();
         let r = DQuat::from_axis_angle(rng.axis(), 0.3);
         poses.push(Pose::new(last.origin + rng.vec(1.0), r * last.rotation));
     }
+    poses
+}
+
+/// Min / median / max of `v`.
+fn spread(mut v: Vec<f64>) -> [f64; 3] {
+    v.sort_by(f64::total_cmp);
+    [v[0], v[v.len() / 2], v[v.len() - 1]]
+}
+
+/// `ScrewBender::new` against `Subdivision::apply` alone on the same 32 poses × 6 levels (2048
+/// refined poses), in alternating runs: what building the motion (validation, span screws)
+/// adds to the subdivision. Printed as min / median / max of the per-run ratios.
+fn report_motion_overhead() {
+    let poses = cycle(&mut Rng(7), 32);
+    for scheme in [Scheme::BSpline, Scheme::FourPoint, Scheme::Jarek] {
+        let s = Subdivision::new(scheme, Rules::Direct, 6);
+        let (mut ratios, mut apply, mut new) = (Vec::new(), Vec::new(), Vec::new());
+        for _ in 0..300 {
+            let t0 = std::time::Instant::now();
+            for _ in 0..4 {
+                black_box(s.apply(black_box(&poses), true).unwrap());
+            }
+            let t1 = std::time::Instant::now();
+            for _ in 0..4 {
+                black_box(ScrewBender::new(black_box(poses.clone()), true, s).unwrap());
+            }
+            let t2 = std::time::Instant::now();
+            let (a, b) = ((t1 - t0).as_secs_f64(), (t2 - t1).as_secs_f64());
+            ratios.push(b / a);
+            apply.push(a * 1e6 / 4.0);
+            new.push(b * 1e6 / 4.0);
+        }
+        // The span screws of the refined poses, one at a time (the route before batches) and
+        // in batches (as `ScrewBender::new` builds them), alternating.
+        let refined = s.apply(&poses, true).unwrap();
+        let mut spans = (Vec::new(), Vec::new());
+        for _ in 0..300 {
+            let t0 = std::time::Instant::now();
+            let one: Vec<Screw> = (0..refined.len())
+                .map(|i| Screw::between(&refined[i], &refined[(i + 1) % refined.len()]))
+                .collect();
+            black_box(one);
+            let t1 = std::time::Instant::now();
+            black_box(screwbender::Polyscrew::new(black_box(refined.clone()), true).unwrap());
+            let t2 = std::time::Instant::now();
+            spans
+                .0
+                .push((t1 - t0).as_secs_f64() * 1e9 / refined.len() as f64);
+            spans
+                .1
+                .push((t2 - t1).as_secs_f64() * 1e9 / refined.len() as f64);
+        }
+        println!(
+            "  span screws per refined pose (medians): one at a time {:.1} ns, Polyscrew::new {:.1} ns",
+            spread(spans.0)[1],
+            spread(spans.1)[1]
+        );
+        let [r0, r1, r2] = spread(ratios);
+        let (a, b) = (spread(apply)[1], spread(new)[1]);
+        println!(
+            "ScrewBender::new / Subdivision::apply, {scheme} direct, 2048 refined poses: \
+             {r0:.2} / {r1:.2} / {r2:.2} (min / median / max; medians {b:.1} vs {a:.1} us)"
+        );
+    }
+}
+
+/// Nanoseconds per refined pose of 4-point direct subdivisions of an 8-pose cycle into 2¹² and
+/// 2²⁰ poses, into caller-owned buffers (`apply_into`, reused from run to run) and by `apply`
+/// (fresh result memory each time), in alternating runs. Printed as min / median / max.
+fn report_large_subdivisions() {
+    let poses = cycle(&mut Rng(11), 8);
+    let (small, large) = (
+        Subdivision::new(Scheme::FourPoint, Rules::Direct, 9),
+        Subdivision::new(Scheme::FourPoint, Rules::Direct, 17),
+    );
+    let mut out = Vec::new();
+    let mut buffers = SubdivisionBuffers::new();
+    // Grow the caller's memory once, as a session's first subdivision does.
+    large
+        .apply_into(&poses, true, &mut out, &mut buffers)
+        .unwrap();
+    let mut times: [Vec<f64>; 4] = Default::default();
+    for _ in 0..12 {
+        let runs: [(&Subdivision, bool); 4] = [
+            (&small, true),
+            (&large, true),
+            (&small, false),
+            (&large, false),
+        ];
+        for (k, (s, into)) in runs.into_iter().enumerate() {
+            let reps = if s.levels == 9 { 256 } else { 1 };
+            let t0 = std::time::Instant::now();
+            for _ in 0..reps {
+                if into {
+                    s.apply_into(black_box(&poses), true, &mut out, &mut buffers)
+                        .unwrap();
+                    black_box(&out);
+                } else {
+                    black_box(s.apply(black_box(&poses), true).unwrap());
+                }
+            }
+            let total = (8usize << s.levels) * reps;
+            times[k].push(t0.elapsed().as_secs_f64() * 1e9 / total as f64);
+        }
+    }
+    let [small_into, large_into, small_apply, large_apply] = times.map(spread);
+    let show = |v: [f64; 3]| format!("{:.1} / {:.1} / {:.1}", v[0], v[1], v[2]);
+    println!(
+        "ns per refined pose, 4-point direct, 8-pose cycle (min / median / max): apply_into 2^12 {}, \
+         2^20 {} (median ratio {:.2}); apply 2^12 {}, 2^20 {} (median ratio {:.2})",
+        show(small_into),
+        show(large_into),
+        large_into[1] / small_into[1],
+        show(small_apply),
+        show(large_apply),
+        large_apply[1] / small_apply[1]
+    );
+}
+
+fn subdivision(c: &mut Criterion) {
+    report_motion_overhead();
+    report_large_subdivisions();
+    let poses = cycle(&mut Rng(7), 32);
     let mut g = c.benchmark_group("subdivide 32 poses x 6 levels");
     for rules in [Rules::Direct, Rules::SplitTweak] {
         for scheme in [Scheme::BSpline, Scheme::FourPoint, Scheme::Jarek] {

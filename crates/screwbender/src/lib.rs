@@ -161,5 +161,5 @@ pub use subdivision::decoupled::{
 pub use subdivision::scheme::{Rules, Scheme, MAX_J_PARAMETER};
 pub use subdivision::split_tweak::{split, split_tweak_levels, split_tweak_step, SplitTweakStep};
 pub use subdivision::warnings::{Warning, HALF_TURN_TOLERANCE};
-pub use subdivision::{Subdivision, MAX_REFINED_POSES};
+pub use subdivision::{Subdivision, SubdivisionBuffers, MAX_REFINED_POSES};
 pub use timing::Timing;

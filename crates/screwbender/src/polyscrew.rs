@@ -56,9 +56,7 @@ impl Polyscrew {
                 },
             ));
         }
-        for (i, p) in poses.iter_mut().enumerate() {
-            *p = checked_pose(p).map_err(|e| e.within(&format!("poses[{i}]")))?;
-        }
+        check_poses(&mut poses)?;
         let spans = span_screws(&poses, closed);
         Ok(Polyscrew {
             poses,
@@ -66,6 +64,35 @@ impl Polyscrew {
             spans,
             span_length,
         })
+    }
+
+    /// Makes this a polyscrew through the poses `fill` writes into the (cleared) pose buffer,
+    /// reusing this polyscrew's memory for the poses and the span screws. The poses are checked
+    /// as in [`Polyscrew::with_span_length`]; on error the content of the polyscrew is
+    /// unspecified (the caller rebuilds it).
+    pub(crate) fn refill(
+        &mut self,
+        closed: bool,
+        span_length: f64,
+        fill: impl FnOnce(&mut Vec<Pose>),
+    ) -> Result<(), Error> {
+        self.poses.clear();
+        fill(&mut self.poses);
+        if self.poses.len() < 2 || !(span_length.is_finite() && span_length > 0.0) {
+            // The same errors as a new polyscrew.
+            return Polyscrew::with_span_length(
+                std::mem::take(&mut self.poses),
+                closed,
+                span_length,
+            )
+            .map(drop);
+        }
+        check_poses(&mut self.poses)?;
+        self.closed = closed;
+        self.span_length = span_length;
+        self.spans.clear();
+        span_screws_into(&self.poses, closed, &mut self.spans);
+        Ok(())
     }
 
     /// Mutable access to the poses for in-crate local updates; call
@@ -80,7 +107,8 @@ impl Polyscrew {
         let n = self.poses.len();
         let spans = self.spans.len();
         if count >= n {
-            self.spans = span_screws(&self.poses, self.closed);
+            self.spans.clear();
+            span_screws_into(&self.poses, self.closed, &mut self.spans);
             return;
         }
         // Spans start−1 … start+count−1 have an end in the range.
@@ -192,13 +220,37 @@ pub(crate) fn checked_pose(p: &Pose) -> Result<Pose, Error> {
     Ok(Pose::new(p.origin, rotation))
 }
 
-/// The screw of every span of a pose sequence.
+/// Checks every pose for use in a motion ([`checked_pose`]), naming the first bad one.
+pub(crate) fn check_poses(poses: &mut [Pose]) -> Result<(), Error> {
+    for (i, p) in poses.iter_mut().enumerate() {
+        // The common case inline (a refined motion checks thousands): finite and unit to
+        // rounding, which `checked_pose` passes through untouched.
+        if p.origin.is_finite() && unit_to_rounding(p.rotation.length_squared()) {
+            continue;
+        }
+        *p = checked_pose(p).map_err(|e| e.within(&format!("poses[{i}]")))?;
+    }
+    Ok(())
+}
+
+/// The screw of every span of a pose sequence (see [`span_screws_into`]).
 pub(crate) fn span_screws(poses: &[Pose], closed: bool) -> Vec<Screw> {
-    let n = poses.len();
-    let count = if closed { n } else { n - 1 };
-    (0..count)
-        .map(|i| Screw::between(&poses[i], &poses[(i + 1) % n]))
-        .collect()
+    let mut spans = Vec::new();
+    span_screws_into(poses, closed, &mut spans);
+    spans
+}
+
+/// Appends the screw of every span of a pose sequence to `out`: several at a time on SIMD
+/// lanes where the build has them, bit for bit [`Screw::between`] of each span.
+pub(crate) fn span_screws_into(poses: &[Pose], closed: bool, out: &mut Vec<Screw>) {
+    #[cfg(lanes)]
+    crate::screw::batch::span_screws(poses, closed, out);
+    #[cfg(not(lanes))]
+    {
+        let n = poses.len();
+        let count = if closed { n } else { n.saturating_sub(1) };
+        out.extend((0..count).map(|i| Screw::between(&poses[i], &poses[(i + 1) % n])));
+    }
 }
 
 impl Motion for Polyscrew {

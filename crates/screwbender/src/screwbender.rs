@@ -4,9 +4,9 @@ use glam::DVec3;
 
 use crate::error::{Error, ErrorKind};
 use crate::motion::{Kinematics, Motion};
-use crate::polyscrew::{checked_pose, Polyscrew};
+use crate::polyscrew::{check_poses, checked_pose, Polyscrew};
 use crate::pose::Pose;
-use crate::subdivision::Subdivision;
+use crate::subdivision::{Subdivision, SubdivisionBuffers};
 
 /// A control polyscrew refined by [`Subdivision`]: the paper's smooth motion.
 ///
@@ -28,7 +28,7 @@ impl ScrewBender {
         subdivision: Subdivision,
     ) -> Result<ScrewBender, Error> {
         // Validate the control poses first so errors name them, not refined poses.
-        let control = Polyscrew::new(control, closed)?.poses().to_vec();
+        let control = checked_control(control)?;
         let poses = subdivision.apply(&control, closed)?;
         let h = 0.5f64.powi(subdivision.levels as i32);
         // Unreachable for validated poses and options (they cannot overflow); named if it happens.
@@ -40,6 +40,41 @@ impl ScrewBender {
             subdivision,
             refined,
         })
+    }
+
+    /// Makes this the motion [`ScrewBender::new`] builds from the same arguments (bit for
+    /// bit), reusing this motion's memory for the refined poses and their screws, and `buffers`
+    /// for the subdivision's working sequences (see [`Subdivision::apply_into`]): rebuilding a
+    /// motion of the same size or smaller needs no fresh memory besides the control poses.
+    ///
+    /// On error (too few or bad control poses, bad options, too many refined poses) nothing
+    /// changes.
+    pub fn rebuild(
+        &mut self,
+        control: &[Pose],
+        closed: bool,
+        subdivision: Subdivision,
+        buffers: &mut SubdivisionBuffers<Pose>,
+    ) -> Result<(), Error> {
+        let control = checked_control(control.to_vec())?;
+        subdivision.validate()?;
+        subdivision.output_len(control.len(), closed)?;
+        let h = 0.5f64.powi(subdivision.levels as i32);
+        let refilled = self.refined.refill(closed, h, |poses| {
+            // Cannot fail: the options and the output length were checked above.
+            let done = subdivision.apply_into(&control, closed, poses, buffers);
+            debug_assert!(done.is_ok());
+        });
+        if let Err(e) = refilled {
+            // Unreachable for validated poses and options (as in `new`): restore this motion
+            // from its own arguments, which gives it back bit for bit.
+            *self = ScrewBender::new(self.control.clone(), self.closed, self.subdivision)?;
+            return Err(e.within("refined"));
+        }
+        self.control = control;
+        self.closed = closed;
+        self.subdivision = subdivision;
+        Ok(())
     }
 
     /// Replaces control pose `i` and re-subdivides only the part of the motion it influences
@@ -118,4 +153,14 @@ impl Motion for ScrewBender {
     fn kinematics(&self, u: f64, local: DVec3) -> Option<Kinematics> {
         Some(self.refined.point_kinematics(u, local))
     }
+}
+
+/// Control poses checked as [`Polyscrew::new`] checks them (at least 2, each finite and unit),
+/// with the same errors.
+fn checked_control(mut control: Vec<Pose>) -> Result<Vec<Pose>, Error> {
+    if control.len() < 2 {
+        return Polyscrew::new(control, false).map(|p| p.poses().to_vec());
+    }
+    check_poses(&mut control)?;
+    Ok(control)
 }

@@ -230,6 +230,105 @@ pub(crate) fn sample_cycle(p: &[Pose], ts: &[f64], out: &mut [Vec<Pose>]) {
     run_widest(SampleCycle(p, ts, out));
 }
 
+/// The lanes of `v` as an array.
+#[inline(always)]
+fn lanes_of<L: Width<N>, const N: usize>(v: L) -> [f64; N] {
+    std::array::from_fn(|k| v.lane(k))
+}
+
+/// The lanes of three-vectors of lanes, one array per coordinate.
+#[inline(always)]
+fn v3_lanes<L: Width<N>, const N: usize>(v: &V3<L>) -> [[f64; N]; 3] {
+    [lanes_of(v.x), lanes_of(v.y), lanes_of(v.z)]
+}
+
+/// Appends the screws of the `N` regular spans of `span`, starting at `starts`, to `out`: the
+/// fields [`Screw::between`] fills in, bit for bit (in the regular case its half angle is the
+/// same `atan2` kernel, and nothing else is decided).
+#[inline(always)]
+fn push_screws<L: Width<N>, const N: usize>(
+    span: &RegularSpan<L>,
+    starts: &[Pose],
+    out: &mut Vec<Screw>,
+) {
+    // Every lane read out once, coordinate by coordinate, before any screw is written.
+    let c = &span.coefficients;
+    let (half_angle, sin_half, cos_half) = (
+        lanes_of(span.half_angle),
+        lanes_of(span.s),
+        lanes_of(span.w),
+    );
+    let (axis, slide, perp) = (v3_lanes(&c.axis), lanes_of(c.slide), v3_lanes(&c.perp));
+    let (sweep, sweep_normal) = (v3_lanes(&c.sweep), v3_lanes(&c.sweep_normal));
+    let q = &c.axis_rotation;
+    let rotation = [lanes_of(q.x), lanes_of(q.y), lanes_of(q.z), lanes_of(q.w)];
+    let v3 = |v: &[[f64; N]; 3], k: usize| V3::new(v[0][k], v[1][k], v[2][k]);
+    let starts: &[Pose; N] = starts.try_into().expect("one start per lane");
+    let (origins, rotations) = (
+        starts.map(|p| p.origin.to_array()),
+        starts.map(|p| p.rotation.to_array()),
+    );
+    for k in 0..N {
+        out.push(Screw {
+            start: Pose::new(origins[k].into(), glam::DQuat::from_array(rotations[k])),
+            half_angle: half_angle[k],
+            sin_half: sin_half[k],
+            cos_half: cos_half[k],
+            coefficients: kernel::Coefficients {
+                axis: v3(&axis, k),
+                slide: slide[k],
+                perp: v3(&perp, k),
+                sweep: v3(&sweep, k),
+                sweep_normal: v3(&sweep_normal, k),
+                axis_rotation: Q::new(
+                    rotation[0][k],
+                    rotation[1][k],
+                    rotation[2][k],
+                    rotation[3][k],
+                ),
+            },
+        });
+    }
+}
+
+/// Appends the screw of every span `p[i] → p[i+1]` of the sequence `p` (and `p[n−1] → p[0]`
+/// when `closed`) to `out`: [`Screw::between`] for each, bit for bit, several spans at a time.
+pub(crate) fn span_screws(p: &[Pose], closed: bool, out: &mut Vec<Screw>) {
+    struct SpanScrews<'a>(&'a [Pose], bool, &'a mut Vec<Screw>);
+    impl LanesOp for SpanScrews<'_> {
+        type Output = ();
+        #[inline(always)]
+        fn run<L: Width<N>, const N: usize>(self, proto: L) {
+            let SpanScrews(p, closed, out) = self;
+            let n = p.len();
+            let count = match (n, closed) {
+                (0, _) => 0,
+                (_, true) => n,
+                (_, false) => n - 1,
+            };
+            out.reserve(count);
+            let next = |i: usize| if i + 1 == n { 0 } else { i + 1 };
+            let mut i = 0;
+            while i + N <= count {
+                let a: [&Pose; N] = std::array::from_fn(|k| &p[i + k]);
+                let b = std::array::from_fn(|k| &p[next(i + k)]);
+                match span_lanes(proto, a, b) {
+                    Some(span) => push_screws(&span, &p[i..i + N], out),
+                    None => (0..N).for_each(|k| out.push(scalar_span(a[k], b[k]))),
+                }
+                i += N;
+            }
+            out.extend((i..count).map(|i| scalar_span(&p[i], &p[next(i)])));
+        }
+    }
+    run_widest(SpanScrews(p, closed, out));
+}
+
+#[inline(never)]
+fn scalar_span(a: &Pose, b: &Pose) -> Screw {
+    Screw::between(a, b)
+}
+
 /// Run natively and, on wasm32, by wasm-bindgen-test (in Node): each platform's lanes.
 #[cfg(test)]
 mod tests {
@@ -300,6 +399,17 @@ mod tests {
                 same_bits(m, &Screw::midpoint(&p[i], &p[(i + 1) % n])),
                 "{i}"
             );
+        }
+        for closed in [true, false] {
+            let mut spans = Vec::new();
+            span_screws(&p, closed, &mut spans);
+            assert_eq!(spans.len(), if closed { n } else { n - 1 });
+            for (i, got) in spans.iter().enumerate() {
+                let want = Screw::between(&p[i], &p[(i + 1) % n]);
+                // Compared by bits (`==` would pass 0.0 for -0.0 and fail on equal NaNs).
+                assert_eq!(format!("{got:?}"), format!("{want:?}"), "span {i}");
+                assert!(same_bits(&got.at(0.3), &want.at(0.3)), "span {i}");
+            }
         }
         let mut columns = vec![Vec::new(); 3];
         sample_cycle(&p, &ts[..3], &mut columns);

@@ -117,20 +117,67 @@ impl Subdivision {
     /// original parameter range; motions sampled from one screw are reproduced exactly.
     ///
     /// Natively, a thread keeps the working buffers of its last subdivision (at most 8 MB) for
-    /// the next one, which then needs no fresh memory besides its result.
+    /// the next one, which then needs no fresh memory besides its result. To reuse the result's
+    /// memory too, and buffers of any size, use [`Subdivision::apply_into`].
     pub fn apply<T: Blend>(&self, input: &[T], closed: bool) -> Result<Vec<T>, Error> {
         self.validate()?;
         self.output_len(input.len(), closed)?;
+        let mut buffers = SubdivisionBuffers::kept();
+        let mut out = Vec::new();
+        self.apply_unchecked(input, closed, &mut out, &mut buffers);
+        buffers.keep();
+        if !closed {
+            // An open result is cut from a longer cycle: hand back only the memory it uses.
+            out.shrink_to_fit();
+        }
+        Ok(out)
+    }
+
+    /// [`Subdivision::apply`] into caller-owned memory: `out` is cleared and receives the
+    /// result, and `buffers` holds the working sequences. Both keep their capacity, so
+    /// subdividing again (the next level count, the next drag release, the next file) needs no
+    /// fresh memory once they have grown to the largest size asked for: a subdivision into
+    /// fresh memory pays a page fault for every 4 KB it touches, which at 2²⁰ poses costs more
+    /// than the screws.
+    ///
+    /// The result is that of [`Subdivision::apply`] bit for bit. On error (bad options, too few
+    /// inputs, too many outputs) `out` is left as it was.
+    pub fn apply_into<T: Blend>(
+        &self,
+        input: &[T],
+        closed: bool,
+        out: &mut Vec<T>,
+        buffers: &mut SubdivisionBuffers<T>,
+    ) -> Result<(), Error> {
+        self.validate()?;
+        self.output_len(input.len(), closed)?;
+        self.apply_unchecked(input, closed, out, buffers);
+        Ok(())
+    }
+
+    /// [`Subdivision::apply_into`] for validated options and an input whose output length
+    /// passed [`Subdivision::output_len`].
+    fn apply_unchecked<T: Blend>(
+        &self,
+        input: &[T],
+        closed: bool,
+        out: &mut Vec<T>,
+        buffers: &mut SubdivisionBuffers<T>,
+    ) {
+        out.clear();
         if closed {
-            return Ok(self.refine_cycle(input.to_vec()));
+            out.extend_from_slice(input);
+            self.refine_cycle(out, buffers);
+            return;
         }
         let k = self.scheme.half_width();
-        let extended = extend_open(input, k);
-        let refined = self.refine_cycle(extended);
+        extend_open_into(input, k, out);
+        self.refine_cycle(out, buffers);
         let f = 1usize << self.levels;
         let start = k * f;
         let len = (input.len() - 1) * f + 1;
-        Ok(refined[start..start + len].to_vec())
+        out.copy_within(start..start + len, 0);
+        out.truncate(len);
     }
 
     /// Re-subdivides only what moving one input changed (docs/math/local-update.md, locality), in place.
@@ -197,7 +244,10 @@ impl Subdivision {
         let window: Vec<T> = (0..=2 * half)
             .map(|i| cycle[(centre + n - half + i) % n])
             .collect();
-        let local = self.refine_cycle(window);
+        let mut local = window;
+        let mut buffers = SubdivisionBuffers::kept();
+        self.refine_cycle(&mut local, &mut buffers);
+        buffers.keep();
         let f = 1usize << self.levels;
         let total = n * f;
         let offset = if closed { 0 } else { k_ext * f };
@@ -238,33 +288,77 @@ impl Subdivision {
         }
     }
 
-    fn refine_cycle<T: Blend>(&self, mut current: Vec<T>) -> Vec<T> {
+    /// Refines the cycle `current` in place by `levels` steps, working in `buffers`.
+    fn refine_cycle<T: Blend>(&self, current: &mut Vec<T>, buffers: &mut SubdivisionBuffers<T>) {
         // Both buffers at their final size from the start: each level then writes in place
         // instead of growing (and copying) the one it is swapped with.
         let size = current.len() << self.levels;
         current.reserve(size.saturating_sub(current.len()));
-        let mut spare = Spare::take(size);
+        buffers.reserve(size);
         for _ in 0..self.levels {
-            self.step_unchecked(&current, &mut spare.next, &mut spare.scratch);
-            std::mem::swap(&mut current, &mut spare.next);
+            self.step_unchecked(current, &mut buffers.next, &mut buffers.scratch);
+            std::mem::swap(current, &mut buffers.next);
         }
-        spare.keep();
-        current
     }
 }
 
 /// The working buffers of a subdivision besides its result: the sequence of the step being
-/// computed, and the steps' temporaries.
+/// computed, and the steps' temporaries. Pass the same buffers to every
+/// [`Subdivision::apply_into`] to subdivide without fresh memory.
 ///
-/// Natively, the last subdivision's are kept on its thread for the next one (up to
-/// [`SPARE_BYTES`]): at the finest levels they are hundreds of kilobytes, which the system
-/// allocator hands back to the operating system when they are freed, and taking them again
-/// cost page faults — a tenth of the time of a subdivision of 32 poses by 6 levels. (Not on
-/// wasm32, whose memory is never handed back: there keeping them would only add code to the
-/// module.)
-struct Spare<T> {
+/// [`Subdivision::apply`] uses buffers of its own: natively, the last subdivision's are kept on
+/// its thread for the next one (up to 8 MB): at the finest levels they are hundreds of
+/// kilobytes, which the system allocator hands back to the operating system when they are
+/// freed, and taking them again cost page faults — a tenth of the time of a subdivision of 32
+/// poses by 6 levels. (Not on wasm32, whose memory is never handed back: there keeping them
+/// would only add code to the module.)
+pub struct SubdivisionBuffers<T> {
     next: Vec<T>,
     scratch: Scratch<T>,
+}
+
+impl<T> Default for SubdivisionBuffers<T> {
+    fn default() -> Self {
+        SubdivisionBuffers::new()
+    }
+}
+
+impl<T> std::fmt::Debug for SubdivisionBuffers<T> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("SubdivisionBuffers")
+            .field("elements", &self.elements())
+            .finish()
+    }
+}
+
+impl<T> SubdivisionBuffers<T> {
+    /// Empty buffers (they grow on first use).
+    pub fn new() -> SubdivisionBuffers<T> {
+        SubdivisionBuffers {
+            next: Vec::new(),
+            scratch: Scratch::with_capacity(0),
+        }
+    }
+
+    /// Makes room for cycles of up to `size` elements.
+    fn reserve(&mut self, size: usize) {
+        self.next.clear();
+        self.next.reserve(size);
+        self.scratch.reserve(size / 2);
+    }
+
+    /// The number of elements the buffers have room for, all together.
+    fn elements(&self) -> usize {
+        self.next.capacity()
+            + self.scratch.left.capacity()
+            + self.scratch.right.capacity()
+            + self
+                .scratch
+                .samples
+                .iter()
+                .map(Vec::capacity)
+                .sum::<usize>()
+    }
 }
 
 /// The most bytes of working buffers kept between subdivisions, per thread.
@@ -278,43 +372,25 @@ thread_local! {
         const { std::cell::Cell::new(None) };
 }
 
-impl<T: Blend> Spare<T> {
-    /// The kept buffers (if they hold `T`), or new ones, with room for sequences of `size`.
-    /// (Taken, not borrowed: a subdivision inside a [`Blend`] implementation finds none and
-    /// makes its own.)
-    fn take(size: usize) -> Spare<T> {
+impl<T: Blend> SubdivisionBuffers<T> {
+    /// The buffers kept on this thread (if they hold `T`), or new ones. (Taken, not borrowed:
+    /// a subdivision inside a [`Blend`] implementation finds none and makes its own.)
+    fn kept() -> SubdivisionBuffers<T> {
         #[cfg(not(target_arch = "wasm32"))]
-        if let Some(mut spare) = SPARE
+        if let Some(kept) = SPARE
             .with(|spare| spare.take())
-            .and_then(|kept| kept.downcast::<Spare<T>>().ok())
+            .and_then(|kept| kept.downcast::<SubdivisionBuffers<T>>().ok())
         {
-            spare.next.clear();
-            spare.next.reserve(size);
-            spare.scratch.reserve(size / 2);
-            return *spare;
+            return *kept;
         }
-        Spare {
-            next: Vec::with_capacity(size),
-            scratch: Scratch::with_capacity(size / 2),
-        }
+        SubdivisionBuffers::new()
     }
 
     /// Keeps the buffers for the next subdivision on this thread, unless they are too large.
     fn keep(self) {
         #[cfg(not(target_arch = "wasm32"))]
-        {
-            let elements = self.next.capacity()
-                + self.scratch.left.capacity()
-                + self.scratch.right.capacity()
-                + self
-                    .scratch
-                    .samples
-                    .iter()
-                    .map(Vec::capacity)
-                    .sum::<usize>();
-            if elements * std::mem::size_of::<T>() <= SPARE_BYTES {
-                SPARE.with(|spare| spare.set(Some(Box::new(self))));
-            }
+        if self.elements() * std::mem::size_of::<T>() <= SPARE_BYTES {
+            SPARE.with(|spare| spare.set(Some(Box::new(self))));
         }
     }
 }
@@ -363,14 +439,20 @@ impl<T> Scratch<T> {
 /// docs/math/open-sequences.md §2 steps 1–2: `P_{−j} = blend(P₀, −j, P₁)`, `P_{m−1+j} = blend(P_{m−2}, 1+j, P_{m−1})`
 /// for `j = 1..k`, in order `P_{−k} … P_{m−1+k}`.
 pub(crate) fn extend_open<T: Blend>(input: &[T], k: usize) -> Vec<T> {
+    let mut e = Vec::with_capacity(input.len() + 2 * k);
+    extend_open_into(input, k, &mut e);
+    e
+}
+
+/// [`extend_open`], appended to `e`.
+fn extend_open_into<T: Blend>(input: &[T], k: usize, e: &mut Vec<T>) {
     let m = input.len();
     let first = T::span(&input[0], &input[1]);
     let last = T::span(&input[m - 2], &input[m - 1]);
-    let mut e = Vec::with_capacity(m + 2 * k);
+    e.reserve(m + 2 * k);
     e.extend((1..=k).rev().map(|j| T::span_at(&first, -(j as f64))));
     e.extend_from_slice(input);
     e.extend((1..=k).map(|j| T::span_at(&last, 1.0 + j as f64)));
-    e
 }
 
 /// The direct rules (docs/math/subdivision.md §2) and the J_s family. `L_i` is the span `P_i → P_{i+1}`; reversed
