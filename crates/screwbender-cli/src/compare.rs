@@ -3,10 +3,14 @@
 //! rational`: the Chaudhry–Cameron motion's rational Bézier form, from poses or triangles.
 
 use std::io::Read;
+use std::time::Instant;
+
+use glam::DQuat;
 
 use screwbender::methods::{
-    compare_applicable, compare_methods, triangle_samples, Continuity, EndCondition, Method,
-    MetricsOptions, RationalMotion, ReferenceTriangle, TriangleSample, TRIANGLE_STRIDE,
+    compare_applicable, compare_methods, fit_barr, fit_quaternion_spline, triangle_samples,
+    BarrOptions, Continuity, EndCondition, Method, MetricsOptions, RationalMotion, RbOptions,
+    ReferenceTriangle, TriangleSample, TRIANGLE_STRIDE,
 };
 use screwbender::{Error, ErrorKind, Pose, MAX_DOCUMENT_BYTES};
 
@@ -53,10 +57,88 @@ pub fn compare(
             }
         }
     }
+    if !chosen.contains(&Method::Barr) {
+        return Ok(if json {
+            table.to_json() + "\n"
+        } else {
+            table.to_text()
+        });
+    }
+    // The discrete baseline named: its objective and time beside Ramamoorthi–Barr's.
+    let o = objectives(poses, closed)?;
     Ok(if json {
-        table.to_json() + "\n"
+        let mut v: serde_json::Value = serde_json::from_str(&table.to_json()).map_err(|e| {
+            Error::new(
+                "table",
+                ErrorKind::Parse {
+                    message: e.to_string(),
+                },
+            )
+        })?;
+        v["objectives"] = serde_json::json!({
+            "rb": {"objective": o.rb, "seconds": o.rb_seconds},
+            "barr": {"objective": o.barr, "seconds": o.barr_seconds, "frames": o.frames,
+                     "iterations": o.iterations},
+        });
+        v.to_string() + "\n"
     } else {
-        table.to_text()
+        format!(
+            "{}\nObjective (3) of Ramamoorthi–Barr (docs/math/quaternion-splines.md §2, §9):\n  \
+             rb    {:.6}  in {:.4} s ({} variable frames)\n  \
+             barr  {:.6}  in {:.4} s ({} frames, {} Gauss–Newton steps)\n  \
+             rb/barr: objective {:.5}, time {:.3}\n",
+            table.to_text(),
+            o.rb,
+            o.rb_seconds,
+            o.rb_frames,
+            o.barr,
+            o.barr_seconds,
+            o.frames,
+            o.iterations,
+            o.rb / o.barr,
+            o.rb_seconds / o.barr_seconds,
+        )
+    })
+}
+
+/// Ramamoorthi–Barr's objective and the discrete baseline's on the same rotations, with the
+/// time each fit took here.
+struct Objectives {
+    rb: f64,
+    rb_seconds: f64,
+    rb_frames: usize,
+    barr: f64,
+    barr_seconds: f64,
+    frames: usize,
+    iterations: usize,
+}
+
+fn objectives(poses: &[Pose], closed: bool) -> Result<Objectives, Error> {
+    let keys: Vec<DQuat> = poses.iter().map(|p| p.rotation).collect();
+    let times: Vec<f64> = (0..keys.len()).map(|i| i as f64).collect();
+    if closed {
+        return Err(Error::new(
+            "barr",
+            ErrorKind::Unsupported {
+                reason: "the discrete baseline of Barr et al. is built for open sequences only"
+                    .into(),
+            },
+        ));
+    }
+    let start = Instant::now();
+    let rb = fit_quaternion_spline(&times, &keys, false, &RbOptions::default())?;
+    let rb_seconds = start.elapsed().as_secs_f64();
+    let start = Instant::now();
+    let barr = fit_barr(&times, &keys, &BarrOptions::for_keys(keys.len()))?;
+    let barr_seconds = start.elapsed().as_secs_f64();
+    Ok(Objectives {
+        rb: rb.spline.objective(),
+        rb_seconds,
+        rb_frames: rb.stages.last().map_or(0, |s| s.variable_frames),
+        barr: barr.objective,
+        barr_seconds,
+        frames: barr.frames.len(),
+        iterations: barr.iterations,
     })
 }
 

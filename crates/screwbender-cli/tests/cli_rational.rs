@@ -219,3 +219,35 @@ fn bad_input_is_named_and_prints_nothing() {
         samples.len()
     );
 }
+
+#[test]
+fn compare_puts_the_barr_baseline_beside_ramamoorthi_barr() {
+    let doc = run(&["preset", "rb_sphere7"], "").stdout;
+    let out = run(
+        &["compare", "--methods", "rb,barr", "--open", "--json"],
+        &doc,
+    );
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    let v = json(&out.stdout);
+    let rb = v["objectives"]["rb"]["objective"].as_f64().unwrap();
+    let barr = v["objectives"]["barr"]["objective"].as_f64().unwrap();
+    // docs/math/quaternion-splines.md §9: the baseline at or below, R–B within a few tenths of a
+    // percent (measured 0.25 %).
+    assert!(barr <= rb && (rb - barr) / barr < 0.005, "{rb} {barr}");
+    assert!(v["objectives"]["barr"]["seconds"].as_f64().unwrap() > 0.0);
+    assert_eq!(v["rows"].as_array().unwrap().len(), 2);
+    // Without `barr` named, the output is the table alone.
+    let plain = run(&["compare", "--methods", "rb", "--open"], &doc);
+    assert!(!plain.stdout.contains("Objective (3)"));
+    // A cycle is refused with the reason.
+    let closed = run(
+        &["compare", "--methods", "barr"],
+        &run(&["preset", "l_cycle_rotated"], "").stdout,
+    );
+    assert_eq!(closed.code, 2);
+    assert!(
+        closed.stderr.contains("open sequences only"),
+        "{}",
+        closed.stderr
+    );
+}

@@ -13,8 +13,9 @@ use super::convert::{count, is_absent, plain, poses_from_fn, push_kinematics, to
 use super::motion::sample_parameters;
 use super::MotionHandle;
 use screwbender::methods::{
-    compare_methods, fit_quaternion_spline, kinematics_at, motion_metrics, Derivatives, Method,
-    MetricsOptions, RbOptions, Side,
+    compare_methods, fit_quaternion_spline, kinematics_at, motion_metrics, triangle_samples,
+    Continuity, Derivatives, EndCondition, Method, MetricsOptions, RationalMotion, RbOptions,
+    ReferenceTriangle, Side, TRIANGLE_STRIDE,
 };
 use screwbender::{
     Error, ErrorKind, Motion, MotionDocument, Pose, Scheme, ScrewBender, Subdivision,
@@ -25,7 +26,7 @@ use screwbender::{
 const TS_METHODS: &'static str = r#"
 /** Names of the motion methods (see `methods()`). */
 export type MethodId =
-  'polyscrew' | 'bspline' | 'fourpoint' | 'jarek' | 'slerp' | 'decoupled' | 'kks' | 'rb' | 'cc0' | 'cc1';
+  'polyscrew' | 'bspline' | 'fourpoint' | 'jarek' | 'slerp' | 'decoupled' | 'kks' | 'rb' | 'cc0' | 'cc1' | 'barr';
 
 /** A motion method of the comparison. */
 export interface MethodInfo {
@@ -65,6 +66,46 @@ export interface MetricsTable {
   body_points: Vec3[];
   rows: MetricsRow[];
   skipped: string[];
+}
+
+/** Options of `Motion.rational` and `Motion.rationalFromTriangles` (Chaudhry–Cameron). */
+export interface RationalOptions {
+  /** `'c1'` (default): quadratic quaternion spline; `'c0'`: piecewise linear quaternions. */
+  continuity?: 'c0' | 'c1';
+  /** C¹ end condition: 18 (default, zero curvature at the start) or 19 (at the end). */
+  end?: 18 | 19;
+  /** Uniform samples of the vertex trajectories (default 200, 2 to 100 000). */
+  samples?: number;
+  /** `rationalFromTriangles` only: close the motion (C⁰) back to the first key at this time. */
+  closingTime?: number;
+}
+
+/** One segment of the rational Bézier form (homogeneous control points `ω_k c_k`). */
+export interface RationalBezierSegment {
+  t_start: number;
+  t_end: number;
+  /** 2 (C⁰) or 4 (C¹). */
+  degree: number;
+  weights: number[];
+  /** `[w, x, y, z]`: `Q_i, Q_{i+1}` (C⁰) or `Q_i, M_i, Q_{i+1}` (C¹). */
+  quaternions: number[][];
+  a: Vec3[];
+  x: Vec3[];
+  y: Vec3[];
+}
+
+/** The Chaudhry–Cameron motion: its rational Bézier form and the triangle's vertex paths. */
+export interface RationalReport {
+  bezier: { continuity: string; reference: Vec3[]; segments: RationalBezierSegment[] };
+  /** How far the C¹ recursion has carried the middle control points (0 for C⁰). */
+  growth: number;
+  /** The smallest denominator |Q(t)|². */
+  minDenominator: number;
+  /** Where the motion is poor though it was built (the C¹ recursion running away). */
+  warnings: string[];
+  /** Sample times, and the vertices a, x, y at each (9 numbers per sample). */
+  t: Float64Array;
+  vertices: Float64Array;
 }
 
 /** Options of `Motion.quaternionSpline` (Ramamoorthi–Barr). */
@@ -129,6 +170,7 @@ fn title(m: Method) -> &'static str {
         Method::Rb => "Ramamoorthi–Barr quaternion spline",
         Method::Cc0 => "Chaudhry–Cameron rational C⁰",
         Method::Cc1 => "Chaudhry–Cameron rational C¹ (18)",
+        Method::Barr => "Barr et al. discrete baseline (R–B objective, dense frames)",
     }
 }
 
@@ -419,6 +461,152 @@ impl MotionHandle {
             let _ = js_sys::Reflect::set(&out, &JsValue::from_str(key), &arr);
         }
         Ok(out)
+    }
+}
+
+/// The options of `Motion.rational` / `Motion.rationalFromTriangles`: the continuity, the
+/// number of trajectory samples and (`closing` allowed) the closing time.
+fn rational_options(
+    options: &JsValue,
+    closing: bool,
+) -> Result<(Continuity, usize, Option<f64>), Error> {
+    let (mut c1, mut end, mut samples, mut closing_time) =
+        (true, EndCondition::ZeroCurvatureStart, 200usize, None);
+    if !is_absent(options) {
+        let v = plain(options, "options")?;
+        let keys: &[&str] = if closing {
+            &["continuity", "end", "samples", "closingTime"]
+        } else {
+            &["continuity", "end", "samples"]
+        };
+        super::convert::check_keys(&v, keys, "options", "rational motion options")?;
+        let get = |k: &str| js_sys::Reflect::get(&v, &JsValue::from_str(k)).unwrap_or_default();
+        let c = get("continuity");
+        if !is_absent(&c) {
+            c1 = match c.as_string().as_deref() {
+                Some("c0") => false,
+                Some("c1") => true,
+                _ => {
+                    return Err(Error::new(
+                        "options.continuity",
+                        ErrorKind::UnknownValue {
+                            value: format!("{c:?}"),
+                            expected: "c0, c1",
+                        },
+                    ))
+                }
+            };
+        }
+        if let Some(e) = option_number(&v, "end")? {
+            end = match e {
+                18.0 => EndCondition::ZeroCurvatureStart,
+                19.0 => EndCondition::ZeroCurvatureEnd,
+                _ => {
+                    return Err(Error::new(
+                        "options.end",
+                        ErrorKind::UnknownValue {
+                            value: e.to_string(),
+                            expected: "18, 19",
+                        },
+                    ))
+                }
+            };
+        }
+        if let Some(n) = option_number(&v, "samples")? {
+            samples = integer(n, "options.samples", 100_000)?.max(2);
+        }
+        if closing {
+            closing_time = option_number(&v, "closingTime")?;
+        }
+    }
+    let continuity = if c1 {
+        Continuity::C1(end)
+    } else {
+        Continuity::C0
+    };
+    Ok((continuity, samples, closing_time))
+}
+
+/// The report of a fitted rational motion (see `RationalReport`).
+fn rational_report(motion: &RationalMotion, samples: usize) -> Result<JsValue, JsError> {
+    #[derive(Serialize)]
+    #[serde(rename_all = "camelCase")]
+    struct Report {
+        bezier: screwbender::methods::RationalBezierExport,
+        growth: f64,
+        min_denominator: f64,
+        warnings: Vec<String>,
+    }
+    let out = to_js(&Report {
+        bezier: motion.bezier(),
+        growth: motion.growth(),
+        min_denominator: motion.min_denominator(),
+        warnings: motion.warning().into_iter().collect(),
+    })?;
+    let (a, b) = motion.domain();
+    let mut t = Vec::with_capacity(samples);
+    let mut vertices = Vec::with_capacity(9 * samples);
+    for k in 0..samples {
+        let x = a + (b - a) * k as f64 / (samples - 1) as f64;
+        t.push(x);
+        for v in motion.vertices(x) {
+            vertices.extend_from_slice(&v.to_array());
+        }
+    }
+    for (key, data) in [("t", t), ("vertices", vertices)] {
+        let arr = js_sys::Float64Array::from(&data[..]);
+        // Setting a property of the plain object just made cannot fail.
+        let _ = js_sys::Reflect::set(&out, &JsValue::from_str(key), &arr);
+    }
+    Ok(out)
+}
+
+#[wasm_bindgen(js_class = Motion)]
+impl MotionHandle {
+    /// The Chaudhry–Cameron rational motion through this motion's poses (the scene-B1 triangle
+    /// placed by each pose, at the key times, else one second per span): its rational Bézier
+    /// control points, growth, warnings and the vertices' paths (docs/math/rational-motion.md).
+    /// Throws for C¹ on a cycle or where the C¹ denominator would vanish.
+    #[wasm_bindgen(unchecked_return_type = "RationalReport")]
+    pub fn rational(
+        &self,
+        #[wasm_bindgen(unchecked_optional_param_type = "RationalOptions")] options: JsValue,
+    ) -> Result<JsValue, JsError> {
+        let (continuity, samples, _) =
+            rational_options(&options, false).map_err(|e| e.within("rational"))?;
+        let (doc, _) = self.snapshot()?;
+        let times = doc.times.clone().unwrap_or_else(|| {
+            (0..doc.poses.len() + usize::from(doc.closed))
+                .map(|i| i as f64)
+                .collect()
+        });
+        let motion = RationalMotion::from_poses(
+            &doc.poses,
+            &times,
+            doc.closed,
+            continuity,
+            &ReferenceTriangle::SCENE_B1,
+        )
+        .map_err(|e| e.within("rational"))?;
+        rational_report(&motion, samples)
+    }
+
+    /// The Chaudhry–Cameron rational motion of a raw triangle sequence: 10 numbers per key (`t`,
+    /// then the vertices `a`, `x`, `y`), as a `Float64Array` or an array of numbers; open, or
+    /// closed (C⁰) at `options.closingTime`. The same report as `Motion.rational`.
+    #[wasm_bindgen(js_name = rationalFromTriangles, unchecked_return_type = "RationalReport")]
+    pub fn rational_from_triangles(
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] data: JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "RationalOptions")] options: JsValue,
+    ) -> Result<JsValue, JsError> {
+        let (continuity, samples, closing) = rational_options(&options, true)?;
+        let numbers = super::convert::f64_array(&data, "samples", TRIANGLE_STRIDE * 100_000)?;
+        let keys = triangle_samples(&numbers)?;
+        let motion = match closing {
+            Some(tc) => RationalMotion::fit_closed(&keys, tc, continuity)?,
+            None => RationalMotion::fit(&keys, continuity)?,
+        };
+        rational_report(&motion, samples)
     }
 }
 

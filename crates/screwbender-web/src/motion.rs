@@ -455,6 +455,19 @@ impl MotionHandle {
         to_js(&options::to_output(&self.state()?.subdivision))
     }
 
+    /// Where the current options give a poor result without an error, one sentence each
+    /// naming the span (the split-then-tweak 4-point and Jarek rules across half a turn or
+    /// more: docs/math/subdivision.md §4); empty when the result is fine.
+    pub fn warnings(&self) -> Result<Vec<String>, JsError> {
+        self.read(|s| {
+            s.subdivision
+                .warnings(&s.doc.poses, s.doc.closed)
+                .iter()
+                .map(ToString::to_string)
+                .collect()
+        })
+    }
+
     /// Changes several options at once (validated together: e.g. `{scheme: 'j', j: 0.3,
     /// rules: 'direct'}` from the split rules is fine).
     #[wasm_bindgen(js_name = setOptions)]

@@ -10,6 +10,7 @@
 //! | [`KimKimShin`] | cumulative B-spline quaternions + B-spline origins | C² | no (ends only) | Kim, Kim & Shin 1995 |
 //! | [`RamamoorthiBarr`] | covariant-acceleration-optimal Hermite quaternion spline + Catmull–Rom origins | C¹ | yes | Ramamoorthi & Barr |
 //! | [`RationalMotion`] | rational quadratic / quartic rigid-triangle motion | C⁰ / C¹ | yes | Chaudhry & Cameron |
+//! | [`BarrBaseline`] | the same objective as Ramamoorthi–Barr on dense discrete frames (small inputs) | C⁰ (dense) | yes | Barr, Currin, Gabriel & Hughes |
 //!
 //! [`Method`] names them all (`polyscrew`, `bspline`, `fourpoint`, `jarek`, `slerp`, `decoupled`,
 //! `kks`, `rb`, `cc0`, `cc1`) and builds each from control poses with pose `i` at `u = i`; the
@@ -44,6 +45,7 @@
 //! panics (NaN parameters give NaN poses).
 
 mod algebra;
+mod barr;
 mod decoupled;
 mod gauss;
 mod kim_kim_shin;
@@ -77,7 +79,11 @@ pub use triangle::{
     DEGENERATE_TRIANGLE_TOLERANCE, RIGIDITY_TOLERANCE, ROTATION_EPSILON,
 };
 
-// Ramamoorthi & Barr.
+// Ramamoorthi & Barr, and the discrete baseline of Barr et al.
+pub use barr::{
+    fit_barr, BarrBaseline, BarrFit, BarrOptions, BARR_RELATIVE_DECREASE,
+    DEFAULT_BARR_FRAMES_PER_INTERVAL, MAX_BARR_FRAMES,
+};
 pub use quaternion_spline::{
     euler_lagrange, integrand, EulerLagrange, Frame, HermiteQuatSpline, FRAME_TIME_TOLERANCE,
     MAX_SPLINE_SAMPLES,

@@ -3,6 +3,7 @@
 use std::fmt;
 use std::str::FromStr;
 
+use super::barr::{BarrBaseline, BarrOptions};
 use super::decoupled::DecoupledSmooth;
 use super::kim_kim_shin::KimKimShin;
 use super::rational::{Continuity, EndCondition, RationalMotion};
@@ -45,11 +46,15 @@ pub enum Method {
     Cc0,
     /// Chaudhry–Cameron C¹ with end condition (18) (open sequences only).
     Cc1,
+    /// The discrete baseline of Barr et al. ([`BarrBaseline`]): Ramamoorthi–Barr's objective on
+    /// dense frames ([`BarrOptions::for_keys`]) (open sequences of at
+    /// most about 40 poses; only when named, never among [`Method::applicable`]).
+    Barr,
 }
 
 impl Method {
     /// Every method, in table order.
-    pub const ALL: [Method; 10] = [
+    pub const ALL: [Method; 11] = [
         Method::Polyscrew,
         Method::BSpline,
         Method::FourPoint,
@@ -60,11 +65,12 @@ impl Method {
         Method::Rb,
         Method::Cc0,
         Method::Cc1,
+        Method::Barr,
     ];
 
     /// The accepted names, for messages.
     pub const NAMES: &'static str =
-        "polyscrew, bspline, fourpoint, jarek, slerp, decoupled, kks, rb, cc0, cc1";
+        "polyscrew, bspline, fourpoint, jarek, slerp, decoupled, kks, rb, cc0, cc1, barr";
 
     /// The short name (as accepted by [`Method::from_str`]).
     pub fn name(self) -> &'static str {
@@ -79,19 +85,22 @@ impl Method {
             Method::Rb => "rb",
             Method::Cc0 => "cc0",
             Method::Cc1 => "cc1",
+            Method::Barr => "barr",
         }
     }
 
-    /// Whether the method has a closed (cyclic) form. Only the C¹ Chaudhry–Cameron motion has not.
+    /// Whether the method has a closed (cyclic) form. The C¹ Chaudhry–Cameron motion and the
+    /// discrete baseline of Barr et al. have not.
     pub fn supports_closed(self) -> bool {
-        self != Method::Cc1
+        !matches!(self, Method::Cc1 | Method::Barr)
     }
 
-    /// The methods that apply to a closed or open input, in table order.
+    /// The methods that apply to a closed or open input, in table order; the discrete baseline of
+    /// Barr et al. (costly, for small inputs) only when named.
     pub fn applicable(closed: bool) -> Vec<Method> {
         Method::ALL
             .into_iter()
-            .filter(|m| !closed || m.supports_closed())
+            .filter(|m| *m != Method::Barr && (!closed || m.supports_closed()))
             .collect()
     }
 
@@ -159,6 +168,23 @@ impl Method {
             }
             Method::Cc0 => cc(Continuity::C0),
             Method::Cc1 => cc(Continuity::C1(EndCondition::ZeroCurvatureStart)),
+            Method::Barr => {
+                let poses = super::slerp_polyline::validated_poses(poses, closed)?;
+                if closed {
+                    return Err(Error::new(
+                        "closed",
+                        ErrorKind::Unsupported {
+                            reason: "the discrete baseline of Barr et al. is built for open \
+                                     sequences only"
+                                .into(),
+                        },
+                    ));
+                }
+                let options = BarrOptions::for_keys(poses.len());
+                Ok(Box::new(BarrBaseline::from_poses(
+                    &poses, &times, &options,
+                )?))
+            }
         }
     }
 }
