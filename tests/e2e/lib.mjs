@@ -1,5 +1,6 @@
 // Shared helpers of the end-to-end tests: launching Debian's Chromium with the flags of each
-// backend (see /work/shared/TOOLCHAIN.md), and opening the playground.
+// backend (WebGPU on SwiftShader through Vulkan, the same flags as webdriver.json), and opening
+// the playground.
 import { spawn } from 'node:child_process';
 import fs from 'node:fs';
 import net from 'node:net';

@@ -4,7 +4,7 @@
 //   E2E_BACKEND=webgpu|webgl2 node --test tests/e2e/teaching.test.mjs
 //
 // Each view opens, follows an edit of the motion (or a real mouse drag), and logs no console
-// error; the polygon view reproduces the spec's L-polygon numbers (screwbender.md §4) through
+// error; the polygon view reproduces the L-polygon numbers of docs/math/point-rules.md §5 through
 // the wasm export in the page. Screenshots go to artifacts/e2e-<backend>/teach-<view>.png.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
@@ -174,9 +174,9 @@ test(`${BACKEND}: split/tweak view steps with buttons and keys and follows the s
   noProblems();
 });
 
-test(`${BACKEND}: polygon view reproduces the spec's L-polygon vectors and drags vertices`, async () => {
+test(`${BACKEND}: polygon view reproduces the L-polygon vectors of docs/math/point-rules.md §5 and drags vertices`, async () => {
   await open('polygon');
-  // The wasm export, called in the page (screwbender.md §4, one step).
+  // The wasm export, called in the page (docs/math/point-rules.md §5, one step).
   const got = await sb(async () => {
     const { subdividePolygon } = await import('/pkg/screwbender.js');
     const L = [0, 0, 6, 0, 6, 2, 2, 2, 2, 6, 0, 6];

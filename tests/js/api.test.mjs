@@ -4,7 +4,7 @@
 //   SCREWBENDER_PKG=/path/to/node.js node --test tests/js/
 //
 // Typed-array layouts are checked against the object forms, the numbers against closed forms
-// (circle, helix, the spec's screw example), and every bad input against both its message and
+// (circle, helix, the screw example A of docs/math/screw.md §7), and every bad input against both its message and
 // the unchanged state of the object (JSON and options before/after, and it keeps working).
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
@@ -141,7 +141,7 @@ describe('module', () => {
     assert.deepEqual(list.find((s) => s.id === 'pip_morph5').morphShapes.length, 5);
   });
 
-  it('screw: the spec example (quarter turn about x = y = 1, lift 1)', () => {
+  it('screw: example A of docs/math/screw.md §7 (quarter turn about x = y = 1, lift 1)', () => {
     const b = { origin: [2, 0, 1], rotation: rz(Math.PI / 2) };
     const mid = sb.screw({ origin: [0, 0, 0], rotation: ID }, 0.5, b);
     nearPose(mid, [1, -(Math.SQRT2 - 1), 0.5], rz(Math.PI / 4), 1e-15);
@@ -585,7 +585,7 @@ describe('bad input: clear Error, state unchanged', () => {
     ['left-handed basis', docWith({ origin: [0, 0, 0], basis: [[1, 0, 0], [0, 1, 0], [0, 0, -1]] }), /^poses\[1\]\.basis: basis is left-handed/],
     ['rotation and basis', docWith(P({ basis: [[1, 0, 0], [0, 1, 0], [0, 0, 1]] })), "poses[1]: give either 'rotation' or 'basis', not both"],
     ['unknown pose field', docWith(P({ rot: 1 })), 'poses[1]: invalid motion document: unknown field `rot`, expected one of `origin`, `rotation`, `basis`'],
-    ['unknown document field', { clossed: true, poses: [P(), P()] }, 'invalid motion document: unknown field `clossed`, expected one of `name`, `closed`, `poses`'],
+    ['unknown document field', { clossed: true, poses: [P(), P()] }, 'invalid motion document: unknown field `clossed`, expected one of `name`, `closed`, `poses`, `times`, `velocities`'],
     ['one pose', { poses: [P()] }, 'poses: 1 pose(s) given, at least 2 needed'],
     ['pose not an object', { poses: [P(), 7] }, 'poses[1]: invalid motion document: expected an object {origin, rotation} or {origin, basis}, got number'],
     ['document not an object', 'hello', 'invalid motion document: expected an object {closed?, name?, poses: [...]}, got string'],
