@@ -13,7 +13,7 @@ const { Motion, methods, scenes } = sb;
 describe('comparison methods', () => {
   it('lists every method with a title', () => {
     const list = methods();
-    assert.deepEqual(list.map((m) => m.id), ['polyscrew', 'bspline', 'fourpoint', 'jarek', 'slerp', 'decoupled', 'kks', 'rb', 'cc0', 'cc1']);
+    assert.deepEqual(list.map((m) => m.id), ['polyscrew', 'bspline', 'fourpoint', 'jarek', 'slerp', 'decoupled', 'kks', 'rb', 'cc0', 'cc1', 'barr']);
     for (const m of list) assert.ok(m.title.length > 5 && typeof m.supportsClosed === 'boolean');
   });
 
@@ -41,8 +41,9 @@ describe('comparison methods', () => {
       }
       m.free();
     }
-    // Only the C¹ Chaudhry–Cameron motion refuses, and only on cycles (no closed form).
-    for (const r of refusals) assert.match(r, /\/cc1: /, r);
+    // Only the C¹ Chaudhry–Cameron motion and the Barr et al. baseline refuse, and only on
+    // cycles (no closed form).
+    for (const r of refusals) assert.match(r, /\/(cc1|barr): /, r);
   });
 
   it('compareMethods on C1 reproduces the papers’ claims', () => {

@@ -146,3 +146,24 @@ describe('Motion.rational and Motion.rationalFromTriangles', () => {
     assert.throws(() => Motion.rationalFromTriangles('x'), (e) => e instanceof Error);
   });
 });
+
+describe('Motion.barrBaseline', () => {
+  it('reaches R–B’s objective from below on scene C1, as the CLI measures', () => {
+    const m = Motion.fromScene('rb_sphere7');
+    if (m.closed) m.setClosed(false);
+    const b = m.barrBaseline();
+    const rb = m.quaternionSpline({ samples: 2 }).stages.at(-1).objective;
+    // docs/math/quaternion-splines.md §9: 3.758506 against 3.768051 (0.25 %).
+    assert.ok(b.objective <= rb && (rb - b.objective) / b.objective < 0.005, `${b.objective} ${rb}`);
+    assert.equal(b.frames, 601);
+    assert.ok(b.initialObjective > 10 * b.objective);
+    const want = JSON.parse(cli(['compare', '--methods', 'barr', '--open', '--json'], m.toJson())).objectives;
+    assert.ok(Math.abs(b.objective / want.barr.objective - 1) < 1e-9, `${b.objective} ${want.barr.objective}`);
+    assert.ok(Math.abs(rb / want.rb.objective - 1) < 1e-6, `${rb} ${want.rb.objective}`);
+  });
+
+  it('refuses a cycle with a clear Error', () => {
+    const m = Motion.fromScene('circle4');
+    assert.throws(() => m.barrBaseline(), (e) => e instanceof Error && /open sequences only/.test(e.message));
+  });
+});

@@ -13,9 +13,9 @@ use super::convert::{count, is_absent, plain, poses_from_fn, push_kinematics, to
 use super::motion::sample_parameters;
 use super::MotionHandle;
 use screwbender::methods::{
-    compare_methods, fit_quaternion_spline, kinematics_at, motion_metrics, triangle_samples,
-    Continuity, Derivatives, EndCondition, Method, MetricsOptions, RationalMotion, RbOptions,
-    ReferenceTriangle, Side, TRIANGLE_STRIDE,
+    compare_methods, fit_barr, fit_quaternion_spline, kinematics_at, motion_metrics,
+    triangle_samples, BarrOptions, Continuity, Derivatives, EndCondition, Method, MetricsOptions,
+    RationalMotion, RbOptions, ReferenceTriangle, Side, TRIANGLE_STRIDE,
 };
 use screwbender::{
     Error, ErrorKind, Motion, MotionDocument, Pose, Scheme, ScrewBender, Subdivision,
@@ -106,6 +106,17 @@ export interface RationalReport {
   /** Sample times, and the vertices a, x, y at each (9 numbers per sample). */
   t: Float64Array;
   vertices: Float64Array;
+}
+
+/** The discrete baseline of Barr et al. (`Motion.barrBaseline`). */
+export interface BarrReport {
+  /** The objective (3) reached: covariant acceleration plus unit penalty. */
+  objective: number;
+  covariantAcceleration: number;
+  /** The objective of the SLERP polyline it starts from. */
+  initialObjective: number;
+  frames: number;
+  iterations: number;
 }
 
 /** Options of `Motion.quaternionSpline` (Ramamoorthi–Barr). */
@@ -589,6 +600,45 @@ impl MotionHandle {
         )
         .map_err(|e| e.within("rational"))?;
         rational_report(&motion, samples)
+    }
+
+    /// The discrete baseline of Barr et al. on this motion's rotations (keyframe `i` at `t = i`,
+    /// open only, free end velocities, up to 100 frames per span): the objective (3) it reaches,
+    /// its covariant part, the starting objective, frames and Gauss–Newton steps
+    /// (docs/math/quaternion-splines.md §9). Compare with `quaternionSpline()`'s last stage.
+    #[wasm_bindgen(js_name = barrBaseline, unchecked_return_type = "BarrReport")]
+    pub fn barr_baseline(&self) -> Result<JsValue, JsError> {
+        let (doc, _) = self.snapshot()?;
+        if doc.closed {
+            return Err(Error::new(
+                "barrBaseline",
+                ErrorKind::Unsupported {
+                    reason: "the discrete baseline of Barr et al. is built for open sequences only"
+                        .into(),
+                },
+            )
+            .into());
+        }
+        let keys: Vec<DQuat> = doc.poses.iter().map(|p| p.rotation).collect();
+        let times: Vec<f64> = (0..keys.len()).map(|i| i as f64).collect();
+        let fit = fit_barr(&times, &keys, &BarrOptions::for_keys(keys.len()))
+            .map_err(|e| e.within("barrBaseline"))?;
+        #[derive(Serialize)]
+        #[serde(rename_all = "camelCase")]
+        struct Report {
+            objective: f64,
+            covariant_acceleration: f64,
+            initial_objective: f64,
+            frames: usize,
+            iterations: usize,
+        }
+        to_js(&Report {
+            objective: fit.objective,
+            covariant_acceleration: fit.covariant_acceleration,
+            initial_objective: fit.initial_objective,
+            frames: fit.frames.len(),
+            iterations: fit.iterations,
+        })
     }
 
     /// The Chaudhry–Cameron rational motion of a raw triangle sequence: 10 numbers per key (`t`,

@@ -1,6 +1,7 @@
 // Methods view: up to three motion methods of the literature overlaid on the same control poses
 // (trajectories of the body points in distinct colours), their metrics side by side, and for
-// Ramamoorthi–Barr the variable frames and the Euler–Lagrange error before/after optimisation.
+// Ramamoorthi–Barr the variable frames and the Euler–Lagrange error before/after optimisation;
+// for Chaudhry–Cameron the triangle's vertices x/y/z against time, with end condition (18) or (19).
 import { methods as listMethods } from '../../pkg/screwbender.js';
 import { LAYER, Segments, track, poseOf } from '../view/scene.js';
 import { hexLinear, poseMatrix, add, scale } from '../math.js';
@@ -61,7 +62,9 @@ class MethodsView {
     this.table = el('table', { class: 'metrics' });
     root.append(this.status, this.overlayStatus, this.table);
     this.rbBox = el('div');
-    root.append(this.rbBox);
+    this.ccBox = el('div', { class: 'cc' });
+    this.barrBox = el('div', { class: 'barr' });
+    root.append(this.rbBox, this.barrBox, this.ccBox);
   }
 
   /** The selected method ids (in slot order, empty slots left out). */
@@ -109,6 +112,8 @@ class MethodsView {
     else {
       this.drawTable();
       this.drawRb();
+      this.drawBarr();
+      this.drawCc();
     }
     this.drawOverlay();
   }
@@ -175,6 +180,105 @@ class MethodsView {
       `${table.pose_count} control poses, ${table.closed ? 'cycle' : 'open'}; computed in ${ms.toFixed(0)} ms. Derivatives: ${derivs}.` +
       (notes.length ? ` Notes: ${notes.join(' ')}` : '');
     this.lastTable = table;
+  }
+
+  /**
+   * The discrete baseline of Barr et al. beside Ramamoorthi–Barr: the objective (3) each reaches
+   * on the same keyframes and the time each fit takes here (docs/math/quaternion-splines.md §9).
+   */
+  drawBarr() {
+    const m = this.app.motion;
+    if (!this.methods.includes('barr') || m.closed) {
+      this.barrBox.replaceChildren();
+      return;
+    }
+    let barr, rb;
+    const t0 = performance.now();
+    try {
+      barr = m.barrBaseline();
+    } catch (e) {
+      this.barrBox.replaceChildren(el('p', { class: 'note error' }, `Barr et al.: ${e.message}`));
+      return;
+    }
+    const t1 = performance.now();
+    try {
+      rb = m.quaternionSpline({ samples: 2 });
+    } catch (e) {
+      this.barrBox.replaceChildren(el('p', { class: 'note error' }, `Ramamoorthi–Barr: ${e.message}`));
+      return;
+    }
+    const t2 = performance.now();
+    const last = rb.stages.at(-1);
+    const row = (name, objective, ms, detail) => el('tr', {}, el('td', {}, name), el('td', {}, fmt(objective, 7)), el('td', {}, `${ms.toFixed(1)} ms`), el('td', {}, detail));
+    this.barrBox.replaceChildren(
+      el('h4', {}, 'Barr et al. (discrete) beside Ramamoorthi–Barr: objective (3)'),
+      el('table', {},
+        el('tr', {}, el('th', {}, 'method'), el('th', {}, 'objective'), el('th', {}, 'time'), el('th', {}, '')),
+        row('barr', barr.objective, t1 - t0, `${barr.frames} frames, ${barr.iterations} Gauss–Newton steps`),
+        row('rb', last.objective, t2 - t1, `${last.variable_frames} variable frames (fitted twice: before and after)`)),
+      el('p', { class: 'note' },
+        `R–B is ${(100 * (last.objective / barr.objective - 1)).toFixed(2)} % above the dense optimum; time ratio barr/rb ${((t1 - t0) / Math.max(t2 - t1, 1e-3)).toFixed(2)}. `,
+        'The paper reports hours against seconds with a gradient optimiser on 600 frames; the band-limited Gauss–Newton solve here is far faster.'),
+    );
+    this.barr = { barr, rb: last, barrMs: t1 - t0, rbMs: t2 - t1 };
+  }
+
+  /**
+   * Chaudhry–Cameron: the reference triangle's vertices a, x, y against time (one chart each,
+   * x/y/z), C¹ with the chosen end condition (19 straightens the last quaternion segment, 18
+   * the first), or C⁰ on a cycle; the C¹ recursion's growth and its warning.
+   */
+  drawCc() {
+    const app = this.app;
+    const ids = this.methods;
+    if (!ids.includes('cc0') && !ids.includes('cc1')) {
+      this.ccCharts?.forEach((c) => c.destroy());
+      this.ccCharts = null;
+      this.ccBox.replaceChildren();
+      return;
+    }
+    const m = app.motion;
+    if (!this.ccCharts) {
+      this.ccBox.replaceChildren();
+      this.ccEnd = el('select', { 'aria-label': 'Chaudhry–Cameron end condition', onchange: () => this.drawCc() },
+        el('option', { value: '18' }, 'end condition (18): straight first segment'),
+        el('option', { value: '19' }, 'end condition (19): straight last segment'));
+      this.ccInfo = el('p', { class: 'note' });
+      this.ccBox.append(el('h4', {}, 'Chaudhry–Cameron: vertices against time'), el('div', { class: 'row' }, this.ccEnd), this.ccInfo);
+      this.ccCharts = ['a', 'x', 'y'].map((v) => lineChart(this.ccBox, {
+        title: `vertex ${v}`,
+        x: 't',
+        height: 120,
+        series: [
+          { label: `${v}.x`, color: '#d55e00' },
+          { label: `${v}.y`, color: '#009e73' },
+          { label: `${v}.z`, color: '#0072b2' },
+        ],
+      }));
+    }
+    const c1 = !m.closed;
+    this.ccEnd.disabled = !c1;
+    let r;
+    try {
+      r = m.rational({ continuity: c1 ? 'c1' : 'c0', end: Number(this.ccEnd.value), samples: 400 });
+    } catch (e) {
+      this.ccInfo.textContent = `Chaudhry–Cameron: ${e.message}`;
+      this.ccInfo.classList.add('error');
+      return;
+    }
+    this.ccInfo.classList.toggle('error', r.warnings.length > 0);
+    const n = r.t.length;
+    const keys = r.bezier.segments.map((s) => s.t_start).concat(r.bezier.segments.at(-1)?.t_end ?? []);
+    this.ccCharts.forEach((chart, v) => {
+      const comp = [0, 1, 2].map((c) => Array.from({ length: n }, (_, k) => r.vertices[9 * k + 3 * v + c]));
+      chart.set(r.t, comp, keys);
+    });
+    this.ccInfo.textContent =
+      `${r.bezier.continuity}: ${r.bezier.segments.length} rational Bézier segments of degree ${r.bezier.segments[0]?.degree ?? '–'} ` +
+      `(dashed lines: keys). Growth of the middle control points ${fmt(r.growth)}, min |Q|² ${fmt(r.minDenominator)}.` +
+      (c1 ? '' : ' A cycle is C⁰ only.') +
+      (r.warnings.length ? ` Warning: ${r.warnings.join(' ')}` : '');
+    this.cc = r;
   }
 
   /** Ramamoorthi–Barr: variable frames (as ticks on the overlay) and the EL error plot. */
