@@ -82,5 +82,5 @@ pub fn limits() -> Result<JsValue, JsError> {
         kinematics_stride: KINEMATICS_STRIDE,
     })
 }
-#[cfg(feature = "render")]
+#[cfg(feature = "renderer")]
 pub mod render;

@@ -276,9 +276,7 @@ export class Drawing {
       const { dpr } = this.viewer.pixelSize();
       const points = v.showTrajectories ? this.bodyPoints().flat() : [];
       return new this.viewer.wasm.DragSession(
-        motion.poses(),
-        motion.closed,
-        motion.options(),
+        motion,
         v.showStrobe ? v.strobe : 0,
         Float32Array.from([...COLORS.strobeA, ...COLORS.strobeB]),
         Float64Array.from(points),

@@ -84,6 +84,8 @@ export function bindPointer(viewer, tool = {}) {
   c.addEventListener(
     'wheel',
     (e) => {
+      // An embedded figure lets the page scroll until it has the focus (a click gives it).
+      if (viewer.wheelNeedsFocus && c.getRootNode().activeElement !== c) return;
       e.preventDefault();
       const k = e.deltaMode === 1 ? 0.05 : 0.0015;
       viewer.camera.zoom(Math.exp(e.deltaY * k));

@@ -9,6 +9,8 @@
 //   await viewer.start();           // renderer (WebGPU, else WebGL2), resize observer, frame loop
 //   viewer.meshesChanged(); viewer.rebuild(); viewer.frameAll();
 //   viewer.bindPointer(tool);       // camera gestures; `tool` (optional) takes presses on content
+//   viewer.setVisible(false);       // off screen: no frames drawn (an IntersectionObserver's call)
+//   viewer.dispose();               // stops the loop and observers, frees the renderer's GPU data
 //
 // `wasm` is the initialised wasm-bindgen module (Renderer, Motion, DragSession, scenes). The
 // model is read afresh on every rebuild, never copied, so its owner edits it in place and then
@@ -52,9 +54,12 @@ export class Viewer {
   /**
    * options: model (default newModel()); webgl2: true to skip WebGPU; warn(message): non-fatal
    * problems (a backend fallback, drags without live update); onTime(u, a, b): the animated
-   * object moved; onPlay(playing): playback started or stopped.
+   * object moved; onPlay(playing): playback started or stopped; wheelNeedsFocus: true to let
+   * wheel events over an unfocused canvas scroll the page (an embedded figure), false to zoom
+   * always (the playground, whose view fills the page); what: the subject of the no-graphics
+   * message ('the playground', 'this figure').
    */
-  constructor(canvas, wasm, { model = newModel(), webgl2 = false, warn, onTime, onPlay } = {}) {
+  constructor(canvas, wasm, { model = newModel(), webgl2 = false, warn, onTime, onPlay, wheelNeedsFocus = false, what = 'the playground' } = {}) {
     this.canvas = canvas;
     this.wasm = wasm;
     this.model = model;
@@ -62,6 +67,8 @@ export class Viewer {
     this.warn = warn ?? ((m) => console.warn(m));
     this.onTime = onTime ?? (() => {});
     this.onPlay = onPlay ?? (() => {});
+    this.wheelNeedsFocus = wheelNeedsFocus;
+    this.what = what;
     this.scenes = wasm.scenes();
     this.camera = new OrbitCamera();
     this.drawing = new Drawing(this);
@@ -75,7 +82,7 @@ export class Viewer {
     const hasGpu = !!navigator.gpu;
     const { w, h } = this.pixelSize();
     const noGraphics = (e) =>
-      new Error(`This browser offers neither WebGPU nor WebGL2, so the playground cannot draw. (${e.message})`);
+      new Error(`This browser offers neither WebGPU nor WebGL2, so ${this.what} cannot draw. (${e.message})`);
     const { Renderer } = this.wasm;
     try {
       this.renderer = await Renderer.create(this.canvas, !this.webgl2, w, h);
@@ -97,12 +104,38 @@ export class Viewer {
     }
     this.renderer.setMesh(SLOT.handle, 'unit-sphere', true);
     this.renderer.setMesh(SLOT.arrow, 'unit-cone', true);
-    new ResizeObserver(() => {
+    this.resizeObserver = new ResizeObserver(() => {
       this.sizeCache = null;
       this.requestDraw();
-    }).observe(this.canvas);
+    });
+    this.resizeObserver.observe(this.canvas);
     this.loop = this.loop.bind(this);
-    requestAnimationFrame(this.loop);
+    this.visible = true;
+    this.raf = requestAnimationFrame(this.loop);
+  }
+
+  /**
+   * Shown (true) or off screen (false): an invisible viewer draws nothing and stops its frame
+   * loop until it is shown again (playback resumes where it was).
+   */
+  setVisible(on) {
+    this.visible = on;
+    if (on && !this.raf && this.renderer) {
+      this.lastNow = undefined;
+      this.dirty = true;
+      this.raf = requestAnimationFrame(this.loop);
+    }
+  }
+
+  /** Stops the frame loop and the resize observer and frees the renderer (GPU buffers, surface). */
+  dispose() {
+    if (this.raf) cancelAnimationFrame(this.raf);
+    this.raf = 0;
+    this.visible = false;
+    this.resizeObserver?.disconnect();
+    this.resizeObserver = null;
+    this.renderer?.free();
+    this.renderer = null;
   }
 
   replaceCanvas() {
@@ -146,7 +179,11 @@ export class Viewer {
   }
 
   loop(now) {
-    requestAnimationFrame(this.loop);
+    if (!this.visible || !this.renderer) {
+      this.raf = 0;
+      return;
+    }
+    this.raf = requestAnimationFrame(this.loop);
     const { anim, motion } = this.model;
     // Nothing to draw until the model has a motion (the loop runs from start()).
     if (!motion) return;

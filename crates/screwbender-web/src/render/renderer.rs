@@ -128,6 +128,23 @@ pub struct Renderer {
 /// Why the renderer could not start (shown in the page).
 pub type InitError = String;
 
+/// The WebGPU instance, adapter and device that every renderer of the page shares once the
+/// first one has opened them (one per wasm instance: many figures, one device). WebGL2 devices
+/// are not shared: wgpu binds a WebGL2 adapter to the context of one canvas.
+#[derive(Clone)]
+struct SharedGpu {
+    instance: wgpu::Instance,
+    adapter: wgpu::Adapter,
+    device: wgpu::Device,
+    queue: wgpu::Queue,
+}
+
+thread_local! {
+    /// The shared WebGPU device (None until a renderer opens one; wasm has one thread).
+    static SHARED_WEBGPU: std::cell::RefCell<Option<SharedGpu>> =
+        const { std::cell::RefCell::new(None) };
+}
+
 impl Renderer {
     /// Creates the device on `canvas`: WebGPU when an adapter exists (and `allow_webgpu`), else
     /// WebGL2. `width`, `height` are the drawing-buffer size in physical pixels.
@@ -137,6 +154,38 @@ impl Renderer {
         width: u32,
         height: u32,
     ) -> Result<Renderer, InitError> {
+        let shared = if allow_webgpu {
+            SHARED_WEBGPU.with(|s| s.borrow().clone())
+        } else {
+            None
+        };
+        let (surface, adapter, device, queue) = match shared {
+            Some(g) => {
+                let surface = g
+                    .instance
+                    .create_surface(wgpu::SurfaceTarget::Canvas(canvas))
+                    .map_err(|e| format!("cannot create a drawing surface on the canvas: {e}"))?;
+                (surface, g.adapter, g.device, g.queue)
+            }
+            None => Self::open(canvas, allow_webgpu).await?,
+        };
+        Self::with_device(surface, adapter, device, queue, width, height)
+    }
+
+    /// Opens an instance, adapter and device for `canvas` and its surface (see [`Self::init`]);
+    /// a WebGPU device is kept for the renderers that follow.
+    async fn open(
+        canvas: web_sys::HtmlCanvasElement,
+        allow_webgpu: bool,
+    ) -> Result<
+        (
+            wgpu::Surface<'static>,
+            wgpu::Adapter,
+            wgpu::Device,
+            wgpu::Queue,
+        ),
+        InitError,
+    > {
         let backends = if allow_webgpu {
             wgpu::Backends::BROWSER_WEBGPU | wgpu::Backends::GL
         } else {
@@ -172,7 +221,28 @@ impl Renderer {
             })
             .await
             .map_err(|e| format!("cannot open the graphics device: {e}"))?;
+        if backend == wgpu::Backend::BrowserWebGpu {
+            let g = SharedGpu {
+                instance,
+                adapter: adapter.clone(),
+                device: device.clone(),
+                queue: queue.clone(),
+            };
+            SHARED_WEBGPU.with(|s| *s.borrow_mut() = Some(g));
+        }
+        Ok((surface, adapter, device, queue))
+    }
 
+    /// The renderer on an opened device: surface configuration, pipelines, targets.
+    fn with_device(
+        surface: wgpu::Surface<'static>,
+        adapter: wgpu::Adapter,
+        device: wgpu::Device,
+        queue: wgpu::Queue,
+        width: u32,
+        height: u32,
+    ) -> Result<Renderer, InitError> {
+        let backend = adapter.get_info().backend;
         let caps = surface.get_capabilities(&adapter);
         let format = caps
             .formats
