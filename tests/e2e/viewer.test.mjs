@@ -13,8 +13,17 @@ const FIGURES = ['fig-screw', 'fig-fourpoint', 'fig-bspline', 'fig-jarek'];
 let play;
 before(async () => {
   play = await startPlayground({ viewport: { width: 1280, height: 800 } });
-  // Every storage call of every page is counted (the figures must make none).
+  // Every storage call of every page is counted (the figures must make none), and so is every
+  // WebGPU device opened (the figures share one).
   await play.context.addInitScript(() => {
+    window.__devices = 0;
+    if (window.GPUAdapter) {
+      const request = GPUAdapter.prototype.requestDevice;
+      GPUAdapter.prototype.requestDevice = function (...args) {
+        window.__devices++;
+        return request.apply(this, args);
+      };
+    }
     window.__storage = [];
     for (const name of ['getItem', 'setItem', 'removeItem', 'clear', 'key']) {
       const f = Storage.prototype[name];
@@ -140,6 +149,8 @@ test('the course page: four figures on the expected backend, distinct and non-em
     );
     assert.deepEqual(errorsShown, FIGURES.map(() => true), 'no figure shows a message');
     assert.deepEqual(await page.evaluate(() => window.__csp), [], 'no CSP violation');
+    // One GPU device for all four figures (WebGL2 has one context per canvas by nature).
+    if (EXPECTED_BACKEND === 'WebGPU') assert.equal(await page.evaluate(() => window.__devices), 1);
     assert.deepEqual(problems, []);
   } finally {
     await page.close();
