@@ -27,6 +27,8 @@ const EXPECTED_MESSAGES = [
   /^a motion keeps at least 2 poses$/,
   /^rules: the J_s family is defined with the direct rules only$/,
   /^levels: the result would have \d+ poses, more than the limit of \d+$/,
+  // The page's notice where the split 4-point / Jarek rules cross half a turn (Motion.warnings).
+  /^Warning: span \d+: the split-then-tweak (4-point|Jarek) rule /,
 ];
 
 let play;

@@ -247,11 +247,27 @@ export class App {
     this.parts.notices.show(message, level);
   }
 
+  /**
+   * Where the options give a poor result without an error (Motion.warnings: the V1 4-point and
+   * Jarek rules across half a turn, docs/math/subdivision.md §4), a notice naming the span; shown
+   * again only when the warnings change.
+   */
+  warnSubdivision() {
+    const w = this.motion.warnings();
+    const text = w.join(' ');
+    if (text && text !== this.lastWarnings) {
+      const more = w.length > 1 ? ` (${w.length - 1} more span${w.length > 2 ? 's' : ''} likewise)` : '';
+      this.showError(`Warning: ${w[0]}${more}`, 'warn');
+    }
+    this.lastWarnings = text;
+  }
+
   // ---------------------------------------------------------------- editing
 
   /** After any change of motion/options/view: rebuild GPU data, autosave, redraw. */
   changed(save = true) {
     this.viewer.rebuild();
+    this.warnSubdivision();
     if (save) this.autosave();
     this.ui?.refresh();
     this.dock?.changed('edit');
