@@ -142,3 +142,46 @@ describe('dense imports and dropped glTF', () => {
     assert.throws(() => importedMesh('b.glb', new Uint8Array([1, 2, 3])), /b\.glb: /);
   });
 });
+
+describe('random calls to the new functions', () => {
+  it('throw only Errors (never a wasm trap), leave the motion unchanged, and keep it working', async () => {
+    const { prng } = await import('./prng.mjs');
+    const rand = prng(18);
+    const pick = (a) => a[Math.floor(rand() * a.length)];
+    const garbage = () => pick([undefined, null, NaN, -1, 1e308, 'x', {}, [], [NaN], [1, 'a'], new Float64Array(3), 2n, () => 1]);
+    const num = () => pick([0, 0.5, 1, 2, 3.5, 4.5, 9, -0.1, 1e-300, 1e300, NaN, Infinity, -Infinity]);
+    const list = (n) => Array.from({ length: n }, () => (rand() < 0.4 ? null : num()));
+    const increasing = (n) => { let t = rand(); return Array.from({ length: n }, () => (t += rand() < 0.9 ? 0.2 + rand() * 2 : -rand())); };
+    const calls = [
+      (m) => m.setTimes(rand() < 0.7 ? increasing(m.poseCount + (m.closed ? 1 : 0) + (rand() < 0.2 ? 1 : 0)) : garbage()),
+      (m) => m.setVelocities(rand() < 0.7 ? list(m.poseCount + (rand() < 0.2 ? 1 : 0)) : garbage()),
+      (m) => m.insertPose(Math.floor(rand() * m.poseCount)),
+      (m) => m.removePose(Math.floor(rand() * m.poseCount)),
+      (m) => m.setClosed(rand() < 0.5),
+      (m) => m.timedKinematics(5),
+      (m) => m.exportFile({ format: pick(['csv', 'glb']), tolerance: pick([1e-2, 1e-3]), radius: rand() < 0.8 ? pick([0, 1, 2]) : garbage() }),
+      (m) => reducePoses(m.toDocument(), rand() < 0.5 ? { every: pick([1, 2, 3, 0, 1.5, NaN]) } : { tolerance: pick([1e-2, 1e-3, 0, NaN]), radius: pick([0, 1, -1]) }),
+      () => timingMap(rand() < 0.7 ? increasing(5) : garbage(), 4, true, 7, rand() < 0.7 ? list(4) : garbage()),
+      () => importedMesh('x.glb', rand() < 0.5 ? new Uint8Array([0x67, 0x6c, 0x54, 0x46, 2, 0, 0, 0]) : garbage()),
+    ];
+    const m = Motion.fromScene('circle4');
+    m.setLevels(3);
+    let failures = 0;
+    for (let i = 0; i < 3000; i++) {
+      const before = m.toJson();
+      const call = pick(calls);
+      try {
+        call(m);
+      } catch (e) {
+        failures++;
+        assert.ok(e instanceof Error && !(e instanceof WebAssembly.RuntimeError), `${call}: ${e}`);
+        assert.equal(m.toJson(), before, `${call} changed the motion and threw ${e.message}`);
+      }
+      // The motion keeps evaluating after every call, with a valid timing.
+      const k = m.timedKinematics(3);
+      assert.ok(k.every(Number.isFinite));
+      if (m.poseCount > 12) m.loadJson(Motion.fromScene('circle4').toJson());
+    }
+    assert.ok(failures > 300 && failures < 2900, `${failures} of 3000 calls failed`);
+  });
+});
