@@ -16,8 +16,9 @@ import notices from './editor/notices.js';
 import session, { History } from './editor/session.js';
 import files from './editor/files.js';
 import input from './editor/input.js';
+import pose from './editor/pose.js';
 
-const PARTS = [notices, session, files, input];
+const PARTS = [notices, session, files, input, pose];
 
 /** Strobe count when a preset loads: fewer copies where the object is bulky (readable, as in the paper). */
 const PRESET_STROBE = {

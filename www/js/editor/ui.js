@@ -69,9 +69,13 @@ export function buildUi(app) {
     ['showPolyscrew', 'Polyscrew (unsmoothed)'],
     ['showPolygon', 'Control polygon'],
     ['showGrid', 'Grid & axes'],
-    ['snap', 'Snap (or hold Shift)'],
+    ['snap', 'Snap (button, or hold Shift)'],
   ];
   for (const [key, label] of flags) fView.add(viewFlag(key), key).name(label);
+
+  // The selected pose in numbers and the playhead readout (editor/pose.js).
+  const fPose = gui.addFolder('Pose');
+  app.parts.pose.build(fPose.$children);
 
   const exportOpts = { tolerance: 1e-4 };
   const actions = {
@@ -161,6 +165,8 @@ export function buildUi(app) {
   tool('t-redo', () => app.redo());
   tool('t-frame', () => app.frameAll());
   tool('t-help', () => toggleHelp());
+  tool('t-snap', () => app.setView('snap', !app.view.snap));
+  $('help').querySelector('.help-close').onclick = () => toggleHelp(false);
   tool('t-dock', () => app.openView(app.view.dock ? '' : app.lastView ?? firstView()));
   tool('play', () => app.setPlaying(!app.anim.playing));
   $('banner').querySelector('.close').onclick = () => ($('banner').hidden = true);
@@ -183,9 +189,18 @@ export function buildUi(app) {
     return document.querySelector('#dock .tabs button')?.dataset.view ?? '';
   }
 
+  /** Shows or hides the help overlay; the focus goes to its close button and back. */
+  let focusBeforeHelp = null;
   function toggleHelp(show) {
     const h = $('help');
+    const wasHidden = h.hidden;
     h.hidden = show === undefined ? !h.hidden : !show;
+    if (wasHidden && !h.hidden) {
+      focusBeforeHelp = document.activeElement;
+      h.querySelector('.help-close').focus();
+    } else if (!wasHidden && h.hidden && h.contains(document.activeElement)) {
+      (focusBeforeHelp ?? app.canvas)?.focus?.();
+    }
   }
   $('help').onclick = (e) => {
     if (e.target === $('help')) toggleHelp(false);
@@ -210,6 +225,7 @@ export function buildUi(app) {
       (app.selected >= 0 ? ` · pose ${app.selected} selected` : '');
     $('t-translate').classList.toggle('on', app.mode === 'translate');
     $('t-rotate').classList.toggle('on', app.mode === 'rotate');
+    $('t-snap').classList.toggle('on', !!app.view.snap);
     $('t-undo').disabled = !app.history.canUndo;
     $('t-redo').disabled = !app.history.canRedo;
     $('t-delete').disabled = app.selected < 0;
@@ -218,21 +234,23 @@ export function buildUi(app) {
     $('play').textContent = app.anim.playing ? '❚❚' : '▶';
     $('play').title = app.anim.playing ? 'Pause (Space)' : 'Play (Space)';
     $('play').setAttribute('aria-label', app.anim.playing ? 'Pause' : 'Play');
-    for (const id of ['t-translate', 't-rotate', 't-dock']) $(id).setAttribute('aria-pressed', String($(id).classList.contains('on')));
+    for (const id of ['t-translate', 't-rotate', 't-snap', 't-dock']) $(id).setAttribute('aria-pressed', String($(id).classList.contains('on')));
     speed.value = app.anim.speed;
     loop.checked = app.anim.loop;
     loop.disabled = m.closed;
     const [a, b] = m.domain();
     setTime(app.anim.u, a, b);
+    app.parts.pose.refresh();
   }
 
   function setTime(u, a, b) {
     scrub.value = String(Math.round(((u - a) / (b - a)) * 1000));
     $('time').textContent = `u = ${u.toFixed(2)} / ${b}`;
+    app.parts.pose.setTime(u);
   }
 
   // Small screens: start with the panel folded so the view stays visible.
-  if (window.innerWidth < 760) gui.close();
+  if (window.innerWidth < 760 || window.innerHeight < 500) gui.close();
   refresh();
   return { gui, refresh, setTime, toggleHelp, toast };
 }
