@@ -97,9 +97,13 @@ test('every lesson opens and every step applies without errors; math is MathML',
         L.go(k);
         app.dock?.flush();
         const card = document.getElementById('lesson');
-        return { step: L.step, math: card.querySelectorAll('math').length, dollars: card.querySelector('.text').textContent.includes('$'), hidden: card.hidden };
+        const c = card.getBoundingClientRect();
+        const s = L.spot();
+        const covered = !!s && s.x + s.w / 2 > c.left && s.x + s.w / 2 < c.right && s.y + s.h / 2 > c.top && s.y + s.h / 2 < c.bottom;
+        return { step: L.step, covered, dollars: card.querySelector('.text').textContent.includes('$'), hidden: card.hidden };
       }, i);
       assert.equal(info.step, i);
+      assert.equal(info.covered, false, `${id} step ${i}: the card covers its own highlight`);
       assert.equal(info.hidden, false);
       assert.equal(info.dollars, false, `${id} step ${i}: unrendered $ in the text`);
       await waitFrames(page, 1);
@@ -399,6 +403,12 @@ test('screenshots of each lesson (docs/lessons/ with DOCS_SHOTS=1)', async () =>
   await waitFrames(pp, 2);
   await pp.waitForTimeout(300);
   await pp.screenshot({ path: path.join(SHOTS, 'tour-phone.png') });
+  // A panel row is highlighted in the top half: the card moves to the bottom and leaves it visible.
+  await pp.evaluate(async () => (await window.screwbender.lessons).go(2));
+  await pp.waitForTimeout(300);
+  const [spot, card] = await pp.evaluate(async () => [(await window.screwbender.lessons).spot(), document.getElementById('lesson').getBoundingClientRect().toJSON()]);
+  assert.ok(spot && spot.y + spot.h <= card.y, `the card covers the highlighted Levels row: ${JSON.stringify([spot, card])}`);
+  await pp.screenshot({ path: path.join(SHOTS, 'tour-phone-levels.png') });
   await pp.evaluate(async () => {
     const L = await window.screwbender.lessons;
     await L.open('05-frames', { resume: false });

@@ -228,6 +228,8 @@ export function startLessons(app) {
       app.showError(`Lesson step ${i + 1}: ${e.message}`);
     }
     render();
+    // The card's size is the new step's now: place it (and the ring) again.
+    if (target) place();
   }
 
   function applyStep(s) {
@@ -388,7 +390,10 @@ export function startLessons(app) {
     cancelAnimationFrame(raf);
     // Placed now (layout is current) and then every frame while it lasts.
     if (h) place();
-    else spotEl.hidden = true;
+    else {
+      spotEl.hidden = true;
+      placeCard(null);
+    }
   }
 
   /** Where the highlight goes this frame: {x, y, w, h} in page px, or null. */
@@ -412,9 +417,38 @@ export function startLessons(app) {
     return { x: p.x - 24, y: p.y - 24, w: 48, h: 48, round: true };
   }
 
+  /**
+   * Keeps the target visible. Phones (lessons.css): the card sits at the top, or at the bottom
+   * while the target is in the top half. Wider screens: the first of bottom right (the CSS
+   * place), top right, and bottom left of the target that does not cover it.
+   */
+  function placeCard(r) {
+    const phone = window.matchMedia('(max-width: 760px)').matches;
+    card.classList.toggle('low', !!r && phone && r.y + r.h / 2 < window.innerHeight / 2);
+    let pos = { right: '', top: '', bottom: '' };
+    if (r && !phone) {
+      const W = card.offsetWidth;
+      const H = card.offsetHeight;
+      const iw = window.innerWidth;
+      const ih = window.innerHeight;
+      const hits = (x0, y0) => r.x < x0 + W + 8 && r.x + r.w > x0 - 8 && r.y < y0 + H + 8 && r.y + r.h > y0 - 8;
+      const candidates = [
+        [iw - 12 - W, ih - 70 - H, pos],
+        [iw - 12 - W, 12, { right: '', top: '12px', bottom: 'auto' }],
+        [r.x - 16 - W, ih - 70 - H, { right: `${iw - r.x + 16}px`, top: '', bottom: '' }],
+      ];
+      const ok = candidates.find(([x0, y0]) => x0 >= 0 && y0 >= 0 && !hits(x0, y0));
+      if (ok) pos = ok[2];
+    }
+    card.style.right = pos.right;
+    card.style.top = pos.top;
+    card.style.bottom = pos.bottom;
+  }
+
   function place() {
     const r = targetRect();
     spotEl.hidden = !r;
+    placeCard(r);
     if (r) {
       spotEl.style.left = `${r.x}px`;
       spotEl.style.top = `${r.y}px`;
