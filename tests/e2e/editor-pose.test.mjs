@@ -40,7 +40,8 @@ async function type(label, text) {
   const f = field(label);
   await f.click();
   await f.press('Control+a');
-  await page.keyboard.type(text);
+  await page.keyboard.press('Backspace');
+  if (text) await page.keyboard.type(text);
   await page.keyboard.press('Enter');
   await waitFrames(page, 1);
 }

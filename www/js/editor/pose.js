@@ -97,12 +97,16 @@ export default {
       const cells = labels.map((l, k) => el('label', { class: 'pp-cell' }, [el('span', { 'aria-hidden': 'true' }, [l]), fields[k]]));
       const message = el('p', { class: 'pp-msg', role: 'alert', hidden: true });
       const box = el('fieldset', { class: `pp-group pp-${id}` }, [el('legend', {}, [legend]), ...extra, el('div', { class: 'pp-row' }, cells), message]);
+      // A group applies when the focus leaves it (Tab between its fields does not) or on Enter,
+      // so a quaternion is read whole, not normalised field by field.
+      box.addEventListener('focusout', (e) => {
+        if (!box.contains(e.relatedTarget)) apply(id);
+      });
       for (const f of fields) {
-        f.addEventListener('change', () => apply(id));
         f.addEventListener('keydown', (e) => {
           if (e.key === 'Enter') apply(id);
           else if (e.key === 'Escape') {
-            refresh();
+            refresh(true);
             f.blur();
           }
         });
@@ -181,18 +185,19 @@ export default {
         fail(id, e.message);
         return;
       }
-      clearMessages();
       const before = app.errors.length;
       app.edit(() => app.motion.setPose(i, { origin, rotation }));
+      // The typed values are now the pose's (or, refused, replaced by them again).
+      refresh(true);
       // The Motion refused the pose (a value out of its range): say so here as well.
       if (app.errors.length > before) fail(id, app.errors[app.errors.length - 1]);
-      else refresh();
     }
 
     /** Writes numbers into a group's fields (and remembers them, to see which ones change). */
-    function fill(id, values) {
+    function fill(id, values, force) {
       groups[id].fields.forEach((f, k) => {
-        if (document.activeElement === f && f.value !== f.dataset.shown) return;
+        // A field being typed in keeps its text when something else changes.
+        if (!force && document.activeElement === f && f.value !== f.dataset.shown) return;
         f.value = f.dataset.shown = show(values[k]);
       });
     }
@@ -241,10 +246,14 @@ export default {
       refresh();
     }
 
-    /** Shows the selected pose (or says how to select one). */
-    function refresh() {
+    /**
+     * Shows the selected pose (or says how to select one) and clears the messages; `force`
+     * also overwrites a field that is being typed in.
+     */
+    function refresh(force = false) {
       if (!root || !app.motion) return;
       spans = null;
+      clearMessages();
       const i = app.selected;
       const has = i >= 0 && i < app.motion.poseCount;
       editor.hidden = !has;
@@ -253,12 +262,12 @@ export default {
         : 'No pose selected: click a white handle, or press N with the 3-D view focused.';
       if (has) {
         const { origin, rotation } = app.motion.pose(i);
-        fill('origin', origin);
-        fill('quat', rotation);
+        fill('origin', origin, force);
+        fill('quat', rotation, force);
         const aa = quatToAxisAngle(rotation);
-        fill('axis', [...aa.axis, aa.angle * DEG]);
+        fill('axis', [...aa.axis, aa.angle * DEG], force);
         const m = quatToMatrix(rotation);
-        fill('euler', matrixToEuler(m, order).map((a) => a * DEG));
+        fill('euler', matrixToEuler(m, order).map((a) => a * DEG), force);
         m.flat().forEach((v, k) => (matrixCells[k].textContent = show(v)));
       }
       setTime(app.anim.u);
