@@ -14,6 +14,11 @@ import { gizmoGeometry } from './gizmo.js';
 
 /** Size of the cube an imported mesh is scaled to fit (scene units; exports use it as well). */
 export const IMPORT_SIZE = 1.6;
+/** The preset of the paper's bunny example, its mesh (vendored by scripts/serve.d/30-bunny.sh) and
+ * the size it is scaled to (the wedge's longest side). */
+const BUNNY_SCENE = 'scene:bunny6';
+const BUNNY_URL = new URL('../../vendor/bunny.obj', import.meta.url);
+const BUNNY_SIZE = 1.2;
 /** Scale of the control-pose and animated objects relative to the strobe (avoids z-fighting). */
 const CONTROL_SCALE = 1.01;
 
@@ -84,6 +89,22 @@ export class Drawing {
     } else r.setObjMesh(slot, mesh.data, IMPORT_SIZE);
   }
 
+  /**
+   * Fetches the vendored Stanford bunny once (the wedge stands in until it arrives, or for good
+   * if it cannot be read), then uploads the meshes again.
+   */
+  loadBunny() {
+    if (this.bunnyLoad) return;
+    this.bunnyLoad = fetch(BUNNY_URL)
+      .then((res) => (res.ok ? res.text() : Promise.reject(new Error(`${res.status} ${res.statusText}`))))
+      .then((text) => {
+        this.bunny = text;
+        this.meshesChanged();
+        this.viewer.requestDraw();
+      })
+      .catch((e) => this.viewer.warn(`the Stanford bunny could not be loaded (${e.message}); showing the wedge`));
+  }
+
   /** Uploads the object meshes for the current object choice. */
   meshesChanged() {
     const r = this.viewer.renderer;
@@ -91,7 +112,11 @@ export class Drawing {
     const name = v.object === 'scene' ? `scene:${v.scene}` : v.object;
     if (name === 'obj') {
       for (const slot of [SLOT.strobe, SLOT.control, SLOT.anim]) this.setImportedMesh(slot, imported);
+    } else if (name === BUNNY_SCENE && this.bunny) {
+      // The paper's bunny example with the Stanford bunny (www/vendor/bunny.NOTICE).
+      for (const slot of [SLOT.strobe, SLOT.control, SLOT.anim]) this.bunnyTriangles = r.setObjMesh(slot, this.bunny, BUNNY_SIZE);
     } else {
+      if (name === BUNNY_SCENE) this.loadBunny();
       for (const slot of [SLOT.strobe, SLOT.control, SLOT.anim]) r.setMesh(slot, name, false);
     }
     // Morph scene: a different shape at each control pose.
