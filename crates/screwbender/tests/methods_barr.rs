@@ -6,7 +6,7 @@ use glam::{DQuat, DVec4};
 use screwbender::methods::{
     fit_barr, fit_quaternion_spline, BarrOptions, Method, RbOptions, MAX_BARR_FRAMES,
 };
-use screwbender::{scenes, ErrorKind, Motion};
+use screwbender::{scenes, ErrorKind};
 use testkit::Rng;
 
 fn c1() -> (Vec<f64>, Vec<DQuat>) {
