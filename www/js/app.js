@@ -17,8 +17,9 @@ import session, { History } from './editor/session.js';
 import files from './editor/files.js';
 import input from './editor/input.js';
 import pose from './editor/pose.js';
+import presets from './editor/presets.js';
 
-const PARTS = [notices, session, files, input, pose];
+const PARTS = [notices, session, files, input, pose, presets];
 
 /** Strobe count when a preset loads: fewer copies where the object is bulky (readable, as in the paper). */
 const PRESET_STROBE = {
@@ -76,7 +77,8 @@ export class App {
     this.viewer = new Viewer(document.getElementById('view'), wasm, {
       model: this,
       webgl2: params.get('backend') === 'webgl2',
-      warn: (message) => this.showError(message, 'warn'),
+      // WebGPU without an adapter is no fault of the page or the browser: neutral information.
+      warn: (message) => this.showError(message, /no usable adapter/.test(message) ? 'info' : 'warn'),
       onTime: (u, a, b) => this.ui?.setTime(u, a, b),
       onPlay: () => this.ui?.refresh(),
     });
@@ -92,6 +94,7 @@ export class App {
     if (this.view.dock) this.openView(this.view.dock);
     this.parts.input.bind();
     this.parts.files.bind();
+    this.parts.presets.bind();
     window.addEventListener('beforeunload', () => this.autosave());
     this.ready = true;
   }

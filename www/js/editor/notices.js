@@ -7,7 +7,7 @@ export default {
     const banner = document.getElementById('banner');
     let timer;
     return {
-      /** Shows `message`; 'error' and 'warn' hide after 9 s, 'fatal' stays. */
+      /** Shows `message`; 'error', 'warn' and 'info' (neutral) hide after 9 s, 'fatal' stays. */
       show(message, level = 'error') {
         app.errors.push(message);
         banner.querySelector('.msg').textContent = message;

@@ -1,6 +1,7 @@
 // The controls: lil-gui panel, toolbar, timeline, help overlay, paste dialog.
 import GUI from '../../vendor/lil-gui.esm.min.js';
 import { exportMotion, importFiles } from './files.js';
+import { presetName, presetSubtitle } from './presets.js';
 
 const SCHEMES = { 'Cubic B-spline': 'bspline', '4-point': 'fourpoint', Jarek: 'jarek', 'J_s (slider)': 'j' };
 const RULES = { 'Direct (V2)': 'direct', 'Split & tweak (V1)': 'split' };
@@ -20,13 +21,9 @@ const OBJECTS = {
 export function buildUi(app) {
   const $ = (id) => document.getElementById(id);
   const gui = new GUI({ title: 'ScrewBender', container: $('panel') });
-  const presetNames = {};
-  for (const s of app.scenes) presetNames[`${s.label} · ${s.id.replace(/_/g, ' ')}`] = s.id;
 
   // Proxy object: lil-gui reads/writes these; setters route to the app as undoable edits.
   const p = {
-    get preset() { return app.view.scene; },
-    set preset(id) { app.loadPreset(id); },
     get scheme() { return app.motion.scheme; },
     set scheme(v) { v === 'j' ? app.setJ(0.25) : app.setScheme(v); },
     get j() { return app.motion.j; },
@@ -51,7 +48,8 @@ export function buildUi(app) {
   });
 
   const fMotion = gui.addFolder('Motion');
-  fMotion.add(p, 'preset', presetNames).name('Preset');
+  // Presets by human name, with the paper's figure and a description each (editor/presets.js).
+  const presetCtrl = fMotion.add({ choose: () => app.parts.presets.open(presetCtrl.$button) }, 'choose');
   fMotion.add(p, 'scheme', SCHEMES).name('Scheme');
   fMotion.add(p, 'j', 0, 1, 0.01).name('J_s').onFinishChange(() => {});
   fMotion.add(p, 'rules', RULES).name('Rules');
@@ -217,7 +215,10 @@ export function buildUi(app) {
   function refresh() {
     for (const c of gui.controllersRecursive()) c.updateDisplay();
     const info = app.sceneInfo;
-    $('scene-title').textContent = `${info.label} · ${info.figure}`;
+    const named = app.scenes.find((s) => s.id === app.view.scene);
+    $('scene-title').textContent = named && app.view.object === 'scene' ? presetName(named) : `${info.label} · ${info.figure}`;
+    $('scene-fig').textContent = named ? presetSubtitle(named) : '';
+    presetCtrl.name(`Preset: ${named ? presetName(named) : info.label} …`);
     $('scene-desc').textContent = info.description;
     const m = app.motion;
     $('stats').textContent =

@@ -1,0 +1,98 @@
+// End-to-end: a first visit. A short hint says how to start and stays dismissed; the preset
+// chooser lists every preset by a human name with the paper's figure as a subtitle and its
+// one-line description, none cut off; WebGPU without an adapter is told as neutral information.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import path from 'node:path';
+import { startPlayground, openPage, waitFrames, ROOT, BACKEND } from './lib.mjs';
+
+const ARTIFACTS = path.join(ROOT, 'artifacts', `e2e-${BACKEND}`);
+let play;
+
+before(async () => {
+  fs.mkdirSync(ARTIFACTS, { recursive: true });
+  play = await startPlayground();
+});
+
+after(async () => {
+  await play?.close();
+});
+
+test(`${BACKEND}: the first-visit hint shows once and stays dismissed`, async () => {
+  const { page, problems } = await openPage(play.context, play.url, BACKEND);
+  const hint = page.locator('#hint');
+  assert.ok(await hint.isVisible(), 'no hint on a first visit');
+  assert.match(await hint.textContent(), /white handle/);
+  await hint.locator('.close').click();
+  assert.ok(!(await hint.isVisible()));
+  await page.reload();
+  await page.evaluate(() => window.screwbender.ready);
+  assert.ok(!(await hint.isVisible()), 'the dismissed hint came back');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test(`${BACKEND}: the preset chooser: human names, figure subtitles, descriptions, nothing cut off`, async () => {
+  const { page, problems } = await openPage(play.context, play.url, BACKEND);
+  const opener = page.locator('#panel button', { hasText: 'Preset:' });
+  await opener.click();
+  const dlg = page.locator('#presets');
+  assert.ok(await dlg.isVisible());
+  const scenes = await page.evaluate(() => window.screwbender.app.scenes.map((s) => ({ id: s.id, label: s.label, figure: s.figure, description: s.description })));
+  const items = await page.evaluate(() =>
+    [...document.querySelectorAll('#presets .preset')].map((b) => {
+      const part = (c) => b.querySelector(c);
+      // Cut off: text wider than its box, or clipped by an ellipsis.
+      const clipped = [...b.querySelectorAll('span')].some((s) => s.scrollWidth > s.clientWidth + 1);
+      return { id: b.dataset.id, name: part('.name').textContent, sub: part('.sub').textContent, desc: part('.desc').textContent, clipped };
+    }),
+  );
+  assert.equal(items.length, scenes.length);
+  for (const [k, s] of scenes.entries()) {
+    const it = items[k];
+    assert.equal(it.id, s.id);
+    assert.ok(!it.name.includes('_') && !/^[A-C]\d/.test(it.name), `${s.id}: "${it.name}" is no human name`);
+    assert.equal(it.sub, `${s.label} · ${s.figure}`);
+    assert.equal(it.desc, s.description);
+    assert.ok(!it.clipped, `${s.id}: text cut off`);
+  }
+  // The human names are all different.
+  assert.equal(new Set(items.map((i) => i.name)).size, items.length);
+  await page.screenshot({ path: path.join(ARTIFACTS, 'preset-chooser.png') });
+  // Keyboard: the current preset has the focus; Esc closes and gives the focus back.
+  assert.equal(await page.evaluate(() => document.activeElement.dataset.id), 'l_cycle_rotated');
+  await page.keyboard.press('Escape');
+  assert.ok(!(await dlg.isVisible()));
+  assert.equal(await page.evaluate(() => document.activeElement.textContent.startsWith('Preset:')), true);
+  // A click loads the preset; the title card names it.
+  await opener.click();
+  await page.locator('#presets .preset[data-id=pendulum]').click();
+  await waitFrames(page, 1);
+  assert.ok(!(await dlg.isVisible()));
+  assert.equal(await page.evaluate(() => window.screwbender.app.view.scene), 'pendulum');
+  assert.equal(await page.locator('#scene-title').textContent(), 'Pendulum');
+  assert.match(await page.locator('#scene-fig').textContent(), /^A5 · Fig\. 6/);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test(`${BACKEND}: WebGPU without an adapter is neutral information`, async () => {
+  const context = await play.browser.newContext({ viewport: { width: 1280, height: 800 } });
+  // A browser whose WebGPU finds no adapter (as on many machines without a GPU driver for it).
+  await context.addInitScript(() => {
+    Object.defineProperty(navigator, 'gpu', {
+      configurable: true,
+      value: { requestAdapter: async () => null, getPreferredCanvasFormat: () => 'bgra8unorm', wgslLanguageFeatures: new Set() },
+    });
+  });
+  const page = await context.newPage();
+  await page.goto(play.url);
+  await page.evaluate(() => window.screwbender.ready);
+  assert.equal(await page.evaluate(() => window.screwbender.backend()), 'WebGL2');
+  const banner = page.locator('#banner');
+  assert.ok(await banner.isVisible());
+  assert.match(await banner.textContent(), /no usable adapter/);
+  assert.equal(await banner.getAttribute('class'), 'banner info');
+  await context.close();
+});

@@ -1,0 +1,122 @@
+// The preset chooser: human names for the scene presets, with the paper's label and figure as
+// a subtitle and each preset's one-line description, in a dialog opened from the panel. Also
+// the first-visit hint (a short note on how to start, dismissed for good).
+
+/** Human names of the presets (the paper's codes and figures are the subtitle). */
+const NAMES = {
+  l_cycle_parallel: 'L cycle, parallel poses',
+  l_cycle_rotated: 'L cycle, rotated poses',
+  l_cycle_edit: 'L cycle, editing',
+  pendulum: 'Pendulum',
+  spinning_block: 'Spinning block',
+  cylinder5: 'Tumbling cylinder',
+  pip_morph5: 'Morphing shapes',
+  circle4: 'Circle',
+  bunny6: 'Inconsistent rotations',
+  helix_open: 'Helix (open)',
+  triangle7: 'Tumbling triangle',
+  rb_sphere7: 'Turning about a centre',
+  rb_ibeam7: 'Flipping I-beam',
+  rb_molecule4: 'Tumbling molecule',
+};
+
+/** The human name of a preset (its id in words where no name is given). */
+export function presetName(info) {
+  const id = info.id;
+  return NAMES[id] ?? id.charAt(0).toUpperCase() + id.slice(1).replace(/_/g, ' ');
+}
+
+/** The subtitle of a preset: its label in the paper's scene list and its figure. */
+export function presetSubtitle(info) {
+  return `${info.label} · ${info.figure}`;
+}
+
+/** localStorage key of the dismissed first-visit hint. */
+const HINT_KEY = 'screwbender.hintDismissed';
+
+export default {
+  id: 'presets',
+  create(app) {
+    const dlg = document.getElementById('presets');
+    const list = dlg.querySelector('.preset-list');
+    let opener = null;
+
+    function close() {
+      dlg.hidden = true;
+      opener?.focus?.();
+    }
+
+    /** Opens the chooser; the focus goes to the current preset and back to `from` on close. */
+    function open(from) {
+      opener = from ?? document.activeElement;
+      list.replaceChildren();
+      let current = null;
+      for (const s of app.scenes) {
+        const b = document.createElement('button');
+        b.type = 'button';
+        b.className = 'preset';
+        b.dataset.id = s.id;
+        const name = document.createElement('span');
+        name.className = 'name';
+        name.textContent = presetName(s);
+        const sub = document.createElement('span');
+        sub.className = 'sub';
+        sub.textContent = presetSubtitle(s);
+        const desc = document.createElement('span');
+        desc.className = 'desc';
+        desc.textContent = s.description;
+        b.append(name, sub, desc);
+        if (s.id === app.view.scene) {
+          b.classList.add('on');
+          b.setAttribute('aria-current', 'true');
+          current = b;
+        }
+        b.onclick = () => {
+          close();
+          app.loadPreset(s.id);
+        };
+        list.append(b);
+      }
+      dlg.hidden = false;
+      (current ?? list.firstElementChild)?.focus();
+    }
+
+    dlg.addEventListener('keydown', (e) => {
+      if (e.key === 'Escape') {
+        e.preventDefault();
+        e.stopPropagation();
+        close();
+      }
+    });
+    dlg.addEventListener('click', (e) => {
+      if (e.target === dlg) close();
+    });
+    dlg.querySelector('.close').onclick = close;
+
+    const hint = document.getElementById('hint');
+    return {
+      open,
+      close,
+      /** Shows the first-visit hint unless it was dismissed before. */
+      bind() {
+        let dismissed = true;
+        try {
+          dismissed = localStorage.getItem(HINT_KEY) === '1';
+        } catch {
+          // No storage (private mode): show the hint each visit.
+          dismissed = false;
+        }
+        hint.hidden = dismissed;
+        hint.querySelector('.close').onclick = () => {
+          hint.hidden = true;
+          try {
+            localStorage.setItem(HINT_KEY, '1');
+          } catch {
+            // Nothing to remember it in.
+          }
+          app.canvas?.focus();
+        };
+      },
+    };
+  },
+};
