@@ -96,3 +96,25 @@ test(`${BACKEND}: WebGPU without an adapter is neutral information`, async () =>
   assert.equal(await banner.getAttribute('class'), 'banner info');
   await context.close();
 });
+
+test(`${BACKEND}: the strobe slider is logarithmic; the count field takes exact numbers`, async () => {
+  const { page, problems } = await openPage(play.context, play.url, BACKEND);
+  const slider = page.locator('#panel .log-slider .lil-slider');
+  const box = await slider.boundingBox();
+  for (const f of [0.25, 0.5, 0.75]) {
+    const x = box.x + f * box.width;
+    await page.mouse.click(x, box.y + box.height / 2);
+    const got = await page.evaluate(() => window.screwbender.app.view.strobe);
+    // lil-gui maps the pointer to [left, right] linearly, then to 10^value; the page sees
+    // whole pixels, so the value is within a pixel's worth (a factor 10^(4 / width)).
+    const [lo, hi] = [-1, 1].map((d) => 10 ** (4 * ((x + d - box.x) / box.width)));
+    assert.ok(got >= Math.floor(lo) && got <= Math.ceil(hi), `at ${f}: strobe ${got}, want ${lo.toFixed(1)}–${hi.toFixed(1)}`);
+  }
+  // A quarter of the slider spans 1–10: 2 % of it is about 1.2, not 168 as on a linear slider.
+  const count = page.locator('#panel .lil-controller', { hasText: 'Strobe count' }).locator('input');
+  await count.fill('37');
+  await count.press('Enter');
+  assert.equal(await page.evaluate(() => window.screwbender.app.view.strobe), 37);
+  assert.deepEqual(problems, []);
+  await page.close();
+});

@@ -3,6 +3,8 @@ import GUI from '../../vendor/lil-gui.esm.min.js';
 import { exportMotion, importFiles } from './files.js';
 import { presetName, presetSubtitle } from './presets.js';
 
+/** The largest strobe count the panel offers. */
+const STROBE_MAX = 10000;
 const SCHEMES = { 'Cubic B-spline': 'bspline', '4-point': 'fourpoint', Jarek: 'jarek', 'J_s (slider)': 'j' };
 const RULES = { 'Direct (V2)': 'direct', 'Split & tweak (V1)': 'split' };
 const OBJECTS = {
@@ -35,7 +37,12 @@ export function buildUi(app) {
     get closed() { return app.motion.closed; },
     set closed(v) { app.setClosed(v); },
     get strobe() { return app.view.strobe; },
-    set strobe(v) { app.setView('strobe', Math.round(v)); },
+    set strobe(v) {
+      if (Number.isFinite(v)) app.setView('strobe', Math.min(STROBE_MAX, Math.max(1, Math.round(v))));
+    },
+    // The slider is logarithmic: 1–10, 10–100, 100–1000 and 1000–10000 each take a quarter.
+    get strobeLog() { return Math.log10(app.view.strobe); },
+    set strobeLog(v) { this.strobe = 10 ** v; },
     get object() { return app.view.object; },
     set object(v) {
       if (v === 'obj' && !app.imported) return $('obj-file').click();
@@ -58,7 +65,9 @@ export function buildUi(app) {
 
   const fView = gui.addFolder('Display');
   fView.add(p, 'object', OBJECTS).name('Object');
-  fView.add(p, 'strobe', 1, 10000, 1).name('Strobe count');
+  const strobeSlider = fView.add(p, 'strobeLog', 0, Math.log10(STROBE_MAX), 0.001).name('Strobe (log scale)');
+  strobeSlider.domElement.classList.add('log-slider');
+  fView.add(p, 'strobe').name('Strobe count');
   const flags = [
     ['showStrobe', 'Strobe'],
     ['showControl', 'Control poses'],
