@@ -379,6 +379,26 @@ test('?lesson= opens a lesson and resumes it after a reload with its solved exer
   await p3.close();
 });
 
+test('axe finds no serious or critical violation in the lesson menu, card and exercises', async () => {
+  // axe-core from npm, evaluated through the debugging protocol (the CSP refuses inline scripts).
+  await page.evaluate(fs.readFileSync(path.join(ROOT, 'node_modules/axe-core/axe.min.js'), 'utf8'));
+  const audit = () => page.evaluate(async () => {
+    const r = await window.axe.run(document, { resultTypes: ['violations'] });
+    return r.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => `${v.impact} ${v.id}: ${v.nodes.slice(0, 4).map((n) => n.target.join(' ')).join(', ')}`);
+  });
+  await page.evaluate(async () => (await window.screwbender.lessons).openMenu());
+  assert.deepEqual(await audit(), [], 'lesson menu');
+  await openLesson('01-screw');
+  for (const step of [1, 2, 4]) {
+    await inPage((L, app, k) => {
+      L.go(k);
+      L.check();
+      document.querySelector('#lesson button.hint')?.click();
+    }, step);
+    assert.deepEqual(await audit(), [], `lesson 1 step ${step + 1}`);
+  }
+});
+
 test('screenshots of each lesson (docs/lessons/ with DOCS_SHOTS=1)', async () => {
   fs.mkdirSync(SHOTS, { recursive: true });
   const shots = [
