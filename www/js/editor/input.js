@@ -5,6 +5,7 @@
 // page itself has the focus, never inside a control. The part contract is in app.js.
 import { qaxis, qmul, qnormalize } from '../math.js';
 import { SNAP_ROTATE, SNAP_TRANSLATE } from '../view/gizmo.js';
+import { pickPoses } from '../view/picking.js';
 
 export default {
   id: 'input',
@@ -67,21 +68,55 @@ export default {
         app.dock?.changed('edit');
       }
       app.drag?.session?.free();
+      // The plane shown for a handle drag goes back to what the pointer hovers (on touch: nothing).
+      if (app.drag && app.hover === app.drag.part && app.drag.part.startsWith('plane-') && app.drag.fromHandle) app.hover = null;
       app.drag = null;
       app.viewer.rebuildGizmo();
       app.requestDraw();
       app.ui?.refresh();
     }
 
+    /**
+     * The world plane a handle drag moves in: the one facing the camera most (its normal
+     * closest to the view direction), so the pose never changes depth silently; the drag
+     * highlights that plane's square of the gizmo.
+     */
+    function facingPlane() {
+      const f = app.camera.forward;
+      let best = 0;
+      for (let k = 1; k < 3; k++) if (Math.abs(f[k]) > Math.abs(f[best])) best = k;
+      return `plane-${'xyz'[best]}`;
+    }
+
+    /** Where the last press on handles was and what it hit (repeated presses cycle). */
+    let lastPress = null;
+
     const tool = {
       press(pt, e) {
+        const hits = pickPoses(app.viewer, pt);
+        // Handles that overlap on the screen (poses sharing an origin): a press again at the
+        // same place selects the next of them.
+        const again = lastPress && Math.hypot(pt[0] - lastPress.pt[0], pt[1] - lastPress.pt[1]) < 4 && hits.length > 1 && hits.includes(app.selected);
+        lastPress = hits.length ? { pt } : null;
+        if (again) {
+          app.select(hits[(hits.indexOf(app.selected) + 1) % hits.length]);
+          if (!beginPoseDrag(facingPlane(), pt, e)) return 'taken';
+          app.drag.fromHandle = true;
+          return 'drag';
+        }
         const part = app.viewer.gizmoHit(pt);
         if (part && beginPoseDrag(part, pt, e)) return 'drag';
-        const k = app.viewer.pickPose(pt);
-        if (k < 0) return null;
+        if (!hits.length) return null;
+        // Of overlapping handles, the selected one stays selected (the next press cycles).
+        const k = hits.includes(app.selected) ? app.selected : hits[0];
         if (k !== app.selected) app.select(k);
-        // A handle dragged right away moves its pose in the view plane.
-        return beginPoseDrag('view', pt, e) ? 'drag' : 'taken';
+        // A handle dragged right away moves its pose in the world plane facing the view.
+        const plane = facingPlane();
+        if (!beginPoseDrag(plane, pt, e)) return 'taken';
+        app.hover = plane;
+        app.drag.fromHandle = true;
+        app.viewer.rebuildGizmo();
+        return 'drag';
       },
       drag(pt, e) {
         if (app.drag) dragMove(pt, e.shiftKey);

@@ -1,5 +1,6 @@
 // The translate / rotate gizmo: drawing (segments + cone instances), screen-space hit testing,
-// and the drag maths. World axes; size constant on screen.
+// and the drag maths. World axes; size constant on screen; snapping to the absolute grid and
+// absolute angles.
 import {
   add, sub, scale, dot, cross, normalize, length, qaxis, qmul, qnormalize, rayPlane, lineRayParam,
   segmentDistance2, poseMatrix,
@@ -21,12 +22,26 @@ export function gizmoSize(camera, c) {
   return d * Math.tan(camera.fovy / 2) * 0.32;
 }
 
-/** Parts of the gizmo as {part, kind, axis, points} for drawing and hit testing. */
+/** |cos| of the angle between the view direction and an axis above which the axis is hidden (it points at the eye). */
+const AXIS_HIDE_COS = 0.98;
+/** |cos| between the view direction and a plane's normal below which the plane is hidden (seen edge-on). */
+const PLANE_HIDE_COS = 0.2;
+
+/**
+ * Parts of the gizmo as {part, kind, axis, points} for drawing and hit testing. Parts seen
+ * edge-on (an arrow pointing at the eye, a square seen from its side) are left out: they would
+ * be a dot or a line that grabs the wrong motion.
+ */
 function parts(mode, c, s, camera) {
   const out = [];
+  const view = normalize(sub(c, camera.eye));
   if (mode === 'translate') {
-    AXES.forEach((a, i) => out.push({ part: 'axis-' + NAMES[i], kind: 'axis', i, points: [add(c, scale(a, s * 0.18)), add(c, scale(a, s))] }));
+    AXES.forEach((a, i) => {
+      if (Math.abs(dot(a, view)) > AXIS_HIDE_COS) return;
+      out.push({ part: 'axis-' + NAMES[i], kind: 'axis', i, points: [add(c, scale(a, s * 0.18)), add(c, scale(a, s))] });
+    });
     AXES.forEach((n, i) => {
+      if (Math.abs(dot(n, view)) < PLANE_HIDE_COS) return;
       const u = AXES[(i + 1) % 3];
       const v = AXES[(i + 2) % 3];
       const p = (a, b) => add(c, add(scale(u, a * s), scale(v, b * s)));
@@ -151,14 +166,20 @@ const snap = (x, step) => Math.round(x / step) * step;
 export function startDrag(part, pose, camera, ray, pt) {
   const c0 = pose.origin;
   const q0 = pose.rotation;
+  // Snapping is absolute: a moved coordinate lands on the world grid (multiples of
+  // SNAP_TRANSLATE), whatever it was when the drag started; coordinates the drag does not move stay.
   const translate = (delta, snapOn) => ({
-    origin: add(c0, snapOn ? delta.map((x) => snap(x, SNAP_TRANSLATE)) : delta),
+    origin: c0.map((x, k) => (snapOn && Math.abs(delta[k]) > 1e-12 ? snap(x + delta[k], SNAP_TRANSLATE) : x + delta[k])),
     rotation: q0,
   });
-  const rotate = (axis, angle, snapOn) => ({
-    origin: c0,
-    rotation: qnormalize(qmul(qaxis(axis, snapOn ? snap(angle, SNAP_ROTATE) : angle), q0)),
-  });
+  // A turn about a world axis snaps the pose's angle about that axis (its twist, the angle of
+  // the rotation's component about the axis) to multiples of SNAP_ROTATE.
+  const twist = (axis) => 2 * Math.atan2(dot(axis, [q0[1], q0[2], q0[3]]), q0[0]);
+  const rotate = (axis, angle, snapOn, absolute = true) => {
+    let a = angle;
+    if (snapOn) a = absolute ? snap(twist(axis) + angle, SNAP_ROTATE) - twist(axis) : snap(angle, SNAP_ROTATE);
+    return { origin: c0, rotation: qnormalize(qmul(qaxis(axis, a), q0)) };
+  };
   const [kind, name] = part.split('-');
   const i = NAMES.indexOf(name);
   if (kind === 'axis') {
@@ -221,7 +242,8 @@ export function startDrag(part, pose, camera, ray, pt) {
         if (mag < 1e-9) return { origin: c0, rotation: q0 };
         // Rotate about the screen axis perpendicular to the mouse motion.
         const axis = normalize(add(scale(up, d[0]), scale(right, d[1])));
-        return rotate(axis, mag * 0.012, snapOn);
+        // A free turn has no world axis to count from: its angle snaps from the drag start.
+        return rotate(axis, mag * 0.012, snapOn, false);
       },
     };
   }

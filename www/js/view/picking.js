@@ -35,6 +35,19 @@ export function pickPose(viewer, pt) {
   return best;
 }
 
+/** Every control pose whose handle the ray through `pt` hits, nearest first. */
+export function pickPoses(viewer, pt) {
+  const { o, d } = ray(viewer, pt);
+  const poses = viewer.model.motion.poses();
+  const hits = [];
+  for (let k = 0; k < poses.length / 7; k++) {
+    const c = poseOf(poses, k).origin;
+    const t = raySphere(o, d, c, viewer.drawing.handleRadius(c) * 1.6);
+    if (t !== null) hits.push({ k, t });
+  }
+  return hits.sort((a, b) => a.t - b.t || a.k - b.k).map((h) => h.k);
+}
+
 /** The gizmo part of the selected pose under `pt`, else null (the last drawn frame's camera). */
 export function gizmoHit(viewer, pt) {
   const { motion, selected, mode } = viewer.model;
