@@ -257,7 +257,15 @@ test('malformed lesson files: the message names step and field, and nothing chan
   assert.equal(await inPage((L) => L.lesson), null);
 });
 
-test('a pasted lesson opens; URLs outside lessons/ are refused', async () => {
+test('a pasted lesson opens; URLs outside lessons/ are refused; L and Esc open and close the menu', async () => {
+  await page.locator('#view').focus();
+  await page.keyboard.press('l');
+  await page.locator('#lessons-menu').waitFor({ state: 'visible' });
+  assert.equal(await page.evaluate(() => document.activeElement.dataset.lesson), '01-screw', 'focus on the first lesson');
+  await page.keyboard.press('l');
+  assert.equal(await page.locator('#lessons-menu').isVisible(), true, 'L inside the menu is not a shortcut');
+  await page.keyboard.press('Escape');
+  assert.equal(await page.locator('#lessons-menu').isHidden(), true);
   await page.evaluate(() => document.getElementById('t-lessons').click());
   await page.locator('#lessons-menu').waitFor({ state: 'visible' });
   assert.equal(await page.locator('#lessons-menu .lesson-item').count(), LESSONS.length + 1);

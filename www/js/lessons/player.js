@@ -492,6 +492,7 @@ export function startLessons(app) {
     tour.addEventListener('click', () => open('tour', { resume: false }));
     list.append(tour);
     menu.hidden = false;
+    list.querySelector('button')?.focus();
   }
 
   async function openFile(file) {
@@ -526,11 +527,13 @@ export function startLessons(app) {
   closeBtn.addEventListener('click', close);
   prevBtn.addEventListener('click', () => go(step - 1));
   nextBtn.addEventListener('click', () => go(step + 1));
+  // Keys, as the editor's shortcuts (editor/input.js): L only with the focus on the 3-D view or
+  // the page (inside a control keys keep their own meaning); Esc closes the menu from anywhere.
   window.addEventListener('keydown', (e) => {
     const t = e.target;
-    if (t instanceof HTMLElement && (t.isContentEditable || /^(INPUT|TEXTAREA|SELECT)$/.test(t.tagName) && t.type !== 'radio' && t.type !== 'range' && t.type !== 'checkbox')) return;
+    const onPage = !t || t === app.canvas || t === document.body || t === document.documentElement;
     if (e.key === 'Escape' && !menu.hidden) menu.hidden = true;
-    else if ((e.key === 'l' || e.key === 'L') && !e.ctrlKey && !e.metaKey && !e.altKey) {
+    else if (onPage && (e.key === 'l' || e.key === 'L') && !e.ctrlKey && !e.metaKey && !e.altKey) {
       if (menu.hidden) openMenu();
       else menu.hidden = true;
     } else return;
