@@ -4,7 +4,10 @@
 // short first-visit tour (www/lessons/tour.json). Lesson files: www/lessons/README.md.
 //
 // startLessons(app) returns the player; main.js exposes it as window.screwbender.lessons:
-//   open(name) / openText(text, source): Promise<boolean>   load a lesson (false: error shown)
+//   ready: Promise               settles once ?lesson= or the first-visit tour has been handled
+//   open(name, {resume}): Promise<boolean>   loads lessons/<name>.json (false: a banner says why)
+//   openText(text, source, {resume}): boolean   the same from a file's text (pasted, dropped)
+//   openMenu()                   shows the Lessons menu
 //   lesson, step                 the open lesson object and step index (null / -1 when closed)
 //   go(i), next(), prev(), close()
 //   choose(k)                    picks answer k of the step's multiple choice
