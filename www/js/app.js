@@ -18,8 +18,9 @@ import files from './editor/files.js';
 import input from './editor/input.js';
 import pose from './editor/pose.js';
 import presets from './editor/presets.js';
+import responsive from './editor/responsive.js';
 
-const PARTS = [notices, session, files, input, pose, presets];
+const PARTS = [notices, session, files, input, pose, presets, responsive];
 
 /** Strobe count when a preset loads: fewer copies where the object is bulky (readable, as in the paper). */
 const PRESET_STROBE = {
@@ -95,6 +96,7 @@ export class App {
     this.parts.input.bind();
     this.parts.files.bind();
     this.parts.presets.bind();
+    this.parts.responsive.bind();
     window.addEventListener('beforeunload', () => this.autosave());
     this.ready = true;
   }

@@ -133,7 +133,8 @@ export default {
         version: SESSION_VERSION,
         document: app.motion.toDocument(),
         options: app.motion.options(),
-        view: { ...app.view },
+        // A strobe reduced during a gesture (editor/responsive.js) is saved at its full count.
+        view: { ...app.view, strobe: app.parts.responsive?.fullStrobe() ?? app.view.strobe },
         selected: app.selected,
         mode: app.mode,
         anim: { u: app.anim.u, speed: app.anim.speed, loop: app.anim.loop },

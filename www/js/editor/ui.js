@@ -36,12 +36,12 @@ export function buildUi(app) {
     set levels(v) { app.setOption('levels', v); },
     get closed() { return app.motion.closed; },
     set closed(v) { app.setClosed(v); },
-    get strobe() { return app.view.strobe; },
+    get strobe() { return app.parts.responsive.fullStrobe(); },
     set strobe(v) {
       if (Number.isFinite(v)) app.setView('strobe', Math.min(STROBE_MAX, Math.max(1, Math.round(v))));
     },
     // The slider is logarithmic: 1–10, 10–100, 100–1000 and 1000–10000 each take a quarter.
-    get strobeLog() { return Math.log10(app.view.strobe); },
+    get strobeLog() { return Math.log10(app.parts.responsive.fullStrobe()); },
     set strobeLog(v) { this.strobe = 10 ** v; },
     get object() { return app.view.object; },
     set object(v) {
@@ -231,7 +231,10 @@ export function buildUi(app) {
     $('scene-desc').textContent = info.description;
     const m = app.motion;
     $('stats').textContent =
-      `${m.poseCount} control poses · ${m.refinedCount.toLocaleString()} refined · ${app.view.strobe.toLocaleString()} strobe` +
+      `${m.poseCount} control poses · ${m.refinedCount.toLocaleString()} refined · ` +
+      (app.parts.responsive.reduced
+        ? `${app.parts.responsive.fullStrobe().toLocaleString()} strobe (${app.view.strobe.toLocaleString()} while moving)`
+        : `${app.view.strobe.toLocaleString()} strobe`) +
       (app.selected >= 0 ? ` · pose ${app.selected} selected` : '');
     $('t-translate').classList.toggle('on', app.mode === 'translate');
     $('t-rotate').classList.toggle('on', app.mode === 'rotate');
@@ -241,6 +244,7 @@ export function buildUi(app) {
     $('t-delete').disabled = app.selected < 0;
     $('t-dock').classList.toggle('on', !!app.view.dock);
     if (app.view.dock) app.lastView = app.view.dock;
+    if (app.anim.playing) app.parts.responsive.sample();
     $('play').textContent = app.anim.playing ? '❚❚' : '▶';
     $('play').title = app.anim.playing ? 'Pause (Space)' : 'Play (Space)';
     $('play').setAttribute('aria-label', app.anim.playing ? 'Pause' : 'Play');
