@@ -1,6 +1,7 @@
 //! `screwbender compare [--methods a,b,c] [--json] [FILE]`: the metrics of the comparison
 //! methods on one set of control poses, as an aligned text table or JSON; and `screwbender
-//! rational`: the Chaudhry–Cameron motion's rational Bézier form, from poses or triangles.
+//! rational`: the Chaudhry–Cameron motion's rational Bézier form, from poses or triangles; and
+//! the warning lines where a result is silently poor.
 
 use std::io::Read;
 use std::time::Instant;
@@ -12,7 +13,7 @@ use screwbender::methods::{
     BarrOptions, Continuity, EndCondition, Method, MetricsOptions, RationalMotion, RbOptions,
     ReferenceTriangle, TriangleSample, TRIANGLE_STRIDE,
 };
-use screwbender::{Error, ErrorKind, Pose, MAX_DOCUMENT_BYTES};
+use screwbender::{Error, ErrorKind, Pose, Subdivision, MAX_DOCUMENT_BYTES};
 
 use crate::args::{number, ArgReader};
 use crate::failure::Failure;
@@ -140,6 +141,15 @@ fn objectives(poses: &[Pose], closed: bool) -> Result<Objectives, Error> {
         frames: barr.frames.len(),
         iterations: barr.iterations,
     })
+}
+
+/// Prints a `screwbender: warning: …` line on standard error for each place where subdividing
+/// `poses` gives a poor result without an error (`Subdivision::warnings`), for `subdivide`,
+/// `eval` and `export`; standard output is untouched.
+pub fn warn_subdivision(sub: &Subdivision, poses: &[Pose], closed: bool) {
+    for w in sub.warnings(poses, closed) {
+        eprintln!("screwbender: warning: {w}");
+    }
 }
 
 /// The options of `screwbender rational`.

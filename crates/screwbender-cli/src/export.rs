@@ -104,7 +104,7 @@ pub fn export(args: &[String]) -> Result<String, Failure> {
     let given = o.velocities.clone().or_else(|| doc.velocities.clone());
     doc.set_timing(times, given)?;
     let sub = o.sub.subdivision(5)?;
-    crate::warn_subdivision(&sub, &doc.poses, doc.closed);
+    crate::compare::warn_subdivision(&sub, &doc.poses, doc.closed);
     let mesh = doc
         .name
         .as_deref()

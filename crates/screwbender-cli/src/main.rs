@@ -188,20 +188,11 @@ fn subdivide(args: &[String]) -> Result<String, Failure> {
     let doc = read_document(o.file.as_deref())?;
     let closed = doc.closed && !o.sub.open;
     let sub = o.sub.subdivision(5)?;
-    warn_subdivision(&sub, &doc.poses, closed);
+    compare::warn_subdivision(&sub, &doc.poses, closed);
     let motion = ScrewBender::new(doc.poses, closed, sub)?;
     let mut out = MotionDocument::new(motion.refined().poses().to_vec(), closed);
     out.name = doc.name;
     Ok(out.to_json())
-}
-
-/// Prints a `screwbender: warning: …` line on standard error for each place where subdividing
-/// `poses` gives a poor result without an error (`Subdivision::warnings`); standard output is
-/// untouched.
-fn warn_subdivision(sub: &screwbender::Subdivision, poses: &[Pose], closed: bool) {
-    for w in sub.warnings(poses, closed) {
-        eprintln!("screwbender: warning: {w}");
-    }
 }
 
 fn pose_json(p: &Pose) -> Value {
@@ -224,7 +215,7 @@ fn eval(args: &[String]) -> Result<String, Failure> {
     let doc = read_document(o.file.as_deref())?;
     let closed = doc.closed && !o.sub.open;
     let sub = o.sub.subdivision(5)?;
-    warn_subdivision(&sub, &doc.poses, closed);
+    compare::warn_subdivision(&sub, &doc.poses, closed);
     let motion: Box<dyn Motion> = if sub.levels == 0 {
         Box::new(Polyscrew::new(doc.poses, closed)?)
     } else {
