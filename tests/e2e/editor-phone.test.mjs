@@ -48,18 +48,24 @@ function onScreen(list, { width, height }, what) {
   assert.deepEqual(off.map((c) => `${c.name} ${Math.round(c.x)},${Math.round(c.y)}–${Math.round(c.r)},${Math.round(c.b)}`), [], `${what}: off screen`);
 }
 
-/** The controls of `scope` that another element covers at their centre (a tap would miss them). */
-const covered = (page, scope) =>
-  page.evaluate((sel) => {
+/**
+ * The controls of `scope` that another element covers at their centre (a tap would miss them);
+ * controls scrolled out of the scrolling box `clip` (if given) are not counted.
+ */
+const covered = (page, scope, clip) =>
+  page.evaluate(([sel, clipSel]) => {
     const out = [];
+    const box = clipSel ? document.querySelector(clipSel).getBoundingClientRect() : null;
     for (const e of document.querySelectorAll(`${sel} button, ${sel} input, ${sel} select`)) {
       if (!e.getClientRects().length) continue;
       const r = e.getBoundingClientRect();
-      const hit = document.elementFromPoint(r.left + r.width / 2, r.top + r.height / 2);
+      const [cx, cy] = [r.left + r.width / 2, r.top + r.height / 2];
+      if (box && (cy < box.top || cy > box.bottom || cx < box.left || cx > box.right)) continue;
+      const hit = document.elementFromPoint(cx, cy);
       if (!hit || !(e.contains(hit) || hit.contains(e) || hit.closest('label')?.contains(e))) out.push(`${e.id || e.textContent.trim() || e.tagName} under ${hit?.id || hit?.className || hit?.tagName}`);
     }
     return out;
-  }, scope);
+  }, [scope, clip]);
 
 function bigEnough(list, what) {
   const small = list.filter((c) => c.w < 44 - 0.5 || c.h < 44 - 0.5);
@@ -113,6 +119,8 @@ for (const [layout, viewport] of Object.entries(LAYOUTS)) {
       onScreen([{ name: '#panel', x: pbox.x, y: pbox.y, r: pbox.x + pbox.width, b: pbox.y + pbox.height }], viewport, 'panel');
       onScreen(panel.map((c) => ({ ...c, y: Math.max(c.y, 0), b: Math.min(c.b, pbox.y + pbox.height) })), viewport, 'panel controls');
       bigEnough(panel, 'open panel');
+      // Nothing (the first-visit hint, say) lies over the open panel.
+      assert.deepEqual(await covered(page, '#panel .lil-gui.lil-root > .lil-children > .lil-gui:first-child', '#panel'), [], 'panel controls covered');
       await page.screenshot({ path: path.join(ARTIFACTS, `phone-${layout}-panel.png`) });
       await page.locator('#panel .lil-gui.lil-root > .lil-title').tap();
       // The help: touch gestures described, a close button in reach.
