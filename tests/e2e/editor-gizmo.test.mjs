@@ -132,3 +132,35 @@ test(`${BACKEND}: presses again on overlapping handles cycle through their poses
   assert.deepEqual(Array.from(await sb(() => window.screwbender.poses())), before);
   assert.deepEqual(problems, []);
 });
+
+test(`${BACKEND}: pose numbers are drawn beside the handles and follow the camera`, async () => {
+  await setup({ camera: { yaw: -Math.PI / 3, pitch: 0.6 } });
+  const near = async () =>
+    sb(() => {
+      const app = window.screwbender.app;
+      const out = [];
+      const labels = [...document.querySelectorAll('#pose-labels .pose-label')].filter((e) => !e.hidden);
+      for (const e of labels) {
+        const k = Number(e.textContent);
+        const r = e.getBoundingClientRect();
+        const h = app.screenOfPose(k);
+        out.push({ k, d: Math.hypot(r.left + r.width / 2 - h.x, r.top + r.height / 2 - h.y), on: e.classList.contains('on') });
+      }
+      return { out, n: app.motion.poseCount, layerHidden: document.getElementById('pose-labels').hidden };
+    });
+  let s = await near();
+  assert.equal(s.layerHidden, false);
+  assert.deepEqual(s.out.map((l) => l.k), [...Array(s.n).keys()]);
+  // Beside the handle: close to it, not on it (the handle stays clickable).
+  for (const l of s.out) assert.ok(l.d > 8 && l.d < 40, `label ${l.k} is ${l.d.toFixed(1)} px from its handle`);
+  assert.deepEqual(s.out.filter((l) => l.on).map((l) => l.k), [2], 'the selected pose is marked');
+  // An orbit with the mouse: the labels follow.
+  await mouseDrag(page, { x: 150, y: 650 }, 120, -40);
+  await waitFrames(page, 2);
+  s = await near();
+  for (const l of s.out) assert.ok(l.d > 8 && l.d < 40, `after the orbit, label ${l.k} is ${l.d.toFixed(1)} px from its handle`);
+  // Display › Pose numbers off hides them.
+  await sb(() => window.screwbender.app.setView('showPoseNumbers', false));
+  assert.equal((await near()).layerHidden, true);
+  await sb(() => window.screwbender.app.setView('showPoseNumbers', true));
+});

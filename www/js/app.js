@@ -19,8 +19,9 @@ import input from './editor/input.js';
 import pose from './editor/pose.js';
 import presets from './editor/presets.js';
 import responsive from './editor/responsive.js';
+import labels from './editor/labels.js';
 
-const PARTS = [notices, session, files, input, pose, presets, responsive];
+const PARTS = [notices, session, files, input, pose, presets, responsive, labels];
 
 /** Strobe count when a preset loads: fewer copies where the object is bulky (readable, as in the paper). */
 const PRESET_STROBE = {
@@ -55,6 +56,8 @@ export class App {
       showPolyscrew: false,
       showPolygon: true,
       showTriads: true,
+      /** Pose numbers beside the handles (editor/labels.js). */
+      showPoseNumbers: true,
       showGrid: true,
       snap: false,
       /** The open analysis view ('' = dock closed). */
@@ -97,6 +100,7 @@ export class App {
     this.parts.files.bind();
     this.parts.presets.bind();
     this.parts.responsive.bind();
+    this.parts.labels.bind();
     window.addEventListener('beforeunload', () => this.autosave());
     this.ready = true;
   }

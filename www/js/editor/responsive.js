@@ -3,7 +3,8 @@
 // (app.stats.frameIntervalMs: what the user waits, GPU included, beside the CPU-side
 // stats.frameMs). During a drag, an orbit, a pan or a zoom, when frames take longer than the
 // budget, the strobe is drawn with fewer copies; the full strobe comes back when the gesture
-// ends (idle). The reduced count is never saved: sessions store the full one.
+// ends (idle). The reduced count is never saved: sessions store the full one. After each drawn
+// frame the pose numbers (editor/labels.js) are placed again.
 
 /** The frame budget (ms) above which a gesture draws a reduced strobe (20 frames per second). */
 export const FRAME_BUDGET_MS = 50;
@@ -74,6 +75,7 @@ export default {
         lastFrames = f;
         lastT = now;
         quietSince = now;
+        app.parts.labels?.place();
       }
       if (!gesture && now - quietSince > QUIET_MS) {
         sampling = false;

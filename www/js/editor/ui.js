@@ -72,6 +72,7 @@ export function buildUi(app) {
     ['showStrobe', 'Strobe'],
     ['showControl', 'Control poses'],
     ['showTriads', 'Pose axes'],
+    ['showPoseNumbers', 'Pose numbers'],
     ['showTrajectories', 'Trajectories'],
     ['showPolyscrew', 'Polyscrew (unsmoothed)'],
     ['showPolygon', 'Control polygon'],
@@ -244,7 +245,9 @@ export function buildUi(app) {
     $('t-delete').disabled = app.selected < 0;
     $('t-dock').classList.toggle('on', !!app.view.dock);
     if (app.view.dock) app.lastView = app.view.dock;
-    if (app.anim.playing) app.parts.responsive.sample();
+    // Frames follow a change: measure them, and keep the pose numbers on their handles.
+    app.parts.responsive.sample();
+    app.parts.labels.place();
     $('play').textContent = app.anim.playing ? '❚❚' : '▶';
     $('play').title = app.anim.playing ? 'Pause (Space)' : 'Play (Space)';
     $('play').setAttribute('aria-label', app.anim.playing ? 'Pause' : 'Play');
