@@ -268,6 +268,7 @@ test('bad attributes and sources: a message naming attribute and value in that f
       ['controls', 'most'],
       ['src', 'missing.json'],
       ['src', 'course.css'],
+      ['share', 'not-a-payload!'],
     ];
     const results = await page.evaluate(async (list) => {
       const out = [];
@@ -342,6 +343,27 @@ test('a src motion file loads; figures created and removed 50 times leave no err
       return n;
     });
     assert.equal(loaded, 3);
+    // A playground share-link payload: the figure shows the session's poses and options.
+    const shared = await page.evaluate(async () => {
+      const { encodeHash } = await import('../js/editor/session.js');
+      const doc = { closed: true, poses: [
+        { origin: [0, 0, 0], rotation: [1, 0, 0, 0] },
+        { origin: [2, 0, 0], rotation: [0, 1, 0, 0] },
+        { origin: [1, 2, 0], rotation: [0.5, 0.5, 0.5, 0.5] },
+      ] };
+      const payload = encodeHash({ version: 1, document: doc, options: { scheme: 'jarek', levels: 3, j: 0.5, rules: 'direct' }, view: { strobe: 12 } });
+      const el = document.createElement('screw-bender');
+      el.setAttribute('share', `https://example.org/screwbender/#s=${payload}`);
+      document.querySelector('main').append(el);
+      await el.ready;
+      const r = { poses: Array.from(el.motion.poses()), options: el.motion.options(), hidden: el.shadowRoot.querySelector('.msg').hidden };
+      el.remove();
+      return r;
+    });
+    assert.equal(shared.hidden, true);
+    assert.deepEqual(shared.poses, [0, 0, 0, 1, 0, 0, 0, 2, 0, 0, 0, 1, 0, 0, 1, 2, 0, 0.5, 0.5, 0.5, 0.5]);
+    assert.equal(shared.options.scheme, 'jarek');
+    assert.equal(shared.options.levels, 3);
     const round = () =>
       page.evaluate(async () => {
         const box = document.createElement('div');

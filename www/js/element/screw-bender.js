@@ -22,7 +22,6 @@
 // the element frees its GPU data and observers; no inline script or style (the stylesheet is
 // css/screw-bender.css beside this folder), so a strict CSP with 'wasm-unsafe-eval' suffices.
 import { Viewer, newModel } from '../view/viewer.js';
-import { decodeHash } from '../editor/session.js';
 import { loadMain, loadGl } from './modules.js';
 
 /** Attributes the element watches (each maps onto an option of mount()). */
@@ -357,11 +356,14 @@ class Figure {
       }
     }
     if (o.share) {
+      // Imported only for share payloads (it brings the playground's session code).
+      const { decodeHash } = await import('../editor/session.js');
       let s;
       try {
         s = decodeHash(String(o.share).replace(/^.*#s=/, ''));
       } catch (e) {
-        throw new OptionError('share', `${String(o.share).slice(0, 24)}…`, e.message);
+        const v = String(o.share);
+        throw new OptionError('share', v.length > 40 ? `${v.slice(0, 40)}…` : v, e.message);
       }
       return { doc: s.document, options: s.options, view: s.view, camera: s.camera };
     }
@@ -622,7 +624,8 @@ function optionsOf(el) {
  * Mounts a figure into `element` (any element; its content becomes the caption) with `options`
  * (the attributes' names; numbers and booleans may be given as such, and `document` as a motion
  * document object). Returns a handle {ready, document, options, motion, play(), pause(), seek(u),
- * destroy()}; events are dispatched on `element`. Throws nothing: failures show in the figure.
+ * destroy()}; events are dispatched on `element`. Failures show in the figure (and fire `error`);
+ * only an `element` that cannot hold a shadow root throws (a TypeError, as attachShadow does).
  */
 export function mount(element, options = {}) {
   const { document: doc, ...rest } = options;
