@@ -189,8 +189,10 @@ fn subdivide(args: &[String]) -> Result<String, Failure> {
     let closed = doc.closed && !o.sub.open;
     let sub = o.sub.subdivision(5)?;
     compare::warn_subdivision(&sub, &doc.poses, closed);
-    let motion = ScrewBender::new(doc.poses, closed, sub)?;
-    let mut out = MotionDocument::new(motion.refined().poses().to_vec(), closed);
+    // The refined poses alone (no span screws: nothing here evaluates the motion between
+    // them), checked and named as `ScrewBender::new` checks them.
+    let control = Polyscrew::new(doc.poses, closed)?;
+    let mut out = MotionDocument::new(sub.apply(control.poses(), closed)?, closed);
     out.name = doc.name;
     Ok(out.to_json())
 }

@@ -177,3 +177,24 @@ fn rebuild_matches_new_bit_for_bit_and_errors_change_nothing() {
     assert!(motion.rebuild(&all[2][..1], true, s, &mut buffers).is_err());
     assert_same_motion(&motion, &before, "after errors");
 }
+
+#[test]
+fn refined_poses_are_the_subdivision_of_the_checked_control_poses() {
+    // What the CLI's `subdivide` writes without building the motion: for every preset, scheme
+    // and rule set, the refined poses of `ScrewBender::new` are the subdivision of the control
+    // poses as `Polyscrew::new` checks them, bit for bit (the motion's own check of its refined
+    // poses changes none of them).
+    for scene in screwbender::scenes::scenes() {
+        let control = Polyscrew::new(scene.poses.clone(), scene.closed).unwrap();
+        for s in options().into_iter().filter(|s| s.levels == 3) {
+            let motion = ScrewBender::new(scene.poses.clone(), scene.closed, s).unwrap();
+            let refined = s.apply(control.poses(), scene.closed).unwrap();
+            assert_eq!(
+                bits(motion.refined().poses()),
+                bits(&refined),
+                "{} {s:?}",
+                scene.id
+            );
+        }
+    }
+}
