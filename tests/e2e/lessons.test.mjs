@@ -367,6 +367,8 @@ test('?lesson= opens a lesson and resumes it after a reload with its solved exer
   await p3.evaluate(() => window.screwbender.ready);
   await p3.evaluate(async () => (await window.screwbender.lessons).ready);
   assert.equal(await p3.evaluate(async () => (await window.screwbender.lessons).lesson?.id), 'tour');
+  // The editor's first-visit hint (if the page has one) waits while the tour is open.
+  assert.equal(await p3.evaluate(() => { const h = document.getElementById('hint'); return !h || h.hidden || getComputedStyle(h).display === 'none'; }), true);
   const targets = { 2: '#panel', 4: '#play', 5: '#t-dock', 6: '#t-lessons' };
   for (const [k, sel] of Object.entries(targets)) {
     await p3.evaluate(async (i) => (await window.screwbender.lessons).go(i), Number(k));

@@ -206,6 +206,7 @@ export function startLessons(app) {
     lesson = parsed;
     progress = readProgress(lesson.id);
     card.hidden = false;
+    document.body.classList.add('lesson-open');
     card.classList.toggle('tour', !!lesson.tour);
     lessonTitle.textContent = lesson.title;
     go(resume ? Math.min(progress.step, lesson.steps.length - 1) : 0);
@@ -378,6 +379,7 @@ export function startLessons(app) {
     lesson = null;
     step = -1;
     card.hidden = true;
+    document.body.classList.remove('lesson-open');
     setTarget(null);
   }
 
