@@ -63,17 +63,17 @@ function assertPosesClose(a, b, tol) {
   }
 }
 
-test(`${BACKEND}: Export glTF (.glb) downloads a GLB whose drop restores the control poses to 1e-6`, async () => {
+test(`${BACKEND}: Export glTF (.glb) downloads a GLB named for what it holds (…-motion.glb) whose drop restores the control poses to 1e-6`, async () => {
   const before = await poses();
   const [d] = await clickExport('Export glTF (.glb)');
-  assert.equal(d.suggestedFilename(), 'l_cycle_rotated.glb');
+  assert.equal(d.suggestedFilename(), 'l_cycle_rotated-motion.glb');
   const bytes = fs.readFileSync(await d.path());
   assert.equal(bytes.subarray(0, 4).toString('latin1'), 'glTF');
   const toast = await page.locator('#toast').textContent();
-  assert.match(toast, /l_cycle_rotated\.glb: \d+ keyframes \(tolerance 0\.0001\)/);
+  assert.match(toast, /l_cycle_rotated-motion\.glb: \d+ keyframes \(tolerance 0\.0001\)/);
   // Change the motion, then drop the exported file: the control poses come back.
   await page.evaluate(() => window.screwbender.app.loadPreset('cylinder5'));
-  await drop([{ name: 'l_cycle_rotated.glb', bytes }]);
+  await drop([{ name: 'l_cycle_rotated-motion.glb', bytes }]);
   assertPosesClose(await poses(), before, 1e-6);
   assert.deepEqual(problems, []);
 });
@@ -82,21 +82,21 @@ test(`${BACKEND}: Export glTF (.gltf + .bin) downloads both; dropping them toget
   await page.evaluate(() => window.screwbender.app.loadPreset('cylinder5'));
   const before = await poses();
   const [g, b] = await clickExport('Export glTF (.gltf + .bin)', 2);
-  assert.equal(g.suggestedFilename(), 'cylinder5.gltf');
-  assert.equal(b.suggestedFilename(), 'cylinder5.bin');
+  assert.equal(g.suggestedFilename(), 'cylinder5-motion.gltf');
+  assert.equal(b.suggestedFilename(), 'cylinder5-motion.bin');
   const gltf = fs.readFileSync(await g.path());
   const json = JSON.parse(gltf.toString());
-  assert.equal(json.buffers[0].uri, 'cylinder5.bin');
+  assert.equal(json.buffers[0].uri, 'cylinder5-motion.bin');
   assert.ok(json.animations.length >= 1);
   await page.evaluate(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
   const sBefore = await session();
   // The .gltf alone cannot be read: its buffer is missing. Nothing changes.
-  await drop([{ name: 'cylinder5.gltf', bytes: gltf }]);
-  assert.match(await page.locator('#banner .msg').textContent(), /cylinder5\.gltf: .*cylinder5\.bin/);
+  await drop([{ name: 'cylinder5-motion.gltf', bytes: gltf }]);
+  assert.match(await page.locator('#banner .msg').textContent(), /cylinder5-motion\.gltf: .*cylinder5-motion\.bin/);
   assert.equal(await session(), sBefore);
   await drop([
-    { name: 'cylinder5.gltf', bytes: gltf },
-    { name: 'cylinder5.bin', bytes: fs.readFileSync(await b.path()) },
+    { name: 'cylinder5-motion.gltf', bytes: gltf },
+    { name: 'cylinder5-motion.bin', bytes: fs.readFileSync(await b.path()) },
   ]);
   assertPosesClose(await poses(), before, 1e-6);
 });
