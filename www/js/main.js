@@ -11,7 +11,9 @@
 //   handleOnPage(i): {x, y}         page coordinates (CSS px) of control pose i's handle
 //   gizmoOnPage(part): {x, y}       a grabbable point of a gizmo part: 'axis-x|y|z', 'plane-x|y|z',
 //                                   'ring-x|y|z', 'trackball' (of the current mode)
-//   frames(): number                frames drawn so far; stats(): {updateMs, frameMs, renderMs}
+//   frames(): number                frames drawn so far; stats(): {updateMs, frameMs, renderMs} (CPU
+//                                   time) and frameIntervalMs (requestAnimationFrame to requestAnimationFrame
+//                                   between the last two drawn frames: what the user waits, GPU included)
 //   openView(id): instance          opens an analysis view of the dock ('' closes it)
 //   flushViews()                    runs the open view's pending update now
 //   app                             the App object itself (for benchmarks / debugging)
