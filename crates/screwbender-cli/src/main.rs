@@ -11,7 +11,7 @@ mod failure;
 mod import;
 mod input;
 
-use std::io::{Read, Write};
+use std::io::Write;
 use std::process::ExitCode;
 
 use screwbender::{scenes, Motion, MotionDocument, Polyscrew, Pose, Screw, ScrewBender, ScrewKind};
