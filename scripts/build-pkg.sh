@@ -1,10 +1,16 @@
 #!/usr/bin/env bash
-# Build the npm package `screwbender` (the math-only WebAssembly module, no renderer) into pkg/,
-# then pack it into a tarball.
+# Build the npm package `screwbender` into pkg/, then pack it into a tarball: the math-only
+# WebAssembly module (the main entry, no renderer) and the `screwbender/viewer` entry (the
+# <screw-bender> element: www/js/element, www/js/view and the renderer's modules in pkg/viewer/).
 #
 #   ./scripts/build-pkg.sh               # pkg/ and artifacts/npm/screwbender-<version>.tgz
 #   PACK=0 ./scripts/build-pkg.sh        # pkg/ only
 #   PKG_DIR=/tmp/p ./scripts/build-pkg.sh  # another output directory
+#
+# The viewer has two renderer modules: viewer/pkg/ with features webgpu,files (no wgpu-core, GL
+# backend or shader translation: the browser compiles the WGSL) and viewer/pkg-gl/ with webgl,files
+# (WebGL2 through wgpu's GL backend and naga), which the element imports only when WebGPU has no
+# usable adapter. Both go through wasm-bindgen --remove-name-section and wasm-opt -Oz.
 #
 # Steps: cargo build --profile wasm-release (release, with the dependencies optimised for size:
 # see Cargo.toml) for wasm32 without features (so no wgpu), wasm-bindgen
@@ -49,6 +55,55 @@ else
     --enable-sign-ext --enable-mutable-globals --enable-multivalue --enable-simd \
     "$PKG_DIR/screwbender_bg.wasm" -o "$PKG_DIR/screwbender_bg.opt.wasm"
   mv "$PKG_DIR/screwbender_bg.opt.wasm" "$PKG_DIR/screwbender_bg.wasm"
+fi
+
+WASM_OPT_FEATURES=(--enable-bulk-memory --enable-reference-types --enable-nontrapping-float-to-int
+  --enable-sign-ext --enable-mutable-globals --enable-multivalue --enable-simd)
+
+# viewer_module FEATURES OUT_DIR: one renderer module of the viewer (cargo, wasm-bindgen, wasm-opt;
+# the last two, ~1-3 min, are skipped when the cargo output and this script did not change).
+viewer_module() {
+  local features=$1 out=$2 stamp stamp_file
+  header "viewer: cargo build (wasm32, wasm-release, features $features)"
+  timed "cargo build" cargo build -p screwbender-web --lib --profile wasm-release --target "$WASM_TARGET" \
+    --features "$features"
+  stamp=$( (cat "$input" scripts/build-pkg.sh Cargo.lock; echo "$features") | sha256sum | cut -d' ' -f1)
+  stamp_file=$PKG_DIR/.viewer-stamp-$(basename "$out")
+  if [[ -f $stamp_file && $(cat "$stamp_file") == "$stamp" && -f $out/screwbender_bg.wasm ]]; then
+    log "$out is up to date with the wasm module: not regenerating"
+    return
+  fi
+  rm -rf "$out"
+  mkdir -p "$out"
+  timed "wasm-bindgen" wasm-bindgen --target web --remove-name-section --remove-producers-section \
+    --out-dir "$out" --out-name screwbender "$input"
+  timed "wasm-opt -Oz" "$WASM_OPT" -Oz --strip-debug --strip-producers "${WASM_OPT_FEATURES[@]}" \
+    "$out/screwbender_bg.wasm" -o "$out/screwbender_bg.opt.wasm"
+  mv "$out/screwbender_bg.opt.wasm" "$out/screwbender_bg.wasm"
+  rm -f "$out/package.json" "$out/.gitignore"
+  echo "$stamp" >"$stamp_file"
+}
+
+if [[ ${VIEWER:-1} == 1 ]]; then
+  viewer=$PKG_DIR/viewer
+  rm -rf "$viewer/js" "$viewer/css"
+  viewer_module webgpu,files "$viewer/pkg"
+  viewer_module webgl,files "$viewer/pkg-gl"
+  header "viewer: sources"
+  mkdir -p "$viewer/js/element" "$viewer/js/view" "$viewer/js/editor" "$viewer/css"
+  cp www/js/element/screw-bender.js "$viewer/js/element/"
+  cp www/js/view/*.js "$viewer/js/view/"
+  cp www/js/math.js "$viewer/js/"
+  cp www/js/editor/session.js "$viewer/js/editor/"
+  cp www/css/screw-bender.css "$viewer/css/"
+  # The package's main renderer module has WebGPU only: name the WebGL2 module.
+  cat >"$viewer/js/element/modules.js" <<'JS'
+// The figure's WebAssembly modules in the npm package (written by scripts/build-pkg.sh): the
+// main one has WebGPU only; the WebGL2 one is imported only when WebGPU has no usable adapter.
+export const loadMain = () => import('../../pkg/screwbender.js');
+export const loadGl = () => import('../../pkg-gl/screwbender.js');
+JS
+  cp npm/viewer.js npm/viewer.d.ts "$PKG_DIR/"
 fi
 
 header "package files"

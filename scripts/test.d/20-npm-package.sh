@@ -2,7 +2,9 @@
 # Stage: the npm package `screwbender` as a user gets it.
 #
 #   1. build and pack it (scripts/build-pkg.sh), check the tarball's file list and the size
-#      budget of the .wasm (WASM_GZIP_BUDGET bytes gzip, default 150 000: the issue's 150 KB);
+#      budget of the .wasm (WASM_GZIP_BUDGET bytes gzip, default 150 000: the issue's 150 KB),
+#      and the viewer's budgets (scripts/viewer-size.sh: what a browser downloads for one
+#      read-only figure, WebGPU ≤ 450 KB gzip, the WebGL2 path ≤ 1.2 MB gzip);
 #   2. install the tarball into fresh apps under a mktemp dir, with only the npm registry:
 #      a Node app (smoke test through the package "exports"), a Vite 7 app (`vite build`, served
 #      on 127.0.0.1, and the Vite dev server; plus `tsc --strict` on a usage file against the
@@ -30,8 +32,10 @@ package/package.json
 package/screwbender.d.ts
 package/screwbender.js
 package/screwbender_bg.wasm
-package/screwbender_bg.wasm.d.ts"
-found=$(tar tzf "$tarball" | grep -v -E '^package/LICENSE' | LC_ALL=C sort)
+package/screwbender_bg.wasm.d.ts
+package/viewer.d.ts
+package/viewer.js"
+found=$(tar tzf "$tarball" | grep -v -E '^package/LICENSE|^package/viewer/' | LC_ALL=C sort)
 if [[ $found != "$expected" ]]; then
   die "tarball files differ from the expected list:"$'\n'"$found"
 fi
@@ -42,6 +46,7 @@ log "wasm: $wasm_raw bytes, $wasm_gz bytes gzip (budget $WASM_GZIP_BUDGET); tarb
 if grep -q -E 'wgpu|webgpu' pkg/screwbender.js; then
   die "the math-only package mentions wgpu/WebGPU: was it built with the render feature?"
 fi
+./scripts/viewer-size.sh pkg
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/screwbender-npm.XXXXXX")
 dev_pid=

@@ -1,15 +1,43 @@
 // Browser smoke entry shared by the Vite app and the plain ES-module page: loads the package,
-// runs the checks and publishes the result for the Playwright driver (window.__smoke).
+// runs the checks and publishes the result for the Playwright driver (window.__smoke). Then the
+// viewer entry: a <screw-bender> figure must start (WebGPU, or here usually the WebGL2 module)
+// and show no message.
 import init, * as sb from 'screwbender';
 import { runSmoke } from './smoke.mjs';
 
 async function main() {
   try {
     await init();
-    window.__smoke = runSmoke(sb);
+    const result = runSmoke(sb);
+    result.checks.push(await viewerCheck());
+    result.ok = result.checks.every((c) => c.ok);
+    window.__smoke = result;
   } catch (e) {
     window.__smoke = { ok: false, checks: [{ name: 'load', ok: false, detail: String(e && e.stack ? e.stack : e) }] };
   }
   document.body.textContent = JSON.stringify(window.__smoke, null, 2);
 }
 main();
+
+/** Mounts one figure through `screwbender/viewer` and reports its backend and message. */
+async function viewerCheck() {
+  try {
+    const { mount } = await import('screwbender/viewer');
+    const el = document.createElement('div');
+    el.style.width = '400px';
+    el.style.height = '250px';
+    document.body.append(el);
+    const events = [];
+    el.addEventListener('error', (e) => events.push(e.detail.message));
+    const fig = mount(el, { scene: 'l_cycle_rotated', levels: 3 });
+    await fig.ready;
+    const msg = el.shadowRoot.querySelector('.msg');
+    const ok = fig.backend !== null && msg.hidden && events.length === 0 && fig.document?.poses?.length > 0;
+    const detail = `backend ${fig.backend}; ${msg.hidden ? 'no message' : msg.textContent}`;
+    fig.destroy();
+    el.remove();
+    return { name: 'viewer: mount a figure', ok, detail };
+  } catch (e) {
+    return { name: 'viewer: mount a figure', ok: false, detail: String(e && e.stack ? e.stack : e) };
+  }
+}

@@ -17,6 +17,7 @@ import init, {
   type ScrewInfo,
   type SubdivisionOptions,
 } from 'screwbender';
+import { mount, type ScrewBenderElement, type ViewerHandle, type ViewerOptions } from 'screwbender/viewer';
 
 await init();
 
@@ -59,5 +60,18 @@ m.removePose('1');
 Motion.fromScene('nope');
 // @ts-expect-error: levels is a number
 m.setOptions({ levels: '3' });
+
+// The viewer entry: options, the handle, the element's typed events.
+const viewerOptions: ViewerOptions = { scene: 'circle4', levels: 4, editable: true, controls: 'full', theme: 'dark' };
+const fig: ViewerHandle = mount(document.createElement('div'), {
+  ...viewerOptions,
+  document: { closed: false, poses: [{ origin: [0, 0, 0], rotation: [1, 0, 0, 0] }, { origin: [1, 0, 0], rotation: [1, 0, 0, 0] }] },
+});
+fig.seek(0.5);
+const figEl: ScrewBenderElement = document.createElement('screw-bender');
+figEl.addEventListener('change', (e) => console.log(e.detail.poses.length, e.detail.index));
+figEl.addEventListener('error', (e) => console.log(e.detail.attribute, e.detail.message));
+// @ts-expect-error: not a controls value
+mount(document.createElement('div'), { controls: 'most' });
 
 console.log(x, w, scheme, refined.length, matrices.length, speed, pitch, firstShape, mats.length, stride, start, end, closed);
