@@ -111,12 +111,29 @@ impl Polyscrew {
             span_screws_into(&self.poses, self.closed, &mut self.spans);
             return;
         }
-        // Spans start−1 … start+count−1 have an end in the range.
-        for k in 0..=count {
-            let i = (start + n + k - 1) % n;
-            if i < spans {
-                self.spans[i] = Screw::between(&self.poses[i], &self.poses[(i + 1) % n]);
+        // Spans start−1 … start+count−1 have an end in the range: recomputed in runs of
+        // consecutive spans that do not wrap, each run in one batch (bit for bit
+        // `Screw::between`).
+        let mut fresh = Vec::with_capacity(count + 1);
+        let mut k = 0;
+        while k <= count {
+            let first = (start + n + k - 1) % n;
+            if first >= spans {
+                k += 1;
+                continue;
             }
+            // The run ends before the span that wraps round (n − 1 → 0) or at the range's end.
+            let len = (count + 1 - k).min(n - 1 - first).max(1).min(spans - first);
+            let last = first + len;
+            fresh.clear();
+            if last < n {
+                span_screws_into(&self.poses[first..=last], false, &mut fresh);
+            } else {
+                // The closing span n − 1 → 0 alone.
+                fresh.push(Screw::between(&self.poses[first], &self.poses[0]));
+            }
+            self.spans[first..first + len].copy_from_slice(&fresh);
+            k += len;
         }
     }
 
