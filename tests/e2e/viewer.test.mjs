@@ -173,6 +173,44 @@ test('figures never touch localStorage (no persist attribute)', async () => {
   }
 });
 
+test('persist="key": the figure restores its saved motion from that key and saves edits there', async () => {
+  const { page, problems } = await open(COURSE);
+  try {
+    const r = await page.evaluate(async () => {
+      const saved = { document: { closed: false, poses: [
+        { origin: [0, 0, 0], rotation: [1, 0, 0, 0] },
+        { origin: [1, 1, 0], rotation: [1, 0, 0, 0] },
+        { origin: [2, 0, 0], rotation: [1, 0, 0, 0] },
+      ] }, options: { scheme: 'fourpoint', levels: 2, j: 0, rules: 'direct' } };
+      localStorage.setItem('course.fig', JSON.stringify(saved));
+      const el = document.createElement('screw-bender');
+      el.setAttribute('scene', 'circle4');
+      el.setAttribute('persist', 'course.fig');
+      el.setAttribute('editable', '');
+      document.querySelector('main').prepend(el);
+      await el.ready;
+      return { poses: Array.from(el.motion.poses()), keys: Object.keys(localStorage) };
+    });
+    assert.deepEqual(r.poses, [0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 0, 0, 0, 2, 0, 0, 1, 0, 0, 0]);
+    assert.deepEqual(r.keys, ['course.fig']);
+    await page.evaluate(() => window.scrollTo(0, 0));
+    const id = await page.evaluate(() => {
+      const el = document.querySelector('main > screw-bender');
+      el.id = 'persisted';
+      return el.id;
+    });
+    const h = await handleOf(page, id, 1);
+    await drag(page, h, 30, 20);
+    const stored = await page.evaluate(() => JSON.parse(localStorage.getItem('course.fig')).document.poses[1].origin);
+    const now = await page.evaluate(() => Array.from(document.getElementById('persisted').motion.pose(1).origin));
+    assert.deepEqual(stored, now);
+    assert.ok(Math.hypot(now[0] - 1, now[1] - 1, now[2]) > 0.05, `pose 1 moved to ${now}`);
+    assert.deepEqual(problems, []);
+  } finally {
+    await page.close();
+  }
+});
+
 test('a read-only figure ignores drags of its poses (the camera orbits instead)', async () => {
   const { page, problems } = await open(COURSE);
   try {
