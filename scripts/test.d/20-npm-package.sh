@@ -39,6 +39,7 @@ found=$(tar tzf "$tarball" | grep -v -E '^package/LICENSE|^package/viewer/' | LC
 if [[ $found != "$expected" ]]; then
   die "tarball files differ from the expected list:"$'\n'"$found"
 fi
+./scripts/viewer-size.sh pkg
 wasm_raw=$(wc -c <pkg/screwbender_bg.wasm)
 wasm_gz=$(gzip -9c pkg/screwbender_bg.wasm | wc -c)
 log "wasm: $wasm_raw bytes, $wasm_gz bytes gzip (budget $WASM_GZIP_BUDGET); tarball: $(wc -c <"$tarball") bytes"
@@ -46,7 +47,6 @@ log "wasm: $wasm_raw bytes, $wasm_gz bytes gzip (budget $WASM_GZIP_BUDGET); tarb
 if grep -q -E 'wgpu|webgpu' pkg/screwbender.js; then
   die "the math-only package mentions wgpu/WebGPU: was it built with the render feature?"
 fi
-./scripts/viewer-size.sh pkg
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/screwbender-npm.XXXXXX")
 dev_pid=
