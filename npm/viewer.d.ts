@@ -38,6 +38,7 @@ export interface ViewerOptions {
   controls?: 'none' | 'minimal' | 'full';
   /** `iso`, `front`, `side`, `top` or `"yaw pitch [distance]"` (degrees, scene units). */
   camera?: string;
+  /** The figure's chrome and frame (the 3-D background stays light). */
   theme?: 'light' | 'dark';
   /** A localStorage key: the figure saves its edits there and restores them (never without it). */
   persist?: string;
