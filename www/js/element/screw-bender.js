@@ -131,14 +131,34 @@ class Figure {
     link.href = new URL('../../css/screw-bender.css', import.meta.url).href;
     const fig = document.createElement('div');
     fig.className = 'fig';
-    fig.innerHTML = `<canvas tabindex="0" part="canvas" aria-label="3-D figure of a rigid motion"></canvas>
-<div class="bar" part="controls"><button class="play" type="button" aria-label="Play">▶</button>
-<input class="scrub" type="range" min="0" max="1000" value="0" aria-label="Motion parameter">
-<span class="time">u = 0</span><span class="full"><select class="scheme" aria-label="Scheme">
-<option value="bspline">B-spline</option><option value="fourpoint">4-point</option><option value="jarek">Jarek</option>
-</select><label>levels <input class="levels" type="range" min="0" max="7" step="1" value="4"></label>
-<button class="frame" type="button" title="Frame all (A)">Frame</button></span></div>
-<div class="msg" role="alert" hidden></div><div class="caption"><slot></slot></div>`;
+    // Built node by node, not from an HTML string: the element must work under a CSP that
+    // forbids string-to-HTML sinks (and the page's own test refuses them).
+    const node = (tag, attrs = {}, ...children) => {
+      const e = document.createElement(tag);
+      for (const [k, v] of Object.entries(attrs)) {
+        if (k === 'text') e.textContent = v;
+        else if (k === 'hidden') e.hidden = v;
+        else e.setAttribute(k, v);
+      }
+      e.append(...children);
+      return e;
+    };
+    const schemes = [['bspline', 'B-spline'], ['fourpoint', '4-point'], ['jarek', 'Jarek']];
+    fig.append(
+      node('canvas', { tabindex: '0', part: 'canvas', 'aria-label': '3-D figure of a rigid motion' }),
+      node('div', { class: 'bar', part: 'controls' },
+        node('button', { class: 'play', type: 'button', 'aria-label': 'Play', text: '▶' }),
+        node('input', { class: 'scrub', type: 'range', min: '0', max: '1000', value: '0', 'aria-label': 'Motion parameter' }),
+        node('span', { class: 'time', text: 'u = 0' }),
+        node('span', { class: 'full' },
+          node('select', { class: 'scheme', 'aria-label': 'Scheme' },
+            ...schemes.map(([value, label]) => node('option', { value, text: label }))),
+          node('label', {}, 'levels ',
+            node('input', { class: 'levels', type: 'range', min: '0', max: '7', step: '1', value: '4' })),
+          node('button', { class: 'frame', type: 'button', title: 'Frame all (A)', text: 'Frame' }))),
+      node('div', { class: 'msg', role: 'alert', hidden: true }),
+      node('div', { class: 'caption' }, node('slot')),
+    );
     root.append(link, fig);
     this.root = root;
     this.el = {
