@@ -23,6 +23,8 @@ describe('Motion key times and velocities', () => {
     assert.deepEqual(m.velocities, [null, 0, 0.8, null, null, null]);
     const doc = m.toDocument();
     assert.deepEqual(doc.times, [0, 1, 3, 4, 6, 7, 9]);
+    // toDocument() gives free velocities as undefined: the object is accepted back as it is.
+    assert.equal(new Motion(doc).toJson(), m.toJson());
     const again = new Motion(JSON.parse(m.toJson()));
     assert.equal(again.toJson(), m.toJson());
     // Without explicit times, timedKinematics follows the motion's own: the first number of each

@@ -40,8 +40,8 @@ export interface MotionDocumentInput {
   closed?: boolean;
   /** When each control pose is reached, in seconds, strictly increasing (n times for an open motion, n + 1 for a cycle: the last is pose 0 again); default 1 s per span from 0. */
   times?: number[];
-  /** The rate du/dt at each key in poses per second (one per control pose, >= 0, `null` where free); the retiming is refused where a velocity makes time run backwards. */
-  velocities?: (number | null)[];
+  /** The rate du/dt at each key in poses per second (one per control pose, >= 0, `null` or `undefined` where free, so that `toDocument()`'s output is accepted back); the retiming is refused where a velocity makes time run backwards. */
+  velocities?: (number | null | undefined)[];
   poses: PoseInput[];
 }
 
