@@ -164,3 +164,34 @@ test(`${BACKEND}: pose numbers are drawn beside the handles and follow the camer
   assert.equal((await near()).layerHidden, true);
   await sb(() => window.screwbender.app.setView('showPoseNumbers', true));
 });
+
+test(`${BACKEND}: the gizmo in the pose's own axes (Q) moves and nudges along them`, async () => {
+  // Pose 2 turned 90° about z: its own x axis is the world's y.
+  const h = Math.SQRT1_2;
+  await setup({ origin: [6, 2, 0.5], rotation: [h, 0, 0, h] });
+  const world = await sb(() => window.screwbender.gizmoOnPage('axis-x'));
+  // Q on the focused view toggles the gizmo's axes (not inside a control).
+  await page.locator('#view').focus();
+  await page.keyboard.press('q');
+  await waitFrames(page, 2);
+  assert.equal(await sb(() => window.screwbender.app.view.gizmoLocal), true);
+  const local = await sb(() => window.screwbender.gizmoOnPage('axis-x'));
+  assert.ok(Math.hypot(local.x - world.x, local.y - world.y) > 10, 'the x arrow did not turn with the pose');
+  // A drag of the local x arrow moves along world y only.
+  const o = await sb(() => window.screwbender.handleOnPage(2));
+  const len = Math.hypot(local.x - o.x, local.y - o.y);
+  await mouseDrag(page, local, (60 * (local.x - o.x)) / len, (60 * (local.y - o.y)) / len);
+  let p = await pose(2);
+  assert.ok(p[1] - 2 > 0.2, `y did not grow: ${p[1]}`);
+  assert.ok(Math.abs(p[0] - 6) < 1e-9 && Math.abs(p[2] - 0.5) < 1e-9, `moved off the local x axis: ${p.slice(0, 3)}`);
+  // An arrow key nudges along the local x axis too (world y), by one 0.25 step.
+  const before = p;
+  await page.locator('#view').focus();
+  await page.keyboard.press('ArrowRight');
+  p = await pose(2);
+  assert.ok(Math.abs(p[1] - before[1] - 0.25) < 1e-9 && Math.abs(p[0] - before[0]) < 1e-9, `nudge ${p.slice(0, 3)} from ${before.slice(0, 3)}`);
+  // Q again: world axes.
+  await page.keyboard.press('q');
+  assert.equal(await sb(() => window.screwbender.app.view.gizmoLocal), false);
+  assert.deepEqual(problems, []);
+});

@@ -58,6 +58,7 @@ export class App {
       showTriads: true,
       /** Pose numbers beside the handles (editor/labels.js). */
       showPoseNumbers: true,
+      gizmoLocal: false, // the gizmo's axes: the world's (false) or the selected pose's own
       showGrid: true,
       snap: false,
       /** The open analysis view ('' = dock closed). */

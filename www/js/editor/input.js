@@ -4,7 +4,7 @@
 // shortcuts (listed in the help overlay of index.html); they act only while the canvas or the
 // page itself has the focus, never inside a control. The part contract is in app.js.
 import { qaxis, qmul, qnormalize } from '../math.js';
-import { SNAP_ROTATE, SNAP_TRANSLATE } from '../view/gizmo.js';
+import { SNAP_ROTATE, SNAP_TRANSLATE, gizmoAxes } from '../view/gizmo.js';
 import { pickPoses } from '../view/picking.js';
 
 export default {
@@ -77,14 +77,17 @@ export default {
     }
 
     /**
-     * The world plane a handle drag moves in: the one facing the camera most (its normal
-     * closest to the view direction), so the pose never changes depth silently; the drag
-     * highlights that plane's square of the gizmo.
+     * The gizmo plane a handle drag of the selected pose moves in: the one facing the camera
+     * most (its normal closest to the view direction; world planes, or the pose's own with the
+     * gizmo in local axes), so the pose never changes depth silently; the drag highlights that
+     * plane's square of the gizmo.
      */
     function facingPlane() {
       const f = app.camera.forward;
+      const axes = gizmoAxes(!!app.view.gizmoLocal, app.motion.pose(app.selected).rotation);
+      const along = (k) => Math.abs(f[0] * axes[k][0] + f[1] * axes[k][1] + f[2] * axes[k][2]);
       let best = 0;
-      for (let k = 1; k < 3; k++) if (Math.abs(f[k]) > Math.abs(f[best])) best = k;
+      for (let k = 1; k < 3; k++) if (along(k) > along(best)) best = k;
       return `plane-${'xyz'[best]}`;
     }
 
@@ -160,21 +163,20 @@ export default {
       if (i < 0) return;
       const pose = app.motion.pose(i);
       const f = fine ? 0.1 : 1;
+      // Along (about) the gizmo's axis: the world's, or the pose's own in local axes.
+      const a = gizmoAxes(!!app.view.gizmoLocal, pose.rotation)[axis];
       let next;
       if (rotate) {
-        const a = [0, 0, 0];
-        a[axis] = 1;
         const dq = qaxis(a, sign * f * SNAP_ROTATE);
         next = { origin: [...pose.origin], rotation: qnormalize(qmul(dq, pose.rotation)) };
       } else {
-        const o = [...pose.origin];
-        o[axis] += sign * f * SNAP_TRANSLATE;
-        next = { origin: o, rotation: [...pose.rotation] };
+        const step = sign * f * SNAP_TRANSLATE;
+        next = { origin: pose.origin.map((x, k) => x + step * a[k]), rotation: [...pose.rotation] };
       }
       app.edit(() => app.motion.setPose(i, next), `key:${rotate ? 'rotate' : 'move'}:${i}`);
     }
 
-    /** Arrow keys and PageUp / PageDown: [world axis, direction]. */
+    /** Arrow keys and PageUp / PageDown: [gizmo axis, direction]. */
     const NUDGE = {
       ArrowRight: [0, 1], ArrowLeft: [0, -1], ArrowUp: [1, 1], ArrowDown: [1, -1], PageUp: [2, 1], PageDown: [2, -1],
     };
@@ -208,6 +210,7 @@ export default {
       else if (k === 'j') app.setScheme('jarek');
       else if (k === 'w' || k === 'W') app.setMode('translate');
       else if (k === 'e' || k === 'E') app.setMode('rotate');
+      else if (k === 'q' || k === 'Q') app.setView('gizmoLocal', !app.view.gizmoLocal);
       else if (k === ' ') app.setPlaying(!app.anim.playing);
       else if (k === 'Delete' || k === 'Backspace') app.deleteSelected();
       else if (k === 'Insert' || k === 'i') app.insertAfterSelected();

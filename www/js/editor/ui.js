@@ -78,6 +78,7 @@ export function buildUi(app) {
     ['showPolygon', 'Control polygon'],
     ['showGrid', 'Grid & axes'],
     ['snap', 'Snap (button, or hold Shift)'],
+    ['gizmoLocal', 'Gizmo in the pose\'s own axes (Q)'],
   ];
   for (const [key, label] of flags) fView.add(viewFlag(key), key).name(label);
 

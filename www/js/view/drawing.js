@@ -10,7 +10,7 @@ import {
   SLOT, LAYER, COLORS, INSTANCE, SEGMENT, MAX_MORPH_STROBE, instances, mix, Segments, poseOf, track, matricesOf,
   gridSegments,
 } from './scene.js';
-import { gizmoGeometry } from './gizmo.js';
+import { gizmoAxes, gizmoGeometry } from './gizmo.js';
 
 /** Size of the cube an imported mesh is scaled to fit (scene units; exports use it as well). */
 export const IMPORT_SIZE = 1.6;
@@ -356,15 +356,16 @@ export class Drawing {
 
   rebuildGizmo(poses) {
     const r = this.viewer.renderer;
-    const { motion, selected, mode, drag, hover } = this.model;
+    const { motion, selected, mode, drag, hover, view } = this.model;
     if (selected < 0 || selected >= motion.poseCount) {
       r.setLines(LAYER.gizmo, new Float32Array(0), true);
       r.setInstances(SLOT.arrow, new Float32Array(0));
       return;
     }
-    const { origin } = poseOf(poses ?? motion.poses(), selected);
+    const { origin, rotation } = poseOf(poses ?? motion.poses(), selected);
     const { dpr } = this.viewer.pixelSize();
-    const g = gizmoGeometry(mode, origin, this.viewer.camera, drag?.part ?? hover, dpr);
+    const axes = gizmoAxes(!!view?.gizmoLocal, rotation);
+    const g = gizmoGeometry(mode, origin, this.viewer.camera, drag?.part ?? hover, dpr, axes);
     r.setLines(LAYER.gizmo, g.segments, true);
     r.setInstances(SLOT.arrow, g.cones);
   }

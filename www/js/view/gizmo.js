@@ -1,6 +1,8 @@
 // The translate / rotate gizmo: drawing (segments + cone instances), screen-space hit testing,
-// and the drag maths. World axes; size constant on screen; snapping to the absolute grid and
-// absolute angles.
+// and the drag maths. World axes or the pose's own (local) axes, as three.js's TransformControls
+// offers both; size constant on screen; in world axes snapping goes to the absolute grid and
+// absolute angles, in local axes to whole steps along (and about) the pose's axes, since the
+// world grid does not lie along them.
 import {
   add, sub, scale, dot, cross, normalize, length, qaxis, qmul, qnormalize, rayPlane, lineRayParam,
   segmentDistance2, poseMatrix,
@@ -8,6 +10,20 @@ import {
 import { COLORS, Segments, circle, INSTANCE } from './scene.js';
 
 const AXES = [[1, 0, 0], [0, 1, 0], [0, 0, 1]];
+
+/**
+ * The gizmo's three axes: the world's, or with `local` the pose's own I, J, K (the columns of
+ * its rotation; `rotation` is a unit quaternion [w, x, y, z]).
+ */
+export function gizmoAxes(local, rotation) {
+  if (!local || !rotation) return AXES;
+  const [w, x, y, z] = rotation;
+  return [
+    [1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)],
+    [2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)],
+    [2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)],
+  ];
+}
 const AXIS_COLORS = [COLORS.x, COLORS.y, COLORS.z];
 const NAMES = ['x', 'y', 'z'];
 /** Snapping steps (Shift held): translation in scene units, rotation in radians. */
@@ -32,7 +48,8 @@ const PLANE_HIDE_COS = 0.2;
  * edge-on (an arrow pointing at the eye, a square seen from its side) are left out: they would
  * be a dot or a line that grabs the wrong motion.
  */
-function parts(mode, c, s, camera) {
+function parts(mode, c, s, camera, axes = AXES) {
+  const AXES = axes;
   const out = [];
   const view = normalize(sub(c, camera.eye));
   if (mode === 'translate') {
@@ -55,16 +72,16 @@ function parts(mode, c, s, camera) {
 }
 
 /** Segments and arrow-head instances of the gizmo at pose centre c. */
-export function gizmoGeometry(mode, c, camera, hover, dpr) {
+export function gizmoGeometry(mode, c, camera, hover, dpr, axes = AXES) {
   const s = gizmoSize(camera, c);
   const seg = new Segments();
   const cones = [];
-  for (const p of parts(mode, c, s, camera)) {
+  for (const p of parts(mode, c, s, camera, axes)) {
     const hot = p.part === hover;
     const col = hot ? COLORS.hover : p.i >= 0 ? AXIS_COLORS[p.i] : [0.35, 0.37, 0.42];
     if (p.kind === 'axis') {
       seg.push(p.points[0], p.points[1], col, (hot ? 5 : 3.5) * dpr);
-      cones.push({ at: p.points[1], axis: AXES[p.i], col, r: s * 0.065, h: s * 0.2 });
+      cones.push({ at: p.points[1], axis: axes[p.i], col, r: s * 0.065, h: s * 0.2 });
     } else if (p.kind === 'plane') {
       seg.polyline(p.points, true, col, (hot ? 3.5 : 2.2) * dpr, 0.95);
       // Hatch the square so it reads as a surface.
@@ -106,12 +123,12 @@ function inPolygon(pt, poly) {
 }
 
 /** The gizmo part under CSS pixel `pt`, or null. */
-export function hitGizmo(mode, c, camera, vp, w, h, pt) {
+export function hitGizmo(mode, c, camera, vp, w, h, pt, axes = AXES) {
   const s = gizmoSize(camera, c);
   let best = null;
   let bestD = HIT_PX;
   let inside = null;
-  for (const p of parts(mode, c, s, camera)) {
+  for (const p of parts(mode, c, s, camera, axes)) {
     const sp = p.points.map((q) => project(vp, q, w, h));
     if (sp.some((q) => q === null)) continue;
     if (p.kind === 'plane') {
@@ -132,9 +149,9 @@ export function hitGizmo(mode, c, camera, vp, w, h, pt) {
 }
 
 /** A CSS-pixel point on a gizmo part (for tests): the tip region of an axis, a point of a ring. */
-export function gizmoPoint(mode, part, c, camera, vp, w, h) {
+export function gizmoPoint(mode, part, c, camera, vp, w, h, axes = AXES) {
   const s = gizmoSize(camera, c);
-  const p = parts(mode, c, s, camera).find((q) => q.part === part);
+  const p = parts(mode, c, s, camera, axes).find((q) => q.part === part);
   if (!p) return null;
   let world;
   if (p.kind === 'axis') world = add(p.points[0], scale(sub(p.points[1], p.points[0]), 0.7));
@@ -163,15 +180,23 @@ const snap = (x, step) => Math.round(x / step) * step;
  * Starts a drag of `part` for the pose {origin, rotation}; returns an object whose
  * `move(ray, pt, snapOn)` gives the new pose, or null when the drag cannot start.
  */
-export function startDrag(part, pose, camera, ray, pt) {
+export function startDrag(part, pose, camera, ray, pt, local = false) {
   const c0 = pose.origin;
   const q0 = pose.rotation;
-  // Snapping is absolute: a moved coordinate lands on the world grid (multiples of
-  // SNAP_TRANSLATE), whatever it was when the drag started; coordinates the drag does not move stay.
-  const translate = (delta, snapOn) => ({
-    origin: c0.map((x, k) => (snapOn && Math.abs(delta[k]) > 1e-12 ? snap(x + delta[k], SNAP_TRANSLATE) : x + delta[k])),
-    rotation: q0,
-  });
+  const AXES = gizmoAxes(local, q0);
+  // In world axes snapping is absolute: a moved coordinate lands on the world grid (multiples of
+  // SNAP_TRANSLATE), whatever it was when the drag started; coordinates the drag does not move
+  // stay. In local axes the displacement along each of the pose's axes is a whole number of steps.
+  const translate = (delta, snapOn) => {
+    if (snapOn && local) {
+      const moved = AXES.reduce((acc, a) => add(acc, scale(a, snap(dot(delta, a), SNAP_TRANSLATE))), [0, 0, 0]);
+      return { origin: add(c0, moved), rotation: q0 };
+    }
+    return {
+      origin: c0.map((x, k) => (snapOn && Math.abs(delta[k]) > 1e-12 ? snap(x + delta[k], SNAP_TRANSLATE) : x + delta[k])),
+      rotation: q0,
+    };
+  };
   // A turn about a world axis snaps the pose's angle about that axis (its twist, the angle of
   // the rotation's component about the axis) to multiples of SNAP_ROTATE.
   const twist = (axis) => 2 * Math.atan2(dot(axis, [q0[1], q0[2], q0[3]]), q0[0]);
@@ -217,7 +242,7 @@ export function startDrag(part, pose, camera, ray, pt) {
             if (!h) return null;
             const v = sub(h, c0);
             const angle = Math.atan2(dot(a, cross(v0, v)), dot(v0, v));
-            return rotate(a, angle, snapOn);
+            return rotate(a, angle, snapOn, !local);
           },
         };
       }
@@ -229,7 +254,7 @@ export function startDrag(part, pose, camera, ray, pt) {
         const tangent = normalize(cross(a, camera.forward));
         const d = [p[0] - pt[0], p[1] - pt[1]];
         const along = d[0] * dot(tangent, right) - d[1] * dot(tangent, up);
-        return rotate(a, along * 0.012, snapOn);
+        return rotate(a, along * 0.012, snapOn, !local);
       },
     };
   }

@@ -3,7 +3,7 @@
 // API and the analysis views' labels use). Plain functions of a Viewer.
 import { raySphere } from '../math.js';
 import { poseOf } from './scene.js';
-import { hitGizmo, gizmoPoint, project, startDrag } from './gizmo.js';
+import { hitGizmo, gizmoAxes, gizmoPoint, project, startDrag } from './gizmo.js';
 
 /** CSS-pixel position of a pointer event relative to the canvas. */
 export function local(viewer, e) {
@@ -53,8 +53,13 @@ export function gizmoHit(viewer, pt) {
   const { motion, selected, mode } = viewer.model;
   if (selected < 0 || !viewer.vp) return null;
   const { cssW, cssH } = viewer.pixelSize();
-  const { origin } = motion.pose(selected);
-  return hitGizmo(mode, origin, viewer.camera, viewer.vp, cssW, cssH, pt);
+  const { origin, rotation } = motion.pose(selected);
+  return hitGizmo(mode, origin, viewer.camera, viewer.vp, cssW, cssH, pt, gizmoAxes(isLocal(viewer), rotation));
+}
+
+/** Whether the gizmo uses the pose's own axes (the model's `view.gizmoLocal`). */
+function isLocal(viewer) {
+  return !!viewer.model.view?.gizmoLocal;
 }
 
 /**
@@ -63,7 +68,7 @@ export function gizmoHit(viewer, pt) {
  * (see gizmo.js).
  */
 export function startGizmoDrag(viewer, part, pose, pt) {
-  return startDrag(part, pose, viewer.camera, ray(viewer, pt), pt);
+  return startDrag(part, pose, viewer.camera, ray(viewer, pt), pt, isLocal(viewer));
 }
 
 /** Page position (CSS px) of scene point p, or null behind the camera. */
@@ -85,8 +90,8 @@ export function screenOfGizmo(viewer, part) {
   const { motion, selected, mode } = viewer.model;
   if (selected < 0) return null;
   const { cssW, cssH } = viewer.pixelSize();
-  const { origin } = motion.pose(selected);
-  const p = gizmoPoint(mode, part, origin, viewer.camera, viewer.camera.viewProj(), cssW, cssH);
+  const { origin, rotation } = motion.pose(selected);
+  const p = gizmoPoint(mode, part, origin, viewer.camera, viewer.camera.viewProj(), cssW, cssH, gizmoAxes(isLocal(viewer), rotation));
   const r = viewer.canvas.getBoundingClientRect();
   return p ? { x: p[0] + r.left, y: p[1] + r.top } : null;
 }
