@@ -12,6 +12,15 @@ import {
 } from './scene.js';
 import { gizmoAxes, gizmoGeometry } from './gizmo.js';
 
+
+/**
+ * The trajectories' line style — colour, width (device pixels), alpha and depth bias — defined
+ * once for the full rebuild and for the drag session, which draws the same lines in wasm.
+ */
+function trajectoryLine(dpr) {
+  return { color: COLORS.trajectory, width: 2 * dpr, alpha: 0.92, bias: 0.002 };
+}
+
 /** Size of the cube an imported mesh is scaled to fit (scene units; exports use it as well). */
 export const IMPORT_SIZE = 1.6;
 /** The preset of the paper's bunny example, its mesh (vendored by scripts/serve.d/30-bunny.sh) and
@@ -22,7 +31,7 @@ const BUNNY_SIZE = 1.2;
 /** Scale of the control-pose and animated objects relative to the strobe (avoids z-fighting). */
 const CONTROL_SCALE = 1.01;
 
-/** Named objects (mirrors named_shape in src/web/render/mod.rs) with body points to trace. */
+/** Named objects (mirrors named_shape in crates/screwbender-web/src/render/mod.rs) with body points to trace. */
 const OBJECT_POINTS = {
   bar: [[0, 0, 0], [2, 0, 0]],
   block: [[0, 0, 0], [0.6, 0.3, 0.2]],
@@ -145,7 +154,8 @@ export class Drawing {
     const seg = new Segments();
     if (v.showTrajectories) {
       const refined = m.subdivide();
-      for (const p of this.bodyPoints()) seg.polyline(track(refined, p), closed, COLORS.trajectory, 2 * dpr, 0.92, 0.002);
+      const line = trajectoryLine(dpr);
+      for (const p of this.bodyPoints()) seg.polyline(track(refined, p), closed, line.color, line.width, line.alpha, line.bias);
     }
     r.setLines(LAYER.trajectories, seg.array(), false);
 
@@ -288,7 +298,7 @@ export class Drawing {
   }
 
   /**
-   * A DragSession (src/web/render/local_update.rs) mirroring the motion, so that drag steps
+   * A DragSession (crates/screwbender-web/src/render/local_update.rs) mirroring the motion, so that drag steps
    * re-subdivide only the moved pose's influence window and refresh only the strobe instances
    * and trajectory segments that depend on it. Null when the session cannot be built (a
    * warning says so); then drags rebuild everything.
@@ -300,12 +310,13 @@ export class Drawing {
     try {
       const { dpr } = this.viewer.pixelSize();
       const points = v.showTrajectories ? this.bodyPoints().flat() : [];
+      const line = trajectoryLine(dpr);
       return new this.viewer.wasm.DragSession(
         motion,
         v.showStrobe ? v.strobe : 0,
         Float32Array.from([...COLORS.strobeA, ...COLORS.strobeB]),
         Float64Array.from(points),
-        Float32Array.from([...COLORS.trajectory, 0.92, 2 * dpr, 0.002]),
+        Float32Array.from([...line.color, line.alpha, line.width, line.bias]),
       );
     } catch (err) {
       this.viewer.warn(`live update unavailable: ${err.message}`);

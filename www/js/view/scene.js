@@ -1,7 +1,7 @@
 // Builds the renderer's instance and segment arrays from the motion (typed arrays only).
 import { add, hexLinear, poseMatrix, qrot, scale, cross, normalize, dot } from '../math.js';
 
-/** Floats per mesh instance (matrix + RGBA) and per line segment (see src/web/render/mod.rs). */
+/** Floats per mesh instance (matrix + RGBA) and per line segment (see crates/screwbender-web/src/render/gpu.rs). */
 export const INSTANCE = 20;
 export const SEGMENT = 12;
 
