@@ -113,7 +113,13 @@ for (const [layout, viewport] of Object.entries(LAYOUTS)) {
       await page.locator('#panel .lil-gui.lil-root > .lil-title').tap();
       await page.evaluate(() => window.screwbender.app.ui.gui.folders[0].open());
       assert.equal(await page.evaluate(() => window.screwbender.app.ui.gui._closed), false, 'a tap on the title did not open the panel');
-      const panel = await controls(page, '#panel');
+      // lil-gui opens a folder over animation frames: wait until its controls are laid out (a
+      // loaded software renderer can delay those frames) before measuring them.
+      let panel = await controls(page, '#panel');
+      for (let k = 0; k < 100 && panel.length < 8; k++) {
+        await page.waitForTimeout(50);
+        panel = await controls(page, '#panel');
+      }
       assert.ok(panel.length >= 8, `${panel.length} controls in the open panel`);
       const pbox = await page.locator('#panel').boundingBox();
       onScreen([{ name: '#panel', x: pbox.x, y: pbox.y, r: pbox.x + pbox.width, b: pbox.y + pbox.height }], viewport, 'panel');
