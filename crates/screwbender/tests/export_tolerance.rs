@@ -9,12 +9,13 @@ wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
 #[cfg(target_arch = "wasm32")]
 use wasm_bindgen_test::wasm_bindgen_test as test;
 
+mod support;
+
 use glam::{DMat3, DQuat, DVec3};
-use gltf_json as json;
 use screwbender::mesh::Mesh;
 use screwbender::{
-    export_motion, mesh_radius, scenes, split_glb, ExportFormat, ExportSettings, Motion,
-    MotionDocument, Pose, Rules, SamplingMode, ScrewBender, Subdivision, Timing, DEFAULT_TOLERANCE,
+    export_motion, mesh_radius, scenes, ExportFormat, ExportSettings, Motion, MotionDocument, Pose,
+    Rules, SamplingMode, ScrewBender, Subdivision, Timing, DEFAULT_TOLERANCE,
 };
 
 /// Allowance on top of the tolerance for the `f32` storage of glTF keyframes: value rounding
@@ -25,35 +26,6 @@ const F32_SLACK: f64 = 1e-5;
 
 /// Probes per keyframe interval (the ends included).
 const PROBES: usize = 6;
-
-/// The object animation's keyframes read back from the GLB (`f32` as stored).
-fn glb_keyframes(glb: &[u8]) -> (Vec<f64>, Vec<Pose>) {
-    let (text, bin) = split_glb(glb).unwrap();
-    let bin = bin.unwrap();
-    let root = json::Root::from_slice(text).unwrap();
-    let read = |acc: json::Index<json::Accessor>| -> Vec<f64> {
-        let acc = &root.accessors[acc.value()];
-        let view = &root.buffer_views[acc.buffer_view.unwrap().value()];
-        let start = view.byte_offset.map_or(0, |o| o.0 as usize);
-        bin[start..start + view.byte_length.0 as usize]
-            .chunks_exact(4)
-            .map(|b| f32::from_le_bytes(b.try_into().unwrap()) as f64)
-            .collect()
-    };
-    let anim = &root.animations[0];
-    let times = read(anim.samplers[0].input);
-    let t = read(anim.samplers[0].output);
-    let r = read(anim.samplers[1].output);
-    let poses = (0..times.len())
-        .map(|k| {
-            Pose::new(
-                DVec3::new(t[3 * k], t[3 * k + 1], t[3 * k + 2]),
-                DQuat::from_xyzw(r[4 * k], r[4 * k + 1], r[4 * k + 2], r[4 * k + 3]),
-            )
-        })
-        .collect();
-    (times, poses)
-}
 
 /// The CSV's `(t, pose)` rows (header `t,u,x,y,z,qw,qx,qy,qz`).
 fn csv_keyframes(text: &str) -> (Vec<f64>, Vec<Pose>) {
@@ -167,7 +139,7 @@ fn every_preset_uniform_and_timed_meets_the_tolerance_at_its_vertices() {
                         (t, p, 0.0, 0.0)
                     }
                     _ => {
-                        let (t, p) = glb_keyframes(&out.data);
+                        let (t, p) = support::glb_keyframes(&out.data, 0);
                         (t, p, F32_SLACK, t0)
                     }
                 };
