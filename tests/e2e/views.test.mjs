@@ -132,6 +132,7 @@ test(`${BACKEND}: Timing retimes the plots; bad times are refused and change not
   await inputs.nth(2).fill('0.5');
   await inputs.nth(2).dispatchEvent('change');
   assert.match(await page.locator('#dock section[data-view=timing] [role=status]').textContent(), /times\[2\]/);
+  assert.equal(await inputs.nth(2).inputValue(), '2', 'a refused time shows the time in use again');
   assert.equal(await sb(() => JSON.stringify(window.screwbender.session())), s0);
   // The plots run over the new duration.
   await page.locator('#dock .tabs button[data-view=plots]').click();

@@ -69,9 +69,8 @@ class TimingView {
     this.apply(t);
   }
 
-  update() {
-    const m = this.app.motion;
-    const times = this.current();
+  /** Refills the table: one number input per time, the span to the previous one beside it. */
+  fillTable(m, times) {
     const rows = [el('tr', {}, el('th', {}, 'pose'), el('th', {}, 'time (s)'), el('th', {}, 'span (s)'))];
     times.forEach((t, i) => {
       const input = el('input', {
@@ -82,15 +81,30 @@ class TimingView {
           next[i] = Number(input.value);
           if (!Number.isFinite(next[i])) {
             this.message.textContent = `Not applied: time ${i} is not a number.`;
+            this.message.classList.add('error');
+          } else if (this.apply(next)) {
             return;
           }
-          this.apply(next);
+          // Refused: the input shows the time still in use again, the message says why.
+          input.value = String(t);
         },
       });
       const label = i < m.poseCount ? String(i) : '0 (again, end of cycle)';
       rows.push(el('tr', {}, el('td', {}, label), el('td', {}, input), el('td', {}, i > 0 ? fmt(t - times[i - 1]) : '–')));
     });
     this.table.replaceChildren(...rows);
+  }
+
+  update() {
+    const m = this.app.motion;
+    const times = this.current();
+    // Rebuild the table only when the times change: a rebuild between a user's typing and the
+    // input's `change` event would throw the typed value away with the old input.
+    const key = `${m.poseCount}|${m.closed}|${times.join(',')}`;
+    if (key !== this.tableKey) {
+      this.tableKey = key;
+      this.fillTable(m, times);
+    }
     if (this.chart) {
       const d = timingMap(times, m.poseCount, m.closed, 400);
       const t = [];
