@@ -60,11 +60,17 @@ EXPORT OPTIONS (also --scheme, --s, --rules, --levels, --open as above):
                      (default 1e-4 scene units); the keyframe count adapts per screw span
   --fps F            fixed-rate keyframes instead (F per second)
   --times T0,T1,...  time of each control pose (a cycle also gives the time pose 0 returns);
-                     default 1 s per control span
+                     default: the document's own times, else 1 s per control span
+  --velocities V0,V1,...
+                     rate of the motion parameter at each control pose (poses per second,
+                     >= 0), '-' for a free key (e.g. -,0.5,-); default: the document's own
+  --radius R         the tolerance holds at object points up to R from its origin (default:
+                     the preset's mesh, else the placeholder box)
   --point x,y,z      csv: trajectory t,u,x,y,z of this body point (default: poses
                      t,u,x,y,z,qw,qx,qy,qz)
   --control-nodes    glb/gltf: also one empty node per control pose
-  --verbose          one summary line (sample count) on standard error
+  --verbose, -v      one summary line (sample count) on standard error
+  -o, --output OUT   where to write (see above)
 The glTF asset animates the object (the preset's shape, else a box) and an empty node
 'control poses' whose keyframes are the control poses; 'import' reads that node back.
 
@@ -73,11 +79,18 @@ IMPORT OPTIONS:
                      if present, else the first animated node)
   --nodes A,B,...    the static transforms of these nodes instead
   --open             an open sequence (default: a cycle when the last pose repeats the first)
+  -o, --output OUT   write the document to OUT instead of standard output
+  --verbose, -v      the pose count kept on standard error
+  --reduce every:K   keep every K-th pose (for dense keyframes, e.g. a sampled CSV)
+  --reduce fit:TOL[:RADIUS]
+                     keep the fewest poses whose polyscrew stays within TOL of the given poses
+                     (at points up to RADIUS from the origin; default 0: the origin)
 CSV input: x,y,z,qw,qx,qy,qz per line; optional header (any column order), '#' comments.
 
 FILE is a JSON motion document (default: standard input, also '-'):
   {\"closed\": true, \"poses\": [{\"origin\": [x,y,z], \"rotation\": [w,x,y,z]}, ...]}
-a pose may give \"basis\": [I, J, K] (column vectors) instead of \"rotation\".
+a pose may give \"basis\": [I, J, K] (column vectors) instead of \"rotation\"; optional
+\"times\": [T0, ...] and \"velocities\": [V0 or null, ...] as --times / --velocities.
 Quaternions are [w, x, y, z], scalar first; angles in radians; frames right-handed.
 
 EXAMPLE:

@@ -131,6 +131,35 @@ fn eval_and_screw() {
     assert!((p.rotation.to_axis_angle().1 - std::f64::consts::FRAC_PI_4).abs() < 1e-12);
 }
 
+/// Every `--flag` the argument parsers match on (`"--flag" =>` in the CLI's sources) is described
+/// in `--help`: a flag added without its help line fails here.
+#[test]
+fn help_names_every_flag() {
+    let help = run(&["--help"], "").stdout;
+    let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut flags = Vec::new();
+    for entry in std::fs::read_dir(&src).unwrap() {
+        let text = std::fs::read_to_string(entry.unwrap().path()).unwrap();
+        for piece in text.split('"').skip(1).step_by(2) {
+            let is_flag = piece.len() > 2
+                && piece.starts_with("--")
+                && piece[2..]
+                    .chars()
+                    .all(|c| c.is_ascii_lowercase() || c == '-');
+            if is_flag && text.contains(&format!("\"{piece}\" =>")) {
+                flags.push(piece.to_string());
+            }
+        }
+    }
+    assert!(flags.len() >= 20, "found only {flags:?}");
+    for flag in &flags {
+        assert!(
+            help.contains(flag.as_str()),
+            "{flag} is accepted but not in --help"
+        );
+    }
+}
+
 #[test]
 fn help_version_and_presets() {
     let out = run(&["--help"], "");
