@@ -11,7 +11,17 @@
 // entries of view/scene.js), so a hidden view costs nothing. No inline `style` attributes in
 // markup (the page's CSP refuses them): set styles through `element.style`, or give colour
 // swatches a `data-color` attribute.
+//
+// The tabs stay in one row: those that do not fit go to a "More views" menu (the open view's
+// tab is always in the row); arrow keys move between views in the tab list. While the dock
+// covers part of the window, the 3-D view's canvas takes the largest free part beside it
+// (fitView), so the scene is framed where it can be seen. Charts (views/plot.js) get their
+// playhead from playback, and hovering a chart shows that instant's pose (preview).
 import { VIEWS } from '../views/index.js';
+import { setPlayheadSource } from '../views/plot.js';
+
+/** The smallest free part of the window (CSS px) the 3-D view moves into beside the dock. */
+const MIN_FREE = { width: 240, height: 200 };
 
 export class Dock {
   constructor(app) {
@@ -28,16 +38,24 @@ export class Dock {
       tab.textContent = d.title;
       tab.title = d.hint ?? d.title;
       tab.dataset.view = d.id;
+      tab.id = `dock-tab-${d.id}`;
       tab.setAttribute('role', 'tab');
+      tab.setAttribute('aria-selected', 'false');
+      tab.setAttribute('aria-controls', `dock-view-${d.id}`);
       tab.onclick = () => this.app.openView(this.active === d.id ? '' : d.id);
       this.tabs.append(tab);
       const el = document.createElement('section');
       el.className = `view view-${d.id}`;
+      el.id = `dock-view-${d.id}`;
       el.dataset.view = d.id;
+      el.setAttribute('role', 'tabpanel');
+      el.setAttribute('aria-labelledby', tab.id);
       el.hidden = true;
       this.body.append(el);
       this.views.set(d.id, { d, el, tab, instance: null });
     }
+    this.tabs.addEventListener('keydown', (e) => this.tabKey(e));
+    this.buildMenu();
     this.root.querySelector('.close').onclick = () => this.app.openView('');
     // Colour swatches written as markup carry `data-color`: the page's Content-Security-Policy
     // refuses inline style attributes, so the colour is applied through the CSSOM instead.
@@ -47,6 +65,207 @@ export class Dock {
     new MutationObserver((records) => {
       for (const r of records) for (const n of r.addedNodes) if (n.nodeType === 1) paint(n.parentElement ?? n);
     }).observe(this.body, { childList: true, subtree: true });
+    // A new window size: the tabs and the free part of the window change.
+    let relayout = 0;
+    window.addEventListener('resize', () => {
+      cancelAnimationFrame(relayout);
+      relayout = requestAnimationFrame(() => {
+        if (!this.active) return;
+        this.layoutTabs();
+        this.fitView();
+      });
+    });
+    this.saved = null;
+    setPlayheadSource(() => this.playhead());
+  }
+
+  // ------------------------------------------------------------------ tabs in one row
+
+  /** The "More views" button and its menu (the tabs that do not fit the row). */
+  buildMenu() {
+    const more = document.createElement('button');
+    more.type = 'button';
+    more.className = 'more';
+    more.textContent = 'More ▾';
+    more.setAttribute('aria-label', 'More analysis views');
+    more.setAttribute('aria-haspopup', 'menu');
+    more.setAttribute('aria-expanded', 'false');
+    more.hidden = true;
+    const menu = document.createElement('div');
+    menu.className = 'tab-menu';
+    menu.setAttribute('role', 'menu');
+    menu.setAttribute('aria-label', 'More analysis views');
+    menu.hidden = true;
+    this.tabs.after(more, menu);
+    this.more = more;
+    this.menu = menu;
+    more.onclick = () => this.toggleMenu(menu.hidden);
+    more.addEventListener('keydown', (e) => {
+      if (e.key === 'ArrowDown' || e.key === 'ArrowUp') {
+        e.preventDefault();
+        this.toggleMenu(true);
+      }
+    });
+    menu.addEventListener('keydown', (e) => {
+      const items = [...menu.querySelectorAll('[role=menuitem]')];
+      const k = items.indexOf(document.activeElement);
+      if (e.key === 'ArrowDown' || e.key === 'ArrowUp') {
+        e.preventDefault();
+        const n = items.length;
+        items[(k + (e.key === 'ArrowDown' ? 1 : n - 1)) % n]?.focus();
+      } else if (e.key === 'Home' || e.key === 'End') {
+        e.preventDefault();
+        items[e.key === 'Home' ? 0 : items.length - 1]?.focus();
+      } else if (e.key === 'Escape') {
+        e.preventDefault();
+        e.stopPropagation();
+        this.toggleMenu(false);
+        more.focus();
+      } else if (e.key === 'Tab') this.toggleMenu(false);
+    });
+    // A press anywhere else closes the menu.
+    document.addEventListener('pointerdown', (e) => {
+      if (!menu.hidden && !menu.contains(e.target) && e.target !== more) this.toggleMenu(false);
+    });
+  }
+
+  /** Opens (with the focus on its first item) or closes the overflow menu. */
+  toggleMenu(open) {
+    this.menu.hidden = !open;
+    this.more.setAttribute('aria-expanded', String(open));
+    if (open) this.menu.querySelector('[role=menuitem]')?.focus();
+  }
+
+  /** Arrow keys, Home and End in the tab list open the next / previous / first / last view. */
+  tabKey(e) {
+    const ids = [...this.views.keys()];
+    const k = ids.indexOf(e.target.dataset?.view);
+    if (k < 0) return;
+    const n = ids.length;
+    const to = { ArrowRight: (k + 1) % n, ArrowLeft: (k + n - 1) % n, Home: 0, End: n - 1 }[e.key];
+    if (to === undefined) return;
+    e.preventDefault();
+    e.stopPropagation();
+    this.app.openView(ids[to]);
+    this.views.get(ids[to]).tab.focus();
+  }
+
+  /**
+   * Keeps the tabs in one row: every tab that fits is shown in order (the open view's first),
+   * the rest go to the "More views" menu.
+   */
+  layoutTabs() {
+    const all = [...this.views.values()];
+    for (const v of all) v.tab.hidden = false;
+    this.more.hidden = true;
+    const fits = () => this.tabs.scrollWidth <= this.tabs.clientWidth + 1;
+    const hidden = [];
+    if (!fits()) {
+      this.more.hidden = false;
+      const gap = parseFloat(getComputedStyle(this.tabs).columnGap) || 0;
+      let room = this.tabs.clientWidth;
+      const active = this.active ? this.views.get(this.active) : null;
+      if (active) room -= active.tab.offsetWidth + gap;
+      for (const v of all) {
+        if (v === active) continue;
+        const w = v.tab.offsetWidth + gap;
+        if (w <= room && hidden.length === 0) room -= w;
+        else hidden.push(v);
+      }
+      for (const v of hidden) v.tab.hidden = true;
+    }
+    this.menu.replaceChildren(
+      ...hidden.map((v) => {
+        const item = document.createElement('button');
+        item.type = 'button';
+        item.setAttribute('role', 'menuitem');
+        item.dataset.view = v.d.id;
+        item.textContent = v.d.title;
+        item.title = v.d.hint ?? v.d.title;
+        item.onclick = () => {
+          this.toggleMenu(false);
+          this.app.openView(v.d.id);
+          this.views.get(v.d.id).tab.focus();
+        };
+        return item;
+      }),
+    );
+    if (hidden.length === 0) this.toggleMenu(false);
+  }
+
+  // ------------------------------------------------------------------ the 3-D view beside the dock
+
+  /**
+   * Puts the 3-D view's canvas into the largest part of the window the dock leaves free (left,
+   * right, above or below it), or back to the whole window when the dock is closed or leaves no
+   * usable part. The caller re-frames the scene (app.openView).
+   */
+  fitView() {
+    const c = this.app.canvas;
+    if (!c) return;
+    let free = null;
+    if (this.active) {
+      const d = this.root.getBoundingClientRect();
+      const W = window.innerWidth;
+      const H = window.innerHeight;
+      const parts = [
+        { left: 0, top: 0, width: d.left, height: H },
+        { left: d.right, top: 0, width: W - d.right, height: H },
+        { left: 0, top: 0, width: W, height: d.top },
+        { left: 0, top: d.bottom, width: W, height: H - d.bottom },
+      ].filter((p) => p.width >= MIN_FREE.width && p.height >= MIN_FREE.height);
+      for (const p of parts) if (!free || p.width * p.height > free.width * free.height) free = p;
+    }
+    const s = c.style;
+    if (free) {
+      s.left = `${Math.round(free.left)}px`;
+      s.top = `${Math.round(free.top)}px`;
+      s.width = `${Math.round(free.width)}px`;
+      s.height = `${Math.round(free.height)}px`;
+    } else s.left = s.top = s.width = s.height = '';
+    this.free = free;
+    this.app.viewer?.invalidateSize?.();
+  }
+
+  // ------------------------------------------------------------------ playhead and hover
+
+  /** Playback now: {t (seconds), u (motion parameter)}. */
+  playhead() {
+    const app = this.app;
+    if (typeof app.playhead === 'function') return app.playhead();
+    return { t: app.anim.u, u: app.anim.u };
+  }
+
+  /**
+   * Shows the pose at time `t` (seconds) while a chart is hovered, or (null) the one shown
+   * before. Playback pauses meanwhile; nothing is an edit (no undo entry, nothing saved).
+   */
+  preview(t) {
+    const app = this.app;
+    const anim = app.anim;
+    if (t === null) {
+      const s = this.saved;
+      if (!s) return;
+      this.saved = null;
+      if (typeof app.seekTime === 'function') app.seekTime(s.t);
+      anim.u = s.u;
+      anim.visible = s.visible;
+      anim.playing = s.playing;
+      app.updateAnim();
+      app.requestDraw();
+      return;
+    }
+    if (!Number.isFinite(t) || !app.motion) return;
+    if (!this.saved) this.saved = { ...this.playhead(), visible: anim.visible, playing: anim.playing };
+    anim.playing = false;
+    if (typeof app.seekTime === 'function') app.seekTime(t);
+    else {
+      const [a, b] = app.motion.domain();
+      anim.u = Math.min(b, Math.max(a, t));
+      anim.visible = true;
+      app.updateAnim();
+      app.requestDraw();
+    }
   }
 
   /** Opens view `id` (null closes the dock). Returns the view instance. */
@@ -58,16 +277,23 @@ export class Dock {
       v.tab.classList.remove('on');
       v.instance?.show(false);
     }
+    this.preview(null);
+    this.toggleMenu(false);
+    const was = this.active;
     this.active = id;
     this.root.classList.toggle('open', id !== null);
     document.body.classList.toggle('dock-open', id !== null);
+    for (const [vid, v] of this.views) v.tab.setAttribute('aria-selected', String(vid === id));
     if (id === null) {
+      this.fitView();
       this.app.requestDraw();
       return null;
     }
     const v = this.views.get(id);
     v.el.hidden = false;
     v.tab.classList.add('on');
+    this.layoutTabs();
+    if (was === null || was === undefined) this.fitView();
     if (!v.instance) v.instance = v.d.create(this.app, v.el);
     v.instance.show(true);
     v.instance.update('show');

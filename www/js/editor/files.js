@@ -5,10 +5,11 @@
 // (Motion.exportFile, importMotionFile), so a file written here equals the CLI's. Every import
 // is one undoable edit, and a failed one changes nothing. The functions take the app; the
 // default export is the app's part (see app.js for the part contract).
-import { Motion, importMotionFile } from '../../pkg/screwbender.js';
+import { Motion, importMotionFile, importedMesh } from '../../pkg/screwbender.js';
 import { IMPORT_SIZE } from '../view/drawing.js';
 import { SLOT } from '../view/scene.js';
 import { SESSION_VERSION, MAX_SAVED_MESH } from './session.js';
+import { askReduction, MANY_POSES } from './reduce-dialog.js';
 
 /** Largest file the page reads (the core refuses more than 64 MiB as well). */
 export const MAX_IMPORT_BYTES = 64 << 20;
@@ -111,7 +112,39 @@ export async function importFiles(app, fileList) {
     app.showError(`Import failed, nothing was changed: ${e.message}`);
     return false;
   }
-  return app.importDocument(doc, main.name);
+  // A glTF file's own object comes along (its mesh, if it has one).
+  let mesh = null;
+  if (kind !== 'csv') {
+    try {
+      if (importedMesh(main.name, bytes)) mesh = meshOf('gltf', bytes);
+    } catch {
+      mesh = null; // an animation without a readable mesh: the current object stays
+    }
+  }
+  // Many poses (samples of a motion, e.g. an exported CSV): ask whether to thin them.
+  let kept = null;
+  if (doc.poses.length > MANY_POSES) {
+    const radius = Math.max(1e-3, ...app.bodyPoints().map((p) => Math.hypot(...p)));
+    const choice = await askReduction(doc, main.name, radius);
+    if (!choice) {
+      app.showError(`${main.name}: import cancelled, nothing was changed.`, 'info');
+      return false;
+    }
+    doc = choice.doc;
+    kept = choice.how;
+  }
+  const ok = importDocument(app, doc, main.name, mesh);
+  if (ok && kept) app.showError(`${main.name}: ${kept}.`, 'info');
+  return ok;
+}
+
+/** The session form of a mesh file: OBJ text, or glTF bytes as base64. */
+function meshOf(kind, data) {
+  if (kind !== 'gltf') return { kind: 'obj', data };
+  const bytes = typeof data === 'string' ? new TextEncoder().encode(data) : data;
+  let bin = '';
+  for (let i = 0; i < bytes.length; i += 0x8000) bin += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+  return { kind: 'gltf', data: btoa(bin) };
 }
 
 /** Drop target: the whole window, with a highlight while files hover. */
@@ -172,26 +205,38 @@ function importJson(app, text, fileName = 'JSON') {
   return replaceMotion(app, motion);
 }
 
-/** Imports a motion document (from importMotionFile); the subdivision options are kept. */
-function importDocument(app, doc, fileName) {
+/**
+ * Imports a motion document (from importMotionFile); the subdivision options are kept. `mesh`
+ * (a glTF file's own object, {kind, data}) becomes the object, in the same undoable edit.
+ */
+function importDocument(app, doc, fileName, mesh = null) {
   let motion;
   try {
     motion = new Motion(doc, app.motion.options());
+    // Validated before the edit: a mesh the renderer refuses is left out, not half applied.
+    if (mesh) app.setImportedMesh(SLOT.anim, mesh);
   } catch (e) {
+    if (mesh) app.meshesChanged();
+    motion?.free();
     app.showError(`Import failed, nothing was changed: ${fileName}: ${e.message}`);
     return false;
   }
-  const ok = replaceMotion(app, motion);
+  const ok = replaceMotion(app, motion, mesh);
   if (ok) app.ui?.toast(`${fileName}: ${motion.poseCount} control poses (${motion.closed ? 'cycle' : 'open'})`);
   return ok;
 }
 
 /** Replaces the motion by `motion` as one undoable edit (the view frames the new poses). */
-function replaceMotion(app, motion) {
+function replaceMotion(app, motion, mesh = null) {
   app.edit(() => {
     app.motion.free();
     app.motion = motion;
     app.selected = -1;
+    if (mesh) {
+      app.imported = mesh;
+      app.view.object = 'obj';
+      app.meshesChanged();
+    }
     app.frameAll();
   });
   return true;
@@ -204,13 +249,7 @@ function importMesh(app, kind, data, fileName = 'mesh', failure = null) {
     app.showError(`The mesh file is over ${MAX_MESH_BYTES >> 20} MiB. Nothing was changed.`);
     return false;
   }
-  let mesh;
-  if (kind === 'gltf') {
-    const bytes = typeof data === 'string' ? new TextEncoder().encode(data) : data;
-    let bin = '';
-    for (let i = 0; i < bytes.length; i += 0x8000) bin += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
-    mesh = { kind: 'gltf', data: btoa(bin) };
-  } else mesh = { kind: 'obj', data };
+  const mesh = meshOf(kind, data);
   try {
     // Validate into the animation slot first; on failure nothing changed.
     app.setImportedMesh(SLOT.anim, mesh);
@@ -241,7 +280,7 @@ export default {
       /** Makes the window a drop target (once the page runs). */
       bind: () => bindDrop(app),
       importJson: (text, fileName) => importJson(app, text, fileName),
-      importDocument: (doc, fileName) => importDocument(app, doc, fileName),
+      importDocument: (doc, fileName, mesh) => importDocument(app, doc, fileName, mesh),
       importMesh: (kind, data, fileName, failure) => importMesh(app, kind, data, fileName, failure),
       exportJson: () => exportJson(app),
     };

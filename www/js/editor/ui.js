@@ -227,7 +227,12 @@ export function buildUi(app) {
     for (const c of gui.controllersRecursive()) c.updateDisplay();
     const info = app.sceneInfo;
     const named = app.scenes.find((s) => s.id === app.view.scene);
-    $('scene-title').textContent = named && app.view.object === 'scene' ? presetName(named) : `${info.label} · ${info.figure}`;
+    // A motion from a file (its name is not the preset's) is titled by the file.
+    const fileName = app.motion.name && app.motion.name !== app.view.scene ? app.motion.name : null;
+    const fileScene = fileName && app.scenes.find((s) => s.id === fileName);
+    $('scene-title').textContent = fileName
+      ? (fileScene ? presetName(fileScene) : fileName)
+      : named && app.view.object === 'scene' ? presetName(named) : `${info.label} · ${info.figure}`;
     $('scene-fig').textContent = named ? presetSubtitle(named) : '';
     presetCtrl.name(`Preset: ${named ? presetName(named) : info.label} …`);
     $('scene-desc').textContent = info.description;

@@ -20,20 +20,36 @@ const PRESET_METHODS = {
 };
 const DEFAULT_METHODS = ['fourpoint', 'decoupled', 'slerp'];
 
-/** The metrics rows of the table: [label, tooltip, value of a MetricsRow]. */
+/** Short human names of the methods (table columns, notes); the menus use the core's titles. */
+export const METHOD_NAMES = {
+  polyscrew: 'Polyscrew',
+  bspline: 'B-spline (ScrewBender)',
+  fourpoint: '4-point (ScrewBender)',
+  jarek: 'Jarek (ScrewBender)',
+  slerp: 'SLERP + linear',
+  decoupled: 'Decoupled (Catmull–Rom + Squad)',
+  kks: 'Kim–Kim–Shin',
+  rb: 'Ramamoorthi–Barr',
+  cc0: 'Chaudhry–Cameron C⁰',
+  cc1: 'Chaudhry–Cameron C¹',
+  barr: 'Barr et al.',
+};
+const nameOf = (id) => METHOD_NAMES[id] ?? id;
+
+/** The metrics rows of the table: [label, unit, tooltip, value of a MetricsRow]; lower is better for all. */
 const METRICS = [
-  ['velocity jump', 'Largest jump of a body point’s velocity at the knots', (r) => r.velocity_jump],
-  ['angular velocity jump', 'Largest jump of the angular velocity at the knots (rad per unit)', (r) => r.angular_velocity_jump],
-  ['acceleration jump', 'Largest jump of a body point’s acceleration at the knots', (r) => r.acceleration_jump],
-  ['angular accel. jump', 'Largest jump of the angular acceleration at the knots', (r) => r.angular_acceleration_jump],
-  ['∫|a|² (first point)', 'Integrated squared linear acceleration of the first body point', (r) => r.acceleration_energy[0]],
-  ['∫|a|² (second point)', 'Integrated squared linear acceleration of the second body point', (r) => r.acceleration_energy[1]],
-  ['∫|α|²', 'Integrated squared angular acceleration (4× the covariant acceleration)', (r) => r.angular_acceleration_energy],
-  ['interpolation error', 'Largest distance between a control pose and the motion at its knot', (r) => r.interpolation_error],
-  ['frame dependence', 'Trajectory change when the local frame moves (0: frame-independent)', (r) => r.frame_dependence],
-  ['line error', 'Deviation from an exact straight translation sampled by the poses', (r) => r.line_error],
-  ['circle error', 'Deviation from an exact rotation about a fixed axis', (r) => r.circle_error],
-  ['helix error', 'Deviation from an exact screw (helical) motion', (r) => r.helix_error],
+  ['velocity jump', 'units/span', 'Largest jump of a body point’s velocity at the knots', (r) => r.velocity_jump],
+  ['angular velocity jump', 'rad/span', 'Largest jump of the angular velocity at the knots', (r) => r.angular_velocity_jump],
+  ['acceleration jump', 'units/span²', 'Largest jump of a body point’s acceleration at the knots', (r) => r.acceleration_jump],
+  ['angular accel. jump', 'rad/span²', 'Largest jump of the angular acceleration at the knots', (r) => r.angular_acceleration_jump],
+  ['∫|a|² (first point)', 'units²/span³', 'Integrated squared linear acceleration of the first body point', (r) => r.acceleration_energy[0]],
+  ['∫|a|² (second point)', 'units²/span³', 'Integrated squared linear acceleration of the second body point', (r) => r.acceleration_energy[1]],
+  ['∫|α|²', 'rad²/span³', 'Integrated squared angular acceleration (4× the covariant acceleration)', (r) => r.angular_acceleration_energy],
+  ['interpolation error', 'units + rad', 'Largest distance between a control pose and the motion at its knot', (r) => r.interpolation_error],
+  ['frame dependence', 'units', 'Trajectory change when the local frame moves (0: frame-independent)', (r) => r.frame_dependence],
+  ['line error', 'units', 'Deviation from an exact straight translation sampled by the poses', (r) => r.line_error],
+  ['circle error', 'units', 'Deviation from an exact rotation about a fixed axis', (r) => r.circle_error],
+  ['helix error', 'units', 'Deviation from an exact screw (helical) motion', (r) => r.helix_error],
 ];
 
 class MethodsView {
@@ -45,7 +61,8 @@ class MethodsView {
     root.append(
       el('p', { class: 'note' },
         'Overlay up to three methods on the same control poses: their body-point paths are drawn in the colours below. ',
-        'Metrics are measured on the control poses as in ', el('code', {}, 'screwbender compare'), '.'),
+        'Metrics are measured on the control poses as in ', el('code', {}, 'screwbender compare'), '. ',
+        '↓ Lower is better for every metric; units: scene units, radians and spans of the motion parameter (one per control pose).'),
     );
     this.pickers = el('div', { class: 'row' });
     root.append(this.pickers);
@@ -163,19 +180,19 @@ class MethodsView {
       return;
     }
     const ms = performance.now() - t0;
-    const head = el('tr', {}, el('th', {}, 'metric'));
+    const head = el('tr', {}, el('th', { title: 'Lower is better for every metric' }, 'metric (↓ lower is better)'), el('th', {}, 'unit'));
     ids.forEach((id) => {
       const k = this.selects.findIndex((s) => s.value === id);
-      head.append(el('th', { title: this.all.find((x) => x.id === id)?.title ?? id }, el('span', { class: 'swatch', style: `background:${SLOT_COLORS[k]}` }), id));
+      head.append(el('th', { title: this.all.find((x) => x.id === id)?.title ?? id, 'data-method': id }, el('span', { class: 'swatch', style: `background:${SLOT_COLORS[k]}` }), nameOf(id)));
     });
     this.table.append(head);
-    for (const [label, tip, get] of METRICS) {
-      const row = el('tr', {}, el('td', { title: tip }, label));
+    for (const [label, unit, tip, get] of METRICS) {
+      const row = el('tr', {}, el('td', { title: `${tip}; lower is better` }, label), el('td', {}, unit));
       for (const r of table.rows) row.append(el('td', {}, fmt(get(r))));
       this.table.append(row);
     }
-    const notes = table.rows.flatMap((r) => r.notes.map((n) => `${r.method}: ${n}`));
-    const derivs = table.rows.map((r) => `${r.method}: ${r.derivatives}`).join('; ');
+    const notes = table.rows.flatMap((r) => r.notes.map((n) => `${nameOf(r.method)}: ${n}`));
+    const derivs = table.rows.map((r) => `${nameOf(r.method)}: ${r.derivatives}`).join('; ');
     this.status.textContent =
       `${table.pose_count} control poses, ${table.closed ? 'cycle' : 'open'}; computed in ${ms.toFixed(0)} ms. Derivatives: ${derivs}.` +
       (notes.length ? ` Notes: ${notes.join(' ')}` : '');
@@ -213,9 +230,9 @@ class MethodsView {
     this.barrBox.replaceChildren(
       el('h4', {}, 'Barr et al. (discrete) beside Ramamoorthi–Barr: objective (3)'),
       el('table', {},
-        el('tr', {}, el('th', {}, 'method'), el('th', {}, 'objective'), el('th', {}, 'time')),
-        row('barr', barr.objective, t1 - t0),
-        row('rb', last.objective, t2 - t1)),
+        el('tr', {}, el('th', {}, 'method'), el('th', { title: 'Lower is better' }, 'objective (↓)'), el('th', { title: 'Lower is better' }, 'time (↓)')),
+        row(nameOf('barr'), barr.objective, t1 - t0),
+        row(nameOf('rb'), last.objective, t2 - t1)),
       el('p', { class: 'note' },
         `barr: ${barr.frames} frames, ${barr.iterations} Gauss–Newton steps; rb: ${last.variable_frames} variable frames (fitted twice: before and after optimisation). `,
         `R–B is ${(100 * (last.objective / barr.objective - 1)).toFixed(2)} % above the dense optimum; time ratio barr/rb ${((t1 - t0) / Math.max(t2 - t1, 1e-3)).toFixed(2)}. `,
@@ -248,7 +265,9 @@ class MethodsView {
       this.ccBox.append(el('h4', {}, 'Chaudhry–Cameron: vertices against time'), el('div', { class: 'row' }, this.ccEnd), this.ccInfo);
       this.ccCharts = ['a', 'x', 'y'].map((v) => lineChart(this.ccBox, {
         title: `vertex ${v}`,
-        x: 't',
+        x: 't (key i at t = i)',
+        y: `${v} (units)`,
+        playhead: 'u',
         height: 120,
         series: [
           { label: `${v}.x`, color: '#d55e00' },
@@ -310,6 +329,8 @@ class MethodsView {
       this.chart = lineChart(this.rbBox, {
         title: '|EL(t)| before and after optimisation (log scale)',
         x: 't (keyframe i at t = i)',
+        y: '|EL(t)| (log)',
+        playhead: 'u',
         log: true,
         series: [
           { label: 'initial spline', color: '#999999' },

@@ -2,14 +2,19 @@
 // levels), measured on the refined poses, for the body points of the object.
 import { el, fmt } from './plot.js';
 
+/** Human names of the schemes and rule sets (the panel's words). */
+export const SCHEME_NAMES = { bspline: 'cubic B-spline', fourpoint: '4-point', jarek: 'Jarek', j: 'J_s', polyscrew: 'polyscrew' };
+export const RULE_NAMES = { direct: 'direct rules (V2)', split: 'split & tweak rules (V1)' };
+
+/** The table's rows: label, unit, tooltip, value of a MetricsRow. Every row: lower is better. */
 const ROWS = [
-  ['max velocity jump', 'Largest jump of a body point’s velocity at the knots (differences of refined poses)', (r) => r.velocity_jump],
-  ['max angular velocity jump', 'Largest jump of the angular velocity at the knots', (r) => r.angular_velocity_jump],
-  ['max acceleration jump', 'Largest jump of a body point’s acceleration at the knots', (r) => r.acceleration_jump],
-  ['max angular acceleration jump', 'Largest jump of the angular acceleration at the knots', (r) => r.angular_acceleration_jump],
-  ['∫ |a|² du (each body point)', 'Integrated squared linear acceleration', (r) => r.acceleration_energy.map((v) => fmt(v)).join(' / ')],
-  ['∫ |α|² du', 'Integrated squared angular acceleration', (r) => r.angular_acceleration_energy],
-  ['distance to control poses', 'Largest pose distance (origin + angle) between control pose i and the motion at u = i', (r) => r.interpolation_error],
+  ['max velocity jump', 'units/span', 'Largest jump of a body point’s velocity at the knots (differences of refined poses)', (r) => r.velocity_jump],
+  ['max angular velocity jump', 'rad/span', 'Largest jump of the angular velocity at the knots', (r) => r.angular_velocity_jump],
+  ['max acceleration jump', 'units/span²', 'Largest jump of a body point’s acceleration at the knots', (r) => r.acceleration_jump],
+  ['max angular acceleration jump', 'rad/span²', 'Largest jump of the angular acceleration at the knots', (r) => r.angular_acceleration_jump],
+  ['∫ |a|² du (each body point)', 'units²/span³', 'Integrated squared linear acceleration', (r) => r.acceleration_energy.map((v) => fmt(v)).join(' / ')],
+  ['∫ |α|² du', 'rad²/span³', 'Integrated squared angular acceleration', (r) => r.angular_acceleration_energy],
+  ['distance to control poses', 'units + rad', 'Largest pose distance (origin + angle) between control pose i and the motion at u = i', (r) => r.interpolation_error],
 ];
 
 class MetricsView {
@@ -17,7 +22,9 @@ class MetricsView {
     this.app = app;
     root.append(el('p', { class: 'note' },
       'Measured on the current motion by differences of its refined poses (step: one refined span), at the control-pose knots. ',
-      'Jumps shrink towards 0 as levels increase for a C¹ (velocity) or C² (acceleration) limit.'));
+      'Jumps shrink towards 0 as levels increase for a C¹ (velocity) or C² (acceleration) limit.'),
+    el('p', { class: 'note metrics-legend' },
+      '↓ lower is better for every row. Units: scene units, radians, and spans of the motion parameter u (one span per control pose; 1 s at uniform timing).'));
     this.caption = el('div', { class: 'note' });
     this.table = el('table');
     root.append(this.caption, this.table);
@@ -34,16 +41,16 @@ class MetricsView {
     const ms = performance.now() - t0;
     const o = m.options();
     this.caption.textContent =
-      `${o.scheme}${o.scheme === 'j' ? ` (s = ${o.j})` : ''}, ${o.rules} rules, ${o.levels} levels; body points ` +
+      `${SCHEME_NAMES[o.scheme] ?? o.scheme}${o.scheme === 'j' ? ` (s = ${o.j})` : ''} scheme, ${RULE_NAMES[o.rules] ?? `${o.rules} rules`}, ${o.levels} levels; body points ` +
       `${points.map((p) => `(${p.map((v) => +v.toFixed(3)).join(', ')})`).join(', ')}; ${ms.toFixed(0)} ms.`;
-    const rows = [el('tr', {}, el('th', {}, 'metric'), el('th', {}, 'value'))];
-    for (const [label, tip, get] of ROWS) {
+    const rows = [el('tr', {}, el('th', { title: 'Lower is better for every row' }, 'metric (↓ lower is better)'), el('th', {}, 'value'), el('th', {}, 'unit'))];
+    for (const [label, unit, tip, get] of ROWS) {
       const v = get(row);
-      rows.push(el('tr', {}, el('td', { title: tip }, label), el('td', {}, typeof v === 'string' ? v : fmt(v))));
+      rows.push(el('tr', {}, el('td', { title: `${tip}; lower is better` }, label), el('td', {}, typeof v === 'string' ? v : fmt(v)), el('td', {}, unit)));
     }
     rows.push(el('tr', {},
-      el('td', { title: 'The 4-point scheme interpolates: this is 0 up to rounding, by construction' }, 'max distance 4-point curve ↔ control poses'),
-      el('td', {}, fmt(fourPointGap))));
+      el('td', { title: 'The 4-point scheme interpolates: this is 0 up to rounding, by construction; lower is better' }, 'max distance 4-point curve ↔ control poses'),
+      el('td', {}, fmt(fourPointGap)), el('td', {}, 'units + rad')));
     this.table.replaceChildren(...rows);
     this.last = { row, fourPointGap };
   }

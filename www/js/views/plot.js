@@ -1,20 +1,100 @@
-// Small line charts for the analysis views, on uPlot (vendored in www/vendor/).
+// Small line charts for the analysis views, on uPlot (vendored in www/vendor/): labelled ticks
+// at 1-2-5 steps on both axes, a unit on the y axis, a playhead synced with playback and a hover
+// callback (the dock shows that instant's pose in 3-D).
 import uPlot from '../../vendor/uPlot.esm.js';
 
 /** Distinct colours (colour-blind safe, Okabe–Ito) for series that are not the paper's schemes. */
 export const PALETTE = ['#0072b2', '#d55e00', '#009e73', '#cc79a7', '#e69f00', '#56b4e9', '#000000'];
 
+/** Tick steps 1, 2, 5 × 10^e (the same numbers uPlot knows the decimals of). */
+const NICE_STEPS = [];
+for (let e = -16; e < 16; e++) for (const m of [1, 2, 5]) NICE_STEPS.push(+`${m}e${e}`);
+
+/** Tick labels for tick values `splits` at step `step`: as many decimals as the step needs. */
+export function tickLabels(splits, step) {
+  const a = Math.max(...splits.map(Math.abs));
+  if (a >= 1e5 || (a > 0 && a < 1e-3)) {
+    // Mantissa × 10^e with the exponent of the largest tick and the step's digits: 2e-15, 2.5e-15.
+    const e = Math.floor(Math.log10(a));
+    const dec = Math.min(6, Math.max(0, e - Math.floor(Math.log10(step) + 1e-9)));
+    return splits.map((v) => (Math.abs(v) < step * 1e-9 ? '0' : `${(v / 10 ** e).toFixed(dec)}e${e}`));
+  }
+  const dec = step > 0 ? Math.min(10, Math.max(0, -Math.floor(Math.log10(step) + 1e-9))) : 0;
+  return splits.map((v) => (Math.abs(v) < step * 1e-9 ? 0 : v).toFixed(dec));
+}
+
+/** Where the playhead is: a function () => {t, u} (seconds and motion parameter), or null. */
+let playheadSource = null;
+/** Every live chart with a playhead (see sync()). */
+const charts = new Set();
+let polling = false;
+
 /**
- * A chart in `parent`: `series` = [{label, color, width?, dash?}], `x` the x-axis label.
- * `marks` (x values, e.g. control-pose times) are drawn as thin vertical lines; `legend: false`
- * leaves the legend to the caller (one legend for several charts).
- * Returns {set(x, ys, marks?), setTitle(text), resize(width), destroy(), plot}.
+ * Sets the playhead's source for every chart (the dock does, with the app's playback time).
+ * Charts read it once per animation frame while any exists, and move their playhead only when
+ * it changed.
  */
-export function lineChart(parent, { title, x = 'u', series, height = 150, log = false, legend = true }) {
+export function setPlayheadSource(source) {
+  playheadSource = source;
+  startPolling();
+}
+
+function startPolling() {
+  if (polling || !playheadSource || charts.size === 0) return;
+  polling = true;
+  const tick = () => {
+    if (charts.size === 0) {
+      polling = false;
+      return;
+    }
+    if (!document.hidden) syncPlayheads();
+    requestAnimationFrame(tick);
+  };
+  requestAnimationFrame(tick);
+}
+
+/** Moves every chart's playhead to the source's time now (tests call it to skip a frame). */
+export function syncPlayheads() {
+  if (!playheadSource) return;
+  const at = readPlayhead();
+  if (!at) return;
+  // Hidden charts (another view, the dock closed) catch up when drawn again.
+  for (const c of charts) if (c.box.isConnected && c.box.offsetParent !== null) c.playheadAt(at);
+}
+
+/** The source's playhead, or null when there is none (no motion yet). */
+function readPlayhead() {
+  if (!playheadSource) return null;
+  try {
+    return playheadSource();
+  } catch {
+    return null;
+  }
+}
+
+/**
+ * A chart in `parent`: `series` = [{label, color, width?, dash?}], `x` the x-axis label, `y` the
+ * y-axis label (with its unit). `marks` (x values, e.g. control-pose times) are drawn as thin
+ * vertical lines; `legend: false` leaves the legend to the caller (one legend for several
+ * charts). `playhead`: which playback coordinate the x axis is in ('t' seconds, 'u' the motion
+ * parameter, false: none). `onHover(x | null)`: the pointer is over the plot at x (null: left).
+ * Returns {set(x, ys, marks?), setTitle(text), setYLabel(text), resize(width, height?), ticks(), playheadAt({t, u}),
+ * playheadX, destroy(), plot, box}.
+ */
+export function lineChart(parent, { title, x = 'u', y, series, height = 150, log = false, legend = true, playhead = 't', onHover } = {}) {
   const box = document.createElement('div');
   box.className = 'chart';
   parent.append(box);
   let marks = [];
+  let h = height;
+  let ready = false;
+  /** The tick labels last drawn, per axis (0: x, 1: y). */
+  const labels = [[], []];
+  const values = (axis) => (u, splits, _idx, _space, step) => {
+    const l = axis === 1 && log ? splits.map((v) => fmt(v, 2)) : tickLabels(splits, step);
+    labels[axis] = l;
+    return l;
+  };
   const opts = {
     title,
     width: Math.max(200, parent.clientWidth || 480),
@@ -23,8 +103,11 @@ export function lineChart(parent, { title, x = 'u', series, height = 150, log = 
     legend: { show: legend, live: false },
     cursor: { drag: { x: true, y: false } },
     axes: [
-      { label: x, size: 34, labelSize: 14, font: '11px system-ui', labelFont: '11px system-ui' },
-      { size: 52, font: '11px system-ui' },
+      { label: x, size: 30, labelSize: 14, gap: 2, space: 36, incrs: NICE_STEPS, values: values(0), font: '11px system-ui', labelFont: '11px system-ui' },
+      {
+        label: y, labelSize: y ? 14 : 0, size: 44, gap: 2, space: 12, values: values(1), font: '11px system-ui', labelFont: '11px system-ui',
+        ...(log ? {} : { incrs: NICE_STEPS }),
+      },
     ],
     series: [
       {},
@@ -53,29 +136,82 @@ export function lineChart(parent, { title, x = 'u', series, height = 150, log = 
             ctx.stroke();
           }
           ctx.restore();
+          if (ready) {
+            // A redraw (new data, a resize, shown again) also catches up with the playhead.
+            if (playhead && playheadSource) at = readPlayhead() ?? at;
+            place();
+          }
         },
       ],
     },
   };
   const plot = new uPlot(opts, [[], ...series.map(() => [])], box);
-  return {
+  // The playhead: a line over the plotting area, moved without redrawing the chart.
+  const line = document.createElement('div');
+  line.className = 'playhead';
+  line.hidden = true;
+  plot.over.append(line);
+  let at = null;
+  function place() {
+    const v = at === null ? null : at[playhead];
+    const px = v === null || v === undefined || !Number.isFinite(v) ? NaN : plot.valToPos(v, 'x');
+    const inside = Number.isFinite(px) && px >= 0 && px <= plot.over.clientWidth;
+    line.hidden = !inside;
+    if (inside) line.style.transform = `translateX(${px.toFixed(1)}px)`;
+    chart.playheadX = inside ? v : null;
+  }
+  if (onHover) {
+    plot.over.addEventListener('pointermove', (e) => {
+      const r = plot.over.getBoundingClientRect();
+      const v = plot.posToVal(e.clientX - r.left, 'x');
+      if (Number.isFinite(v)) onHover(v);
+    });
+    plot.over.addEventListener('pointerleave', () => onHover(null));
+  }
+  const chart = {
     plot,
+    box,
+    /** The x value the playhead shows (null: none or outside the plot). */
+    playheadX: null,
     set(xs, ys, newMarks = marks) {
       marks = newMarks;
-      plot.setData([Array.from(xs), ...ys.map((y) => Array.from(y))]);
+      plot.setData([Array.from(xs), ...ys.map((v) => Array.from(v))]);
     },
     setTitle(text) {
       const t = plot.root.querySelector('.u-title');
       if (t) t.textContent = text;
     },
-    resize(width) {
-      plot.setSize({ width: Math.max(200, width), height });
+    /** Sets the y axis's label (drawn with the next data). */
+    setYLabel(text) {
+      if (plot.axes[1]) plot.axes[1].label = text;
+    },
+    resize(width, height = h) {
+      h = height;
+      plot.setSize({ width: Math.max(200, width), height: h });
+    },
+    /** The tick labels last drawn: {x: [...], y: [...]}. */
+    ticks() {
+      return { x: [...labels[0]], y: [...labels[1]] };
+    },
+    /** Moves the playhead to `{t, u}` (only when it changed). */
+    playheadAt(next) {
+      if (!playhead) return;
+      if (at && next && at.t === next.t && at.u === next.u) return;
+      at = next ? { t: next.t, u: next.u } : null;
+      place();
     },
     destroy() {
+      charts.delete(chart);
       plot.destroy();
       box.remove();
     },
   };
+  ready = true;
+  if (playhead) {
+    charts.add(chart);
+    startPolling();
+  }
+  return chart;
 }
 
 /** A number for tables: 0, fixed for moderate magnitudes, else exponential. */

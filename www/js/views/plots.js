@@ -18,14 +18,20 @@ const STRIDE = 16;
 
 const norm = (d, k, o) => Math.hypot(d[k * STRIDE + o], d[k * STRIDE + o + 1], d[k * STRIDE + o + 2]);
 
-/** The charts: title, and the value of sample k of a kinematics array. */
+/** The charts: id, title, y-axis label with its unit, and the value of sample k of a kinematics array. */
 const CHARTS = [
-  ['coord', (axis) => `position ${'xyz'[axis]}`, (d, k, axis) => d[k * STRIDE + 1 + axis]],
-  ['speed', () => 'speed |v|', (d, k) => norm(d, k, 4)],
-  ['accel', () => 'acceleration |a|', (d, k) => norm(d, k, 7)],
-  ['omega', () => 'angular velocity |ω| (rad/s)', (d, k) => norm(d, k, 10)],
-  ['alpha', () => 'angular acceleration |α|', (d, k) => norm(d, k, 13)],
+  ['coord', (axis) => `position ${'xyz'[axis]} of the body point`, (axis) => `${'xyz'[axis]} (units)`, (d, k, axis) => d[k * STRIDE + 1 + axis]],
+  ['speed', () => 'speed |v|', () => '|v| (units/s)', (d, k) => norm(d, k, 4)],
+  ['accel', () => 'acceleration |a|', () => '|a| (units/s²)', (d, k) => norm(d, k, 7)],
+  ['omega', () => 'angular velocity |ω|', () => '|ω| (rad/s)', (d, k) => norm(d, k, 10)],
+  ['alpha', () => 'angular acceleration |α|', () => '|α| (rad/s²)', (d, k) => norm(d, k, 13)],
 ];
+/** Height of a chart's title line (CSS px, style.css `.plot-grid .u-title`). */
+const TITLE_PX = 16;
+/** Gap between charts of the grid (CSS px, style.css `.plot-grid`). */
+const GAP_PX = 6;
+/** A chart is never lower than this (CSS px); below, the dock scrolls. */
+const MIN_CHART_PX = 130;
 
 class PlotsView {
   constructor(app, root) {
@@ -34,26 +40,55 @@ class PlotsView {
     this.axis = 0;
     this.derivatives = 'analytic';
     const pointInputs = [0, 1, 2].map((i) =>
-      el('input', { type: 'number', step: '0.1', value: String(this.point[i]), style: 'width:56px', 'aria-label': `body point ${'xyz'[i]}`, onchange: () => this.readPoint() }),
+      el('input', { type: 'number', step: '0.1', value: String(this.point[i]), style: 'width:48px', 'aria-label': `body point ${'xyz'[i]}`, onchange: () => this.readPoint() }),
     );
     this.pointInputs = pointInputs;
     const axisSel = el('select', { 'aria-label': 'coordinate', onchange: (e) => { this.axis = Number(e.target.value); this.update('edit'); } },
       ...[0, 1, 2].map((a) => el('option', { value: String(a) }, 'xyz'[a])));
     const derivSel = el('select', { 'aria-label': 'derivatives', onchange: (e) => { this.derivatives = e.target.value; this.update('edit'); } },
-      el('option', { value: 'analytic' }, 'analytic (refined polyscrew)'),
-      el('option', { value: 'limit' }, 'differences of refined poses (limit)'));
+      el('option', { value: 'analytic', title: 'Derivatives of the refined polyscrew' }, 'analytic'),
+      el('option', { value: 'limit', title: 'Differences of refined poses (the limit motion)' }, 'limit'));
     root.append(
-      el('div', { class: 'row' }, 'body point (local)', ...pointInputs, 'coordinate', axisSel),
-      el('div', { class: 'row' }, 'derivatives', derivSel),
-      el('p', { class: 'note' },
-        'Same control poses, rules and levels for every curve; only the scheme differs. Dashed lines mark the control-pose times. ',
+      el('div', { class: 'row' },
+        el('span', { title: 'Body point in the object’s local coordinates (scene units)' }, 'point'), ...pointInputs,
+        el('span', { title: 'Coordinate of the body point plotted in the first chart' }, 'plot'), axisSel,
+        el('span', { title: 'How velocities and accelerations are computed' }, 'derivatives'), derivSel),
+      el('details', { class: 'note' },
+        el('summary', {}, 'About these plots (units: scene units, seconds, radians)'),
+        'Same control poses, rules and levels for every curve; only the scheme differs. Dashed lines mark the control-pose times, ',
+        'the solid line is the playhead; hover a plot to see that instant’s pose in 3-D. ',
         'Analytic derivatives are those of the refined polyscrew: its angular velocity is constant on each refined span, so jumps shrink level by level; ',
         'the differences of refined poses approximate the limit motion, as plotted in the paper.'),
     );
-    this.legend = el('div', { class: 'row' }, ...SCHEME_SERIES.map((s) => el('span', {}, el('span', { class: 'swatch', style: `background:${s.color}` }), s.label)));
-    root.append(this.legend);
+    this.legend = el('div', { class: 'row legend' }, ...SCHEME_SERIES.map((s) => el('span', {}, el('span', { class: 'swatch', style: `background:${s.color}` }), s.label)));
+    this.grid = el('div', { class: 'plot-grid' });
+    root.append(this.grid);
     this.root = root;
     this.charts = null;
+    // The dock changed size (window, layout): the charts follow without sampling again.
+    this.resizer = new ResizeObserver(() => this.charts && this.layout());
+    this.resizer.observe(root);
+  }
+
+  /**
+   * Sizes the charts to the dock: two columns when it is wide enough (the legend in the sixth
+   * cell), and heights that fill the dock's height without scrolling (down to MIN_CHART_PX).
+   */
+  layout() {
+    const width = this.root.clientWidth;
+    if (width === 0) return;
+    const cols = width >= 440 ? 2 : 1;
+    const rows = Math.ceil((CHARTS.length + (cols === 2 ? 1 : 0)) / cols);
+    const body = this.root.parentElement;
+    const pad = parseFloat(getComputedStyle(body).paddingBottom) || 0;
+    const room = body.getBoundingClientRect().bottom - pad - this.grid.getBoundingClientRect().top - 2;
+    const h = Math.max(MIN_CHART_PX, Math.floor((room - (rows - 1) * GAP_PX) / rows));
+    const w = Math.floor((width - (cols - 1) * GAP_PX) / cols);
+    this.grid.style.gridTemplateColumns = `repeat(${cols}, ${w}px)`;
+    const key = `${cols}|${w}|${h}`;
+    if (key === this.layoutKey) return;
+    this.layoutKey = key;
+    for (const c of this.charts) c.resize(w, h - TITLE_PX);
   }
 
   readPoint() {
@@ -73,10 +108,15 @@ class PlotsView {
 
   show(on) {
     if (on && !this.charts) {
-      this.charts = CHARTS.map(([id, title]) =>
-        lineChart(this.root, { title: title(this.axis), x: 't (s)', series: SCHEME_SERIES, height: 140, legend: false }),
-      );
-      this.charts.forEach((c, k) => (c.id = CHARTS[k][0]));
+      this.charts = CHARTS.map(([id, title, y]) => {
+        const c = lineChart(this.grid, {
+          title: title(this.axis), x: 't (s)', y: y(this.axis), series: SCHEME_SERIES, height: 140, legend: false,
+          onHover: (t) => this.app.dock.preview(t),
+        });
+        c.id = id;
+        return c;
+      });
+      this.grid.append(this.legend);
     }
   }
 
@@ -108,11 +148,12 @@ class PlotsView {
     const ts = Array.from({ length: SAMPLES }, (_, k) => first[k * STRIDE]);
     const m = this.app.motion;
     const times = this.app.times() ?? Array.from({ length: m.poseCount + (m.closed ? 1 : 0) }, (_, i) => i);
-    CHARTS.forEach(([, title, value], c) => {
+    this.layout();
+    CHARTS.forEach(([, title, y, value], c) => {
       const chart = this.charts[c];
       chart.setTitle(title(this.axis));
+      chart.setYLabel(y(this.axis));
       const ys = SCHEME_SERIES.map((s) => Array.from({ length: SAMPLES }, (_, k) => value(data[s.id], k, this.axis)));
-      chart.resize(this.root.clientWidth - 4);
       chart.set(ts, ys, times);
     });
   }

@@ -1,0 +1,337 @@
+// End-to-end: readable analysis and honest imports. A CSV of many poses asks how to thin it (a
+// modal dialog; Esc changes nothing); the plots have units, labelled 1-2-5 ticks, a playhead
+// that follows playback and a hover that shows that instant's pose in 3-D; Metrics and Methods
+// speak in human names; the dock's tabs stay in one row with an overflow menu, and the 3-D view
+// moves into the part of the window the dock leaves free.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import path from 'node:path';
+import { waitFrames, playgroundPage, ROOT, BACKEND } from './lib.mjs';
+
+const DOCS = path.join(ROOT, 'docs');
+let play;
+let page;
+let problems;
+
+before(async () => {
+  ({ play, page, problems } = await playgroundPage());
+});
+
+after(async () => {
+  await play?.close();
+});
+
+const sb = (f, arg) => page.evaluate(f, arg);
+const session = () => sb(() => JSON.stringify(window.screwbender.session()));
+
+/**
+ * A CSV of `n` poses sampling a cycle (a full turn about z while bobbing up and down); the
+ * first pose is repeated at the end, as exported cycles are, so it reads as a closed motion.
+ */
+function denseCsv(n) {
+  const rows = ['x,y,z,qw,qx,qy,qz'];
+  for (let i = 0; i <= n; i++) {
+    const a = (i / n) * 2 * Math.PI;
+    rows.push(`${3 * Math.cos(a)},${3 * Math.sin(a)},${0.5 * Math.sin(2 * a)},${Math.cos(a / 2)},0,0,${Math.sin(a / 2)}`);
+  }
+  return Buffer.from(rows.join('\n'));
+}
+
+/** Chooses `dense.csv` (200 poses) in the page's file input; resolves once the dialog is open. */
+async function chooseDense() {
+  await page.locator('#any-file').setInputFiles({ name: 'dense.csv', mimeType: 'text/csv', buffer: denseCsv(200) });
+  await page.waitForSelector('#reduce-dialog[open]');
+}
+
+/** Hides the notice and the toast (before a screenshot for the docs). */
+const quiet = () =>
+  sb(() => {
+    document.getElementById('banner').hidden = true;
+    document.getElementById('toast').hidden = true;
+  });
+
+/** The last notice's text once it names `file`. */
+async function noticeAbout(file) {
+  await page.waitForFunction((f) => document.querySelector('#banner .msg')?.textContent.includes(f), file);
+  return page.locator('#banner .msg').textContent();
+}
+
+test(`${BACKEND}: a CSV of 200 poses asks how to import it; Esc changes nothing; every 4th keeps 50; a fit keeps fewer`, async () => {
+  await sb(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  const s0 = await session();
+  // Esc: the dialog closes, nothing changed.
+  await chooseDense();
+  assert.equal(await page.locator('#reduce-dialog').getAttribute('aria-labelledby'), 'reduce-title');
+  assert.match(await page.locator('#reduce-title').textContent(), /200 poses in dense\.csv/);
+  // The dialog is modal: the focus is inside it.
+  assert.ok(await sb(() => document.querySelector('#reduce-dialog').contains(document.activeElement)));
+  await quiet();
+  await page.screenshot({ path: path.join(DOCS, 'csv-reduce.png') });
+  await page.keyboard.press('Escape');
+  await page.waitForSelector('#reduce-dialog', { state: 'detached' });
+  assert.match(await noticeAbout('dense.csv'), /cancelled, nothing was changed/);
+  assert.equal(await session(), s0, 'Esc changed the session');
+  // Every 4th pose: 50 of 200, and the notice says so.
+  await chooseDense();
+  await page.locator('#reduce-every').check();
+  await page.locator('#reduce-k').fill('4');
+  await page.locator('#reduce-dialog button[type=submit]').click();
+  await page.waitForSelector('#reduce-dialog', { state: 'detached' });
+  assert.match(await noticeAbout('kept 50 of 200'), /dense\.csv: kept 50 of 200 poses \(every 4th\)/);
+  assert.equal(await sb(() => window.screwbender.app.motion.poseCount), 50);
+  // One undo brings the previous motion back: the import was one edit.
+  await sb(() => window.screwbender.app.undo());
+  assert.equal(await sb(() => window.screwbender.app.motion.poseCount), 6);
+  // A fit within a tolerance: fewer poses, and the count is shown.
+  await chooseDense();
+  await page.locator('#reduce-fit').check();
+  await page.locator('#reduce-tol').fill('0.01');
+  await page.waitForFunction(() => /→ \d+ control poses/.test(document.querySelector('#reduce-dialog [role=status]').textContent));
+  await page.locator('#reduce-dialog button[type=submit]').click();
+  await page.waitForSelector('#reduce-dialog', { state: 'detached' });
+  const text = await noticeAbout('within 0.01');
+  const kept = Number(text.match(/kept (\d+) of 200/)[1]);
+  assert.equal(await sb(() => window.screwbender.app.motion.poseCount), kept);
+  assert.ok(kept >= 2 && kept < 50, `${kept} poses kept`);
+  // A bad tolerance is refused inside the dialog, which stays open; Cancel then changes nothing.
+  const s1 = await session();
+  await chooseDense();
+  await page.locator('#reduce-fit').check();
+  await page.locator('#reduce-tol').fill('-1');
+  await page.locator('#reduce-dialog button[type=submit]').click();
+  assert.match(await page.locator('#reduce-dialog [role=alert]').textContent(), /tolerance/);
+  assert.ok(await page.locator('#reduce-dialog').isVisible());
+  await page.locator('#reduce-dialog button', { hasText: 'Cancel' }).click();
+  await page.waitForSelector('#reduce-dialog', { state: 'detached' });
+  assert.equal(await session(), s1);
+  // A CSV of few poses imports directly, without the dialog.
+  await page.locator('#any-file').setInputFiles({ name: 'few.csv', mimeType: 'text/csv', buffer: denseCsv(12) });
+  await page.waitForFunction(() => window.screwbender.app.motion.poseCount === 12);
+  assert.equal(await page.locator('#reduce-dialog').count(), 0);
+  assert.deepEqual(problems, []);
+});
+
+test(`${BACKEND}: a dropped glTF sets the title and brings its mesh`, async () => {
+  await sb(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  const bytes = await sb(async () => {
+    const { exportMotion } = await import('./js/editor/files.js');
+    return [...exportMotion(window.screwbender.app, 'glb', {}, { save: false }).data];
+  });
+  await sb(() => window.screwbender.app.loadPreset('cylinder5'));
+  assert.doesNotMatch(await page.locator('#scene-title').textContent(), /L cycle/);
+  await page.locator('#any-file').setInputFiles({ name: 'walk-motion.glb', mimeType: 'model/gltf-binary', buffer: Buffer.from(bytes) });
+  await page.waitForFunction(() => window.screwbender.app.view.object === 'obj');
+  const state = await sb(() => ({ kind: window.screwbender.app.imported?.kind, poses: window.screwbender.app.motion.poseCount }));
+  assert.deepEqual(state, { kind: 'gltf', poses: 6 });
+  // The title is the file's (its document's name: here the preset it was exported from).
+  assert.match(await page.locator('#scene-title').textContent(), /L cycle/);
+  assert.deepEqual(problems, []);
+});
+
+/** Opens the Plots view on preset A2 and returns nothing; the charts are drawn. */
+async function openPlots() {
+  await sb(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  await sb(() => window.screwbender.openView('plots'));
+  await sb(() => window.screwbender.flushViews());
+  await waitFrames(page, 1);
+}
+
+test(`${BACKEND}: plots have units on the y axes and at least 3 labelled ticks on both axes; they fit the dock at 1280x800`, async () => {
+  await page.setViewportSize({ width: 1280, height: 800 });
+  await openPlots();
+  const charts = await sb(() =>
+    window.screwbender.app.dock.current.charts.map((c) => ({ id: c.id, y: c.plot.axes[1].label, x: c.plot.axes[0].label, ticks: c.ticks() })),
+  );
+  assert.equal(charts.length, 5);
+  const units = { coord: /\(units\)/, speed: /\(units\/s\)/, accel: /\(units\/s²\)/, omega: /\(rad\/s\)/, alpha: /\(rad\/s²\)/ };
+  for (const c of charts) {
+    assert.match(c.y, units[c.id], `${c.id} y label ${c.y}`);
+    assert.equal(c.x, 't (s)');
+    for (const axis of ['x', 'y']) {
+      assert.ok(c.ticks[axis].length >= 3, `${c.id} ${axis} ticks ${c.ticks[axis]}`);
+      assert.ok(c.ticks[axis].every((l) => l.length > 0 && !/NaN/.test(l)), `${c.id} ${axis} labels ${c.ticks[axis]}`);
+      // 1-2-5 steps: the differences of consecutive ticks are one number of the form {1,2,5}·10^e.
+      const v = c.ticks[axis].map(Number);
+      const steps = v.slice(1).map((x, k) => x - v[k]);
+      const step = steps[0];
+      assert.ok(steps.every((s) => Math.abs(s - step) <= 1e-9 * Math.abs(step)), `${c.id} ${axis} uneven ticks ${v}`);
+      const m = step / 10 ** Math.floor(Math.log10(step) + 1e-9);
+      assert.ok([1, 2, 5].some((k) => Math.abs(m - k) < 1e-6), `${c.id} ${axis} step ${step}`);
+    }
+  }
+  // Nothing to scroll: the dock's body holds all the charts.
+  const body = await sb(() => {
+    const b = document.querySelector('#dock .body');
+    return { scroll: b.scrollHeight, client: b.clientHeight };
+  });
+  assert.ok(body.scroll <= body.client + 1, `the dock scrolls: ${body.scroll} > ${body.client}`);
+  await quiet();
+  await page.screenshot({ path: path.join(DOCS, 'analysis-1280.png') });
+  assert.deepEqual(problems, []);
+});
+
+test(`${BACKEND}: the playhead of every plot follows the time; hovering a plot shows that pose in 3-D, leaving restores it`, async () => {
+  await openPlots();
+  const heads = () => sb(() => window.screwbender.app.dock.current.charts.map((c) => c.playheadX));
+  const seek = (t) => sb((x) => window.screwbender.app.seekTime(x), t);
+  await seek(1.5);
+  await page.waitForFunction(() => window.screwbender.app.dock.current.charts.every((c) => c.playheadX !== null && Math.abs(c.playheadX - 1.5) < 1e-9));
+  const x1 = await sb(() => document.querySelector('#dock .plot-grid .playhead').getBoundingClientRect().x);
+  await seek(4);
+  await page.waitForFunction(() => window.screwbender.app.dock.current.charts.every((c) => c.playheadX !== null && Math.abs(c.playheadX - 4) < 1e-9));
+  const x2 = await sb(() => document.querySelector('#dock .plot-grid .playhead').getBoundingClientRect().x);
+  assert.ok(x2 > x1 + 20, `the playhead line moved from ${x1} to ${x2}`);
+  assert.equal((await heads()).length, 5);
+  // Hover the speed chart at a quarter of its width.
+  await seek(0);
+  await waitFrames(page, 2);
+  const before = await sb(() => ({ ...window.screwbender.app.playhead(), visible: window.screwbender.app.anim.visible }));
+  const pixels0 = await page.locator('#view').screenshot();
+  const over = await page.locator('#dock .plot-grid .chart').nth(1).locator('.u-over').boundingBox();
+  await page.mouse.move(over.x + over.width * 0.25, over.y + over.height / 2);
+  const want = await sb(({ x }) => {
+    const c = window.screwbender.app.dock.current.charts[1];
+    return c.plot.posToVal(x - c.plot.over.getBoundingClientRect().left, 'x');
+  }, { x: over.x + over.width * 0.25 });
+  await page.waitForFunction((t) => Math.abs(window.screwbender.app.playhead().t - t) < 1e-6, want);
+  assert.ok(want > 0.5, `hovered t = ${want}`);
+  const during = await sb(() => ({ ...window.screwbender.app.playhead(), visible: window.screwbender.app.anim.visible }));
+  assert.equal(during.visible, true);
+  assert.ok(Math.abs(during.u - before.u) > 0.1, `u ${before.u} → ${during.u}`);
+  await waitFrames(page, 2);
+  const pixels1 = await page.locator('#view').screenshot();
+  assert.ok(!pixels0.equals(pixels1), 'the 3-D view shows another pose while hovering');
+  // No undo entry for a hover.
+  const undo = await sb(() => window.screwbender.app.history.undoStack.length);
+  await page.mouse.move(over.x + over.width * 0.25, over.y - 60);
+  await page.waitForFunction((u) => window.screwbender.app.anim.u === u, before.u);
+  const afterLeave = await sb(() => ({ ...window.screwbender.app.playhead(), visible: window.screwbender.app.anim.visible }));
+  assert.equal(afterLeave.u, before.u);
+  assert.equal(afterLeave.visible, before.visible);
+  assert.equal(await sb(() => window.screwbender.app.history.undoStack.length), undo, 'a hover is no edit');
+  assert.deepEqual(problems, []);
+});
+
+test(`${BACKEND}: Metrics and Methods speak in human names, with units and "lower is better"`, async () => {
+  await sb(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  await sb(() => window.screwbender.openView('metrics'));
+  await sb(() => window.screwbender.flushViews());
+  const metrics = await page.locator('#dock section[data-view=metrics]').textContent();
+  assert.match(metrics, /4-point scheme, direct rules \(V2\)/);
+  assert.doesNotMatch(metrics, /fourpoint/);
+  assert.match(metrics, /lower is better/);
+  const head = await page.locator('#dock section[data-view=metrics] table tr').first().textContent();
+  assert.match(head, /unit/);
+  assert.match(await page.locator('#dock section[data-view=metrics] table').textContent(), /units\/span/);
+  await sb(() => window.screwbender.app.loadPreset('triangle7'));
+  await sb(() => window.screwbender.openView('methods'));
+  await sb(() => window.screwbender.flushViews());
+  const cols = await page.locator('#dock section[data-view=methods] table.metrics tr').first().locator('th').allTextContents();
+  assert.deepEqual(cols, ['metric (↓ lower is better)', 'unit', 'Chaudhry–Cameron C⁰', 'Chaudhry–Cameron C¹', '4-point (ScrewBender)']);
+  const status = await page.locator('#dock section[data-view=methods] .note').nth(1).textContent();
+  assert.doesNotMatch(status, /\bcc0:|\bfourpoint:/);
+  assert.deepEqual(problems, []);
+});
+
+/** The dock's tab row: every shown tab's top, and the ids of the tabs in the overflow menu. */
+const tabRow = () =>
+  sb(() => ({
+    tops: [...document.querySelectorAll('#dock .tabs button')].filter((b) => !b.hidden).map((b) => b.offsetTop),
+    shown: [...document.querySelectorAll('#dock .tabs button')].filter((b) => !b.hidden).map((b) => b.dataset.view),
+    more: !document.querySelector('#dock .more').hidden,
+    all: [...document.querySelectorAll('#dock .tabs button')].map((b) => b.dataset.view),
+  }));
+
+for (const [w, h] of [[1280, 800], [390, 844]]) {
+  test(`${BACKEND}: ${w}x${h}: the dock's tabs are one row; the overflow menu and the arrow keys reach every view`, async () => {
+    await page.setViewportSize({ width: w, height: h });
+    await sb(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+    await sb(() => window.screwbender.openView('plots'));
+    await sb(() => window.screwbender.flushViews());
+    const row = await tabRow();
+    assert.ok(row.tops.every((t) => t === row.tops[0]), `tabs on ${new Set(row.tops).size} rows`);
+    assert.equal(row.all.length, 8);
+    // Every view is reached: from the row, or from the menu.
+    for (const id of row.all) {
+      const r = await tabRow();
+      if (await sb(() => window.screwbender.app.view.dock) === id) {
+        // Open already (a click on its tab would close the dock).
+      } else if (r.shown.includes(id)) await page.locator(`#dock .tabs button[data-view=${id}]`).click();
+      else {
+        assert.ok(r.more, `${id} is neither in the row nor in a menu`);
+        await page.locator('#dock .more').click();
+        assert.equal(await page.locator('#dock .more').getAttribute('aria-expanded'), 'true');
+        await page.locator(`#dock .tab-menu [role=menuitem][data-view=${id}]`).click();
+      }
+      assert.equal(await sb(() => window.screwbender.app.view.dock), id);
+      const after = await tabRow();
+      assert.ok(after.shown.includes(id), `the open view ${id} has its tab in the row`);
+      assert.ok(after.tops.every((t) => t === after.tops[0]), `tabs on two rows with ${id} open`);
+      assert.equal(await page.locator(`#dock .tabs button[data-view=${id}]`).getAttribute('aria-selected'), 'true');
+    }
+    // The arrow keys walk the tab list, through the views in the menu too.
+    await sb(() => window.screwbender.openView('plots'));
+    await page.locator('#dock .tabs button[data-view=plots]').focus();
+    for (const id of row.all.slice(1)) {
+      await page.keyboard.press('ArrowRight');
+      assert.equal(await sb(() => window.screwbender.app.view.dock), id);
+      assert.equal(await sb(() => document.activeElement.dataset.view), id);
+    }
+    await page.keyboard.press('Home');
+    assert.equal(await sb(() => window.screwbender.app.view.dock), 'plots');
+    // The menu's keyboard: Down opens it on its first item, Esc closes it back on its button.
+    if ((await tabRow()).more) {
+      assert.equal(await page.locator('#dock .more').getAttribute('aria-label'), 'More analysis views');
+      await page.locator('#dock .more').focus();
+      await page.keyboard.press('ArrowDown');
+      assert.equal(await sb(() => document.activeElement.getAttribute('role')), 'menuitem');
+      await page.keyboard.press('Escape');
+      assert.equal(await sb(() => document.activeElement.className), 'more');
+      assert.ok(await page.locator('#dock .tab-menu').isHidden());
+    }
+    await sb(() => window.screwbender.openView('plots'));
+    await sb(() => window.screwbender.flushViews());
+    await waitFrames(page, 2);
+    if (w === 390) {
+      await quiet();
+      await page.screenshot({ path: path.join(DOCS, 'analysis-390.png') });
+    }
+    assert.deepEqual(problems, []);
+  });
+}
+
+for (const [w, h] of [[1280, 800], [1000, 800], [700, 800], [390, 844]]) {
+  test(`${BACKEND}: ${w}x${h}: with the dock open the scene is framed in the part of the window the dock leaves free`, async () => {
+    await page.setViewportSize({ width: w, height: h });
+    await sb(() => window.screwbender.openView(''));
+    await sb(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+    await sb(() => window.screwbender.openView('metrics'));
+    await sb(() => window.screwbender.flushViews());
+    await waitFrames(page, 2);
+    const r = await sb(() => {
+      const app = window.screwbender.app;
+      const n = app.motion.poseCount;
+      const pts = Array.from({ length: n }, (_, i) => window.screwbender.handleOnPage(i));
+      const c = { x: pts.reduce((s, p) => s + p.x, 0) / n, y: pts.reduce((s, p) => s + p.y, 0) / n };
+      const d = document.getElementById('dock').getBoundingClientRect();
+      const v = document.getElementById('view').getBoundingClientRect();
+      return { c, d: { l: d.left, r: d.right, t: d.top, b: d.bottom }, v: { l: v.left, r: v.right, t: v.top, b: v.bottom } };
+    });
+    const inDock = r.c.x > r.d.l && r.c.x < r.d.r && r.c.y > r.d.t && r.c.y < r.d.b;
+    assert.ok(!inDock, `the scene's centre ${JSON.stringify(r.c)} is under the dock ${JSON.stringify(r.d)}`);
+    assert.ok(r.c.x > r.v.l && r.c.x < r.v.r && r.c.y > r.v.t && r.c.y < r.v.b, 'the centre is in the view');
+    // The view does not reach under the dock.
+    const overlapX = Math.min(r.v.r, r.d.r) - Math.max(r.v.l, r.d.l);
+    const overlapY = Math.min(r.v.b, r.d.b) - Math.max(r.v.t, r.d.t);
+    assert.ok(overlapX <= 1 || overlapY <= 1, `view ${JSON.stringify(r.v)} under the dock ${JSON.stringify(r.d)}`);
+    // Closed: the view fills the window again.
+    await sb(() => window.screwbender.openView(''));
+    const full = await sb(() => {
+      const v = document.getElementById('view').getBoundingClientRect();
+      return [v.left, v.top, v.width, v.height];
+    });
+    assert.deepEqual(full, [0, 0, w, h]);
+    assert.deepEqual(problems, []);
+  });
+}
