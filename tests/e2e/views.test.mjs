@@ -128,7 +128,7 @@ test(`${BACKEND}: Timing retimes the plots; bad times are refused and change not
   // Let the view finish any update it has scheduled: a rebuild of its table between the `fill`
   // and the `change` below would send the change to a fresh, empty input.
   await sb(() => window.screwbender.flushViews());
-  const inputs = page.locator('#dock section[data-view=timing] input[type=number]');
+  const inputs = page.locator('#dock section[data-view=timing] input[aria-label^="time of pose"]');
   assert.equal(await inputs.count(), 7); // 6 poses of a cycle + the time back at pose 0
   await inputs.nth(6).fill('12');
   await inputs.nth(6).dispatchEvent('change');
@@ -158,12 +158,15 @@ test(`${BACKEND}: Timing retimes the plots; bad times are refused and change not
     return json.accessors[input].max[0];
   });
   assert.ok(Math.abs(duration - 12) < 1e-6, `glTF duration ${duration}`);
-  // Inserting a pose returns to uniform timing.
+  // Inserting a pose keeps the timing: the new key is reached halfway between its neighbours.
   await sb(() => {
     window.screwbender.app.select(2);
     window.screwbender.app.insertAfterSelected();
   });
-  assert.equal(await sb(() => window.screwbender.app.times()), null);
+  assert.deepEqual(await sb(() => window.screwbender.app.times()), [0, 1, 2, 2.5, 3, 4, 5, 12]);
+  // Deleting it takes its time along.
+  await sb(() => window.screwbender.app.deleteSelected());
+  assert.deepEqual(await sb(() => window.screwbender.app.times()), [0, 1, 2, 3, 4, 5, 12]);
   assert.deepEqual(problems, []);
 });
 

@@ -63,10 +63,17 @@ export class App {
       snap: false,
       /** The open analysis view ('' = dock closed). */
       dock: '',
-      /** Control-pose times in seconds (the Timing view), or null for one second per span. */
-      times: null,
     };
-    this.anim = { playing: false, u: 0, speed: 1, loop: true, visible: false };
+    // The key times live in the Motion (motion.times): `view.times` remains only as a
+    // non-enumerable alias for older callers (lesson steps), outside sessions and undo.
+    Object.defineProperty(this.view, 'times', {
+      enumerable: false,
+      get: () => this.times(),
+      set: (t) => this.motion.setTimes(t ?? null),
+    });
+    // Playback (view/viewer.js): u the parameter shown, t its time in seconds.
+    // (t is unknown until the first motion: view/viewer.js playTime derives it from u.)
+    this.anim = { playing: false, u: 0, t: undefined, tu: undefined, speed: 1, loop: true, visible: false };
     /** The imported mesh: {kind: 'obj', data: text} or {kind: 'gltf', data: base64}. */
     this.imported = null;
     this.parts = {};
@@ -84,7 +91,7 @@ export class App {
       webgl2: params.get('backend') === 'webgl2',
       // WebGPU without an adapter is no fault of the page or the browser: neutral information.
       warn: (message) => this.showError(message, /no usable adapter/.test(message) ? 'info' : 'warn'),
-      onTime: (u, a, b) => this.ui?.setTime(u, a, b),
+      onTime: (u, a, b, playhead) => this.ui?.setTime(u, a, b, playhead),
       onPlay: () => this.ui?.refresh(),
     });
     this.scenes = this.viewer.scenes;
@@ -286,6 +293,8 @@ export class App {
 
   /**
    * Up to 1700 px wide, the settings panel would cover the right part of the 3-D view that the
+    // The playhead keeps its time in seconds; a retimed motion shows another pose then.
+    this.viewer.retime();
    * open dock leaves: fold it while the dock is open, and unfold it again when it closes (if it
    * was open).
    */
@@ -341,16 +350,65 @@ export class App {
       apply();
       this.changed();
     }
+      this.anim.t = undefined;
   }
 
   /**
-   * Control-pose times in seconds for export and plots (null: one second per span): the timing
-   * table's times while they match the pose count (an insert or delete returns to uniform).
+   * The motion's key times in seconds (motion.times: n for an open motion, n + 1 for a cycle), or
+   * null for one second per span. Inserting a pose keeps them (the new key halfway between its
+   * neighbours' times, one second after an open motion's last); deleting one drops its time.
    */
   times() {
-    const t = this.view.times;
-    const want = this.motion.poseCount + (this.motion.closed ? 1 : 0);
-    return Array.isArray(t) && t.length === want ? t : null;
+    const t = this.motion?.times;
+    return t ? Array.from(t) : null;
+  }
+
+  /** The key times in use: motion.times, or the uniform ones (pose i at i s). */
+  keyTimes() {
+    const m = this.motion;
+    return this.times() ?? Array.from({ length: m.poseCount + (m.closed ? 1 : 0) }, (_, i) => i);
+  }
+
+  /** The key velocities p'(T_i) in poses per second (null entries: free), or null when all are free. */
+  velocities() {
+    return this.motion?.velocities ?? null;
+  }
+
+  /** What the view shows: time t in seconds and motion parameter u. */
+  playhead() {
+    const { t, u } = this.viewer.playhead();
+    return { t, u };
+  }
+
+  /** Shows the moving object at time t in seconds (the scrubber, tests). */
+  seekTime(t) {
+    this.viewer.seekTime(t);
+  }
+
+  /**
+   * Sets the key times (null: uniform) as one undoable edit. Returns null when applied, else the
+   * Motion's reason (nothing changed); the caller shows it.
+   */
+  setTimes(times) {
+    return this.retimeEdit(() => this.motion.setTimes(times));
+  }
+
+  /** Sets the key velocities (null: all free) as one undoable edit; see setTimes. */
+  setVelocities(velocities) {
+    return this.retimeEdit(() => this.motion.setVelocities(velocities));
+  }
+
+  /** Runs a Motion timing change as one undoable edit: null when done, else the error's message. */
+  retimeEdit(f) {
+    const before = this.snapshot();
+    try {
+      f();
+    } catch (e) {
+      return e.message;
+    }
+    this.history.push(before);
+    this.changed();
+    return null;
   }
 
   select(k) {

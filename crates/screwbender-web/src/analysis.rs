@@ -1,15 +1,126 @@
 //! Analysis in real time for the plots: a motion retimed by per-pose times (the C¹ monotone map
 //! `u = p(t)` of [`screwbender::Timing`]), its body-point kinematics per second, and the map itself.
 
+use std::cell::RefCell;
+
 use wasm_bindgen::prelude::*;
 
 use super::convert::{
-    count, f64_array, from_js, is_absent, plain, point_from_js, push_kinematics, string,
+    count, f64_array, finite, from_js, is_absent, plain, point_from_js, push_kinematics, string,
 };
 use super::motion::sample_parameters;
 use super::MotionHandle;
 use screwbender::methods::{sampled_difference, Side};
-use screwbender::{Error, ErrorKind, Timing, MAX_REFINED_POSES};
+use screwbender::{Error, ErrorKind, MotionDocument, Timing, MAX_REFINED_POSES};
+
+/// Bisection steps of [`MotionHandle::time_at`]: the span's length over `2^64`, below one ulp.
+const INVERSE_BISECTION_STEPS: u32 = 64;
+
+/// A playback clock's view of a motion: its timing, whether it is uniform (pose `i` at `i` s:
+/// then `u = t` exactly, with no rounding of the cubic) and its parameter interval.
+struct Clock {
+    timing: Timing,
+    uniform: bool,
+    closed: bool,
+    /// The last key index: `n − 1` (open) or `n` (a cycle's return to pose 0).
+    last: f64,
+    /// What the timing was built from (the cache key of [`with_clock`]).
+    key: ClockKey,
+}
+
+/// The parts of a document a [`Clock`] depends on.
+#[derive(PartialEq)]
+struct ClockKey {
+    poses: usize,
+    closed: bool,
+    times: Option<Vec<f64>>,
+    velocities: Option<Vec<Option<f64>>>,
+}
+
+thread_local! {
+    /// The clock of the last document asked about: playback asks several times per frame, and a
+    /// timing with key velocities costs a search per key to build (wasm is single-threaded).
+    static CLOCK: RefCell<Option<Clock>> = const { RefCell::new(None) };
+}
+
+/// Runs `f` on the clock of `doc`, built only when the document's timing differs from the last.
+fn with_clock<R>(doc: MotionDocument, f: impl FnOnce(&Clock) -> R) -> Result<R, Error> {
+    let key = ClockKey {
+        poses: doc.poses.len(),
+        closed: doc.closed,
+        times: doc.times,
+        velocities: doc.velocities,
+    };
+    CLOCK.with(|cell| {
+        let mut cached = cell.borrow_mut();
+        if cached.as_ref().is_none_or(|c| c.key != key) {
+            *cached = Some(Clock::of(key)?);
+        }
+        Ok(f(cached.as_ref().expect("the clock was just built")))
+    })
+}
+
+impl Clock {
+    fn of(key: ClockKey) -> Result<Clock, Error> {
+        Ok(Clock {
+            timing: Timing::for_keys(
+                key.times.clone(),
+                key.velocities.as_deref(),
+                key.poses,
+                key.closed,
+            )?,
+            uniform: key.times.is_none() && key.velocities.is_none(),
+            closed: key.closed,
+            last: (key.poses - usize::from(!key.closed)) as f64,
+            key,
+        })
+    }
+
+    /// `u = p(t)`: a cycle wraps `t` into one period, an open motion rests at its end poses.
+    fn parameter(&self, t: f64) -> f64 {
+        if !self.uniform {
+            return self.timing.parameter(t).0;
+        }
+        if self.closed {
+            t.rem_euclid(self.last)
+        } else {
+            t.clamp(0.0, self.last)
+        }
+    }
+
+    /// `t = p⁻¹(u)`: a cycle wraps `u` into `[0, n)` (and `t` into one period), an open motion
+    /// clamps `u` to its interval. Key `k` gives exactly `T_k`; between keys, bisection on the
+    /// span (`p` increases strictly there: it is monotone and rises by 1 over the span).
+    fn time(&self, u: f64) -> f64 {
+        let u = if self.closed {
+            u.rem_euclid(self.last)
+        } else {
+            u.clamp(0.0, self.last)
+        };
+        if self.uniform {
+            return u;
+        }
+        let knots = self.timing.knots();
+        if u.fract() == 0.0 {
+            return knots[(u as usize).min(knots.len() - 1)];
+        }
+        let k = (u.floor() as usize).min(knots.len() - 2);
+        let (mut lo, mut hi) = (knots[k], knots[k + 1]);
+        for _ in 0..INVERSE_BISECTION_STEPS {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            // Inside the span, so no wrapping: p(mid) is the span's cubic.
+            if self.timing.parameter(mid).0 < u {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        0.5 * (lo + hi)
+    }
+}
 
 /// The timing of a motion with `poses` control poses from optional `times` (default uniform)
 /// and optional key `velocities` (numbers ≥ 0 in poses per second, or `null` where free).
@@ -39,6 +150,46 @@ fn timing(
 
 #[wasm_bindgen(js_class = Motion)]
 impl MotionHandle {
+    /// The playback interval `[T_0, T_last]` in seconds of the motion's own timing
+    /// (`motion.times`; uniform: `[0, n − 1]` for an open motion, `[0, n]` for a cycle, whose
+    /// last time is the return to pose 0).
+    #[wasm_bindgen(js_name = timeDomain)]
+    pub fn time_domain(&self) -> Result<Vec<f64>, JsError> {
+        let (doc, _) = self.snapshot()?;
+        let (t0, t1) = with_clock(doc, |c| c.timing.duration())?;
+        Ok(vec![t0, t1])
+    }
+
+    /// The motion parameter `u = p(t)` shown at time `t` seconds: the C¹ monotone retiming by
+    /// the motion's own key times and velocities (docs/math/timing.md §3), so pose `i` is
+    /// reached at `motion.times[i]`. A cycle repeats with its period; an open motion rests at
+    /// its first pose before `T_0` and at its last after `T_last`. Uniform timing gives `u = t`
+    /// exactly (wrapped into `[0, n)` for a cycle, clamped to `[0, n − 1]` otherwise). Throws
+    /// naming `t` when it is not a finite number.
+    #[wasm_bindgen(js_name = parameterAt)]
+    pub fn parameter_at(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] t: JsValue,
+    ) -> Result<f64, JsError> {
+        let t = finite(&t, "t")?;
+        let (doc, _) = self.snapshot()?;
+        Ok(with_clock(doc, |c| c.parameter(t))?)
+    }
+
+    /// The time in seconds at which the motion shows parameter `u` (the inverse of
+    /// [`parameterAt`](MotionHandle::parameter_at)): `motion.times[k]` exactly at key `k`, and
+    /// to within one rounding of `t` between keys. A cycle wraps `u` into `[0, n)`, an open
+    /// motion clamps it to `[0, n − 1]`. Throws naming `u` when it is not a finite number.
+    #[wasm_bindgen(js_name = timeAt)]
+    pub fn time_at(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] u: JsValue,
+    ) -> Result<f64, JsError> {
+        let u = finite(&u, "u")?;
+        let (doc, _) = self.snapshot()?;
+        Ok(with_clock(doc, |c| c.time(u))?)
+    }
+
     /// Kinematics of the body point `local` in real time: the motion retimed so that control
     /// pose `i` is reached at `times[i]` (a cycle has one more time: pose 0 again), sampled at
     /// `count` uniform times. 16 numbers per sample as in `sampleKinematics`, except that the

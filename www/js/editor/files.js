@@ -32,7 +32,7 @@ function fromBase64(text) {
   return Uint8Array.from(bin, (c) => c.charCodeAt(0));
 }
 
-/** The export settings of the current view: the object as drawn, the timing of the session. */
+/** The export settings of the current view: the object as drawn (the motion carries its timing). */
 export function exportSettings(app, format, extra = {}) {
   const s = { format, ...extra };
   if (format !== 'csv') {
@@ -42,8 +42,7 @@ export function exportSettings(app, format, extra = {}) {
       s.mesh = { kind: m.kind, data: m.kind === 'gltf' ? fromBase64(m.data) : m.data, size: IMPORT_SIZE };
     } else s.object = v.object === 'scene' ? `scene:${v.scene}` : v.object;
   }
-  const times = app.times?.();
-  if (times) s.times = times;
+  // The key times and velocities come with the motion's document (motion.times, .velocities).
   s.name = app.motion.name ?? app.view.scene ?? 'motion';
   return s;
 }

@@ -161,8 +161,16 @@ export default {
         if (k in v && typeof v[k] === typeof app.view[k]) app.view[k] = v[k];
       }
       app.view.strobe = Math.max(1, Math.min(MAX_STROBE, Math.round(app.view.strobe)));
-      const t = app.view.times;
-      if (t !== null && !(Array.isArray(t) && t.length <= 1e5 && t.every(Number.isFinite))) app.view.times = null;
+      // Older sessions kept the key times in view.times: they move into the motion when its
+      // document has none and they fit (as before, times that do not fit are ignored).
+      const t = v.times;
+      if (motion.times === undefined && Array.isArray(t) && t.length <= 1e5) {
+        try {
+          motion.setTimes(t);
+        } catch {
+          // Ignored, as the page did before: uniform timing.
+        }
+      }
       if (app.view.object === 'obj' && !app.imported) app.view.object = 'scene';
       app.selected = Number.isInteger(s.selected) && s.selected < motion.poseCount ? s.selected : -1;
       app.mode = s.mode === 'rotate' ? 'rotate' : 'translate';

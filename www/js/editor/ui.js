@@ -180,15 +180,14 @@ export function buildUi(app) {
   tool('play', () => app.setPlaying(!app.anim.playing));
   $('banner').querySelector('.close').onclick = () => ($('banner').hidden = true);
 
-  // Timeline.
+  // Timeline: the scrubber runs over the playback interval in seconds (the motion's own key
+  // times); the key markers above it retime the motion.
   const scrub = $('scrub');
   scrub.addEventListener('input', () => {
-    const [a, b] = app.motion.domain();
-    app.anim.u = a + (b - a) * (scrub.value / 1000);
-    app.anim.visible = true;
-    app.updateAnim();
-    app.requestDraw();
+    const [a, b] = app.motion.timeDomain();
+    app.seekTime(a + (b - a) * (scrub.value / 1000));
   });
+  const keyMarkers = buildKeyMarkers(app, $('keys'));
   const speed = $('speed');
   speed.addEventListener('input', () => (app.anim.speed = Number(speed.value)));
   const loop = $('loop');
@@ -261,14 +260,19 @@ export function buildUi(app) {
     speed.value = app.anim.speed;
     loop.checked = app.anim.loop;
     loop.disabled = m.closed;
+    keyMarkers.place();
     const [a, b] = m.domain();
-    setTime(app.anim.u, a, b);
+    setTime(app.anim.u, a, b, app.viewer.playhead());
     app.parts.pose.refresh();
   }
 
-  function setTime(u, a, b) {
-    scrub.value = String(Math.round(((u - a) / (b - a)) * 1000));
-    $('time').textContent = `u = ${u.toFixed(2)} / ${b}`;
+  /** The playhead moved: u in [a, b], and `playhead` {t, start, end} in seconds. */
+  function setTime(u, a, b, playhead) {
+    const { t, start, end } = playhead;
+    scrub.value = String(Math.round(((t - start) / (end - start)) * 1000));
+    $('time').textContent = `t = ${t.toFixed(2)} s · u = ${u.toFixed(2)}`;
+    $('time').title = `Time ${t.toFixed(3)} s of ${start.toFixed(2)}–${end.toFixed(2)} s; motion parameter u = ${u.toFixed(3)} of ${a}–${b}`;
+    scrub.setAttribute('aria-valuetext', `${t.toFixed(2)} seconds, u = ${u.toFixed(2)}`);
     app.parts.pose.setTime(u);
   }
 
@@ -276,4 +280,161 @@ export function buildUi(app) {
   if (window.innerWidth < 760 || window.innerHeight < 500) gui.close();
   refresh();
   return { gui, refresh, setTime, toggleHelp, toast };
+}
+
+/** Arrow-key steps of a focused key marker (seconds): plain and with Shift. */
+const KEY_STEP = 0.1;
+const KEY_STEP_FINE = 0.01;
+/** Marker drags snap to this step (seconds). */
+const DRAG_SNAP = 0.01;
+
+/**
+ * The key markers of the timeline: one per key time (a cycle's last is its return to pose 0),
+ * placed on the scrubber's scale. Dragging one (mouse, pen or touch) retimes that key with a
+ * live preview and makes one undoable edit on release; arrow keys move a focused marker by 0.1 s
+ * (Shift: 0.01 s). Times must keep increasing: a move past a neighbouring key is refused with a
+ * message and changes nothing (a drag is then over until the next press).
+ */
+function buildKeyMarkers(app, root) {
+  let markers = [];
+  let drag = null;
+  const round = (t) => Math.round(t / DRAG_SNAP) * DRAG_SNAP;
+  const fmt = (t) => `${Number(t.toFixed(3))} s`;
+
+  function name(i, n) {
+    return i < n ? `pose ${i}` : 'pose 0 (end of cycle)';
+  }
+
+  /** Why `times` with key i at `t` is refused by its neighbours (null: in order). */
+  function outOfOrder(times, i, t) {
+    const n = app.motion.poseCount;
+    if (i > 0 && !(t > times[i - 1])) return `${name(i, n)} cannot move to ${fmt(t)}: at or before ${name(i - 1, n)}'s key (${fmt(times[i - 1])})`;
+    if (i < times.length - 1 && !(t < times[i + 1])) return `${name(i, n)} cannot move to ${fmt(t)}: at or after ${name(i + 1, n)}'s key (${fmt(times[i + 1])})`;
+    return null;
+  }
+
+  function refuse(reason) {
+    app.showError(`Not retimed: ${reason}. Times must increase; nothing changed.`, 'warn');
+  }
+
+  /** Positions and names the markers on the scale [a, b] (default: the key times' own). */
+  function place(scale) {
+    if (!app.motion) return;
+    const times = app.keyTimes();
+    const n = app.motion.poseCount;
+    if (markers.length !== times.length) {
+      markers = times.map((_, i) => {
+        const m = document.createElement('div');
+        m.className = 'key-marker';
+        m.tabIndex = 0;
+        m.setAttribute('role', 'slider');
+        m.dataset.key = String(i);
+        m.addEventListener('pointerdown', (e) => press(e, i));
+        m.addEventListener('keydown', (e) => key(e, i));
+        return m;
+      });
+      root.replaceChildren(...markers);
+    }
+    const [a, b] = scale ?? [times[0], times[times.length - 1]];
+    markers.forEach((m, i) => {
+      const t = times[i];
+      m.style.setProperty('--at', String((t - a) / (b - a)));
+      m.setAttribute('aria-label', `Key time of ${name(i, n)}`);
+      m.setAttribute('aria-valuenow', String(t));
+      m.setAttribute('aria-valuetext', fmt(t));
+      m.setAttribute('aria-valuemin', String(i > 0 ? times[i - 1] : t - 1e6));
+      m.setAttribute('aria-valuemax', String(i < times.length - 1 ? times[i + 1] : t + 1e6));
+      m.title = `${name(i, n)} at ${fmt(t)}: drag or use the arrow keys (Shift: 0.01 s) to retime`;
+    });
+  }
+
+  function key(e, i) {
+    const dir = { ArrowRight: 1, ArrowUp: 1, ArrowLeft: -1, ArrowDown: -1 }[e.key];
+    if (!dir) return;
+    e.preventDefault();
+    const times = app.keyTimes();
+    const step = e.shiftKey ? KEY_STEP_FINE : KEY_STEP;
+    // Rounded to the step's decimals, so 0.1 s steps give 1.1, not 1.1000000000000001.
+    const t = Number((times[i] + dir * step).toFixed(6));
+    const why = outOfOrder(times, i, t);
+    if (why) return refuse(why);
+    const next = [...times];
+    next[i] = t;
+    const err = app.setTimes(next);
+    if (err) refuse(err);
+  }
+
+  /** The time under the pointer on the drag's frozen scale. */
+  function timeAt(e) {
+    const { left, width, a, b } = drag;
+    return round(a + ((e.clientX - left) / width) * (b - a));
+  }
+
+  function press(e, i) {
+    if (e.button !== 0 || drag) return;
+    e.preventDefault();
+    const m = markers[i];
+    m.focus();
+    m.setPointerCapture?.(e.pointerId);
+    const times = app.keyTimes();
+    const r = root.getBoundingClientRect();
+    // The scale stays fixed while dragging (moving the first or last key would rescale it).
+    const inset = parseFloat(getComputedStyle(root).getPropertyValue('--key-inset')) || 0;
+    drag = {
+      i, pointer: e.pointerId, times, before: app.snapshot(), moved: false, refused: false,
+      left: r.left + inset, width: Math.max(1, r.width - 2 * inset), a: times[0], b: times[times.length - 1],
+      original: app.motion.times ? Array.from(app.motion.times) : null,
+    };
+    m.classList.add('dragging');
+    const move = (ev) => {
+      if (!drag || drag.refused || ev.pointerId !== drag.pointer) return;
+      const t = timeAt(ev);
+      if (t === drag.times[i] && !drag.moved) return;
+      const why = outOfOrder(drag.times, i, t);
+      if (why) return abort(why);
+      const next = [...drag.times];
+      next[i] = t;
+      try {
+        // A live preview: the object at the playhead follows; undo and save come on release.
+        app.motion.setTimes(next);
+      } catch (err) {
+        return abort(err.message);
+      }
+      drag.moved = true;
+      app.viewer.retime();
+      app.requestDraw();
+      place([drag.a, drag.b]);
+    };
+    const up = (ev) => {
+      if (!drag || ev.pointerId !== drag.pointer) return;
+      const d = drag;
+      drag = null;
+      m.classList.remove('dragging');
+      m.removeEventListener('pointermove', move);
+      m.removeEventListener('pointerup', up);
+      m.removeEventListener('pointercancel', up);
+      if (d.moved && !d.refused) {
+        app.history.push(d.before);
+        app.changed();
+      } else place();
+    };
+    /** Refuses the drag: the times in use before it come back; the drag is over. */
+    const abort = (why) => {
+      drag.refused = true;
+      if (drag.moved) {
+        app.motion.setTimes(drag.original);
+        drag.moved = false;
+        app.viewer.retime();
+        app.requestDraw();
+      }
+      place([drag.a, drag.b]);
+      refuse(why);
+    };
+    m.addEventListener('pointermove', move);
+    m.addEventListener('pointerup', up);
+    m.addEventListener('pointercancel', up);
+  }
+
+  place();
+  return { place: () => drag || place() };
 }

@@ -12,9 +12,10 @@
 // controls (none | minimal | full), camera (iso | front | side | top, or "yaw pitch [distance]"
 // in degrees and scene units), theme (light | dark), persist (a localStorage key; without it the
 // figure never touches storage). Properties: document, options, motion (read-only), backend,
-// ready (a Promise); methods play(), pause(), seek(u); events change {poses}, select {index},
-// time {u, start, end}, error {attribute, value, message} (they do not bubble out of the figure
-// as exceptions: every failure is a message inside the figure plus an `error` event).
+// ready (a Promise); methods play(), pause(), seek(t) (seconds); events change {poses}, select
+// {index}, time {t, u, start, end} (seconds and parameter), error {attribute, value, message}
+// (they do not bubble out of the figure as exceptions: every failure is a message inside the
+// figure plus an `error` event).
 //
 // Good guest manners: one wasm module instance for all figures (a module-level promise); no
 // listener outside the figure's own shadow tree; the wheel zooms only while the figure has the
@@ -148,7 +149,7 @@ class Figure {
       node('canvas', { tabindex: '0', part: 'canvas', 'aria-label': '3-D figure of a rigid motion' }),
       node('div', { class: 'bar', part: 'controls' },
         node('button', { class: 'play', type: 'button', 'aria-label': 'Play', text: '▶' }),
-        node('input', { class: 'scrub', type: 'range', min: '0', max: '1000', value: '0', 'aria-label': 'Motion parameter' }),
+        node('input', { class: 'scrub', type: 'range', min: '0', max: '1000', value: '0', 'aria-label': 'Playback time' }),
         node('span', { class: 'time', text: 'u = 0' }),
         node('span', { class: 'full' },
           node('select', { class: 'scheme', 'aria-label': 'Scheme' },
@@ -192,7 +193,7 @@ class Figure {
         wheelNeedsFocus: true,
         what: 'this figure',
         warn: () => {},
-        onTime: (u, a, b) => this.timeChanged(u, a, b),
+        onTime: (u, a, b, playhead) => this.timeChanged(playhead),
         onPlay: () => this.refreshChrome(),
       });
       this.viewer = viewer;
@@ -482,7 +483,7 @@ class Figure {
       this.guard(() => {
         const m = this.model.motion;
         if (!m) return;
-        const [a, b] = m.domain();
+        const [a, b] = m.timeDomain();
         this.seek(a + ((b - a) * Number(scrub.value)) / 1000);
       }),
     );
@@ -523,10 +524,11 @@ class Figure {
     }
   }
 
-  timeChanged(u, a, b) {
-    this.el.scrub.value = String(Math.round(((u - a) / Math.max(1e-12, b - a)) * 1000));
-    this.el.time.textContent = `u = ${u.toFixed(2)}`;
-    this.emit('time', { u, start: a, end: b });
+  /** The playhead moved: {t, u, start, end}, times in seconds (the motion's own timing). */
+  timeChanged({ t, u, start, end }) {
+    this.el.scrub.value = String(Math.round(((t - start) / Math.max(1e-12, end - start)) * 1000));
+    this.el.time.textContent = `${t.toFixed(2)} s`;
+    this.emit('time', { t, u, start, end });
   }
 
   get playing() {
@@ -541,14 +543,13 @@ class Figure {
     if (this.viewer && this.model.motion) this.viewer.setPlaying(false);
   }
 
-  /** Shows the moving object at parameter u (wrapped into the motion's domain). */
-  seek(u) {
+  /**
+   * Shows the moving object at time t in seconds (the motion's key times: pose i at
+   * motion.times[i], else at i s; a cycle wraps, an open motion holds its end poses).
+   */
+  seek(t) {
     if (!this.viewer || !this.model.motion) return;
-    const x = number('seek', u, -1e9, 1e9);
-    this.model.anim.u = x;
-    this.model.anim.visible = true;
-    this.viewer.updateAnim();
-    this.viewer.requestDraw();
+    this.viewer.seekTime(number('seek', t, -1e9, 1e9));
   }
 
   select(k) {

@@ -42,7 +42,9 @@ export function newModel(scene = '') {
     },
     selected: -1, // selected control pose (gets the gizmo), or -1
     mode: 'translate', // gizmo: 'translate' | 'rotate'
-    anim: { playing: false, u: 0, speed: 1, loop: true, visible: false },
+    // Playback: u the parameter shown, t its time in seconds (tu: the u that t belongs to;
+    // unknown t is derived from u by playTime).
+    anim: { playing: false, u: 0, t: undefined, tu: undefined, speed: 1, loop: true, visible: false },
     imported: null, // {kind: 'obj', data: text} or {kind: 'gltf', data: base64}
     hover: null, // gizmo part under the pointer
     hoverPose: undefined, // control pose under the pointer (-1: none)
@@ -53,8 +55,9 @@ export function newModel(scene = '') {
 export class Viewer {
   /**
    * options: model (default newModel()); webgl2: true to skip WebGPU; warn(message): non-fatal
-   * problems (a backend fallback, drags without live update); onTime(u, a, b): the animated
-   * object moved; onPlay(playing): playback started or stopped; wheelNeedsFocus: true to let
+   * problems (a backend fallback, drags without live update); onTime(u, a, b, playhead): the
+   * animated object moved (u in the parameter interval [a, b]; playhead as playhead() gives it,
+   * in seconds); onPlay(playing): playback started or stopped; wheelNeedsFocus: true to let
    * wheel events over an unfocused canvas scroll the page (an embedded figure), false to zoom
    * always (the playground, whose view fills the page); what: the subject of the no-graphics
    * message ('the playground', 'this figure').
@@ -65,7 +68,8 @@ export class Viewer {
     this.model = model;
     this.webgl2 = webgl2;
     this.warn = warn ?? ((m) => console.warn(m));
-    this.onTime = onTime ?? (() => {});
+    const timeHook = onTime ?? (() => {});
+    this.onTime = (u, a, b) => timeHook(u, a, b, this.playhead());
     this.onPlay = onPlay ?? (() => {});
     this.wheelNeedsFocus = wheelNeedsFocus;
     this.what = what;
@@ -189,17 +193,17 @@ export class Viewer {
     if (!motion) return;
     if (anim.playing) {
       const dt = this.lastNow ? Math.min(0.5, (now - this.lastNow) / 1000) : 0;
-      const [a, b] = motion.domain();
-      let u = anim.u + dt * anim.speed;
-      if (u > b) {
-        if (motion.closed || anim.loop) u = a + ((u - a) % (b - a));
+      // Real time: t advances in seconds (times the speed); the object shows u = p(t).
+      const [a, b] = motion.timeDomain();
+      let t = this.playTime() + dt * anim.speed;
+      if (t > b) {
+        if (motion.closed || anim.loop) t = a + ((t - a) % (b - a));
         else {
-          u = b;
+          t = b;
           this.setPlaying(false);
         }
       }
-      anim.u = u;
-      this.updateAnim();
+      this.showTime(t);
       this.dirty = true;
     }
     this.lastNow = now;
@@ -226,6 +230,57 @@ export class Viewer {
   }
 
   /** Starts or stops playback; either way the animated object stays shown. */
+  // ---------------------------------------------------------------- playback in seconds
+
+  /**
+   * The playhead's time t in seconds: model.anim.t while it still belongs to the parameter shown
+   * (anim.u), else the time at which the motion's own timing reaches anim.u (whoever set u
+   * directly: a preset load, a session, a lesson step).
+   */
+  playTime() {
+    const { anim, motion } = this.model;
+    if (!(Number.isFinite(anim.t) && anim.tu === anim.u)) {
+      anim.t = motion.timeAt(anim.u);
+      anim.tu = anim.u;
+    }
+    return anim.t;
+  }
+
+  /** The playhead: time t (s) and parameter u shown, and the playback interval [start, end] (s). */
+  playhead() {
+    const [start, end] = this.model.motion.timeDomain();
+    return { t: this.playTime(), u: this.model.anim.u, start, end };
+  }
+
+  /** Moves the animated object to time t (s; a cycle wraps, an open motion holds its ends). */
+  showTime(t) {
+    const { anim, motion } = this.model;
+    const [a, b] = motion.timeDomain();
+    const x = motion.closed ? a + ((((t - a) % (b - a)) + (b - a)) % (b - a)) : Math.min(b, Math.max(a, t));
+    anim.u = motion.parameterAt(x);
+    anim.t = x;
+    anim.tu = anim.u;
+    this.updateAnim();
+  }
+
+  /** Shows the animated object at time t in seconds (a seek: the object becomes visible). */
+  seekTime(t) {
+    this.model.anim.visible = true;
+    this.showTime(t);
+    this.requestDraw();
+  }
+
+  /**
+   * After the motion's timing (or poses) changed: the playhead keeps its time and the object
+   * moves to what the new timing shows then.
+   */
+  retime() {
+    const { anim, motion } = this.model;
+    if (!motion) return;
+    if (Number.isFinite(anim.t) && anim.tu === anim.u) this.showTime(anim.t);
+    else this.playTime();
+  }
+
   setPlaying(on) {
     const { anim } = this.model;
     anim.playing = on;

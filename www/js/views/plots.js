@@ -125,14 +125,14 @@ class PlotsView {
     const m = this.app.motion;
     const doc = m.toDocument();
     const opts = m.options();
-    const times = this.app.times();
     const out = {};
     for (const s of SCHEME_SERIES) {
       // Same rules and levels; the scheme alone differs (the polyscrew is level 0).
       const o = s.id === 'polyscrew' ? { ...opts, levels: 0 } : { rules: opts.rules, levels: opts.levels, scheme: s.id };
       const motion = new Motion(doc, o);
       try {
-        out[s.id] = motion.timedKinematics(SAMPLES, this.point, times ?? undefined, this.derivatives);
+        // The document carries the key times and velocities: the motion's own timing.
+        out[s.id] = motion.timedKinematics(SAMPLES, this.point, undefined, this.derivatives);
       } finally {
         motion.free();
       }
@@ -146,8 +146,7 @@ class PlotsView {
     this.data = data;
     const first = data[SCHEME_SERIES[0].id];
     const ts = Array.from({ length: SAMPLES }, (_, k) => first[k * STRIDE]);
-    const m = this.app.motion;
-    const times = this.app.times() ?? Array.from({ length: m.poseCount + (m.closed ? 1 : 0) }, (_, i) => i);
+    const times = this.app.keyTimes();
     this.layout();
     CHARTS.forEach(([, title, y, value], c) => {
       const chart = this.charts[c];

@@ -1,6 +1,8 @@
-// Timing view (paper §1, docs/math/timing.md): per-control-pose times in a small table. The motion is
-// retimed by a C¹ monotone piecewise-cubic map u = p(t) (the path is unchanged, only the speed
-// along it); the Plots view and glTF / CSV export use these times.
+// Timing view (paper §1, docs/math/timing.md): per-key times and velocities in a small table.
+// The motion is retimed by a C¹ monotone piecewise-cubic map u = p(t) (the path is unchanged,
+// only the speed along it) through p(T_i) = i and, where given, p'(T_i) = v_i. Times and
+// velocities live in the Motion (its document, the session, share links, undo); 3-D playback,
+// the timeline, the Plots view and glTF / CSV export all follow them.
 import { timingMap } from '../../pkg/screwbender.js';
 import { lineChart, el, fmt } from './plot.js';
 
@@ -10,10 +12,12 @@ class TimingView {
     this.root = root;
     root.append(
       el('p', { class: 'note' },
-        'Time (seconds) at which each control pose is reached. Times must increase; the map from time to the motion parameter is C¹ and monotone, ',
-        'so the object never moves backwards and a C¹ motion stays C¹ in time. Inserting or deleting a pose returns to one second per span.'),
+        'Time (seconds) at which each control pose is reached, and optionally its velocity p′ in poses per second (blank: free). ',
+        'Times must increase; the map from time to the motion parameter is C¹ and monotone, so the object never moves backwards ',
+        'and a C¹ motion stays C¹ in time. An inserted pose is reached halfway between its neighbours (free velocity); a deleted pose takes its time along.'),
       el('div', { class: 'row' },
         el('button', { class: 'act', onclick: () => this.apply(null) }, 'Uniform (1 s per span)'),
+        el('button', { class: 'act', title: 'Every key velocity free again', onclick: () => this.applyVelocities(null) }, 'Free velocities'),
         el('button', { class: 'act', title: 'Slow near the first and last poses', onclick: () => this.ease() }, 'Ease in / out'),
       ),
     );
@@ -39,26 +43,27 @@ class TimingView {
 
   /** The times in use (uniform when none are set). */
   current() {
-    const m = this.app.motion;
-    return this.app.times() ?? Array.from({ length: m.poseCount + (m.closed ? 1 : 0) }, (_, i) => i);
+    return this.app.keyTimes();
   }
 
-  /** Sets the times (null: uniform) as one undoable edit, after checking them. */
+  /** Shows why an edit was refused (null: clears the message). */
+  say(error) {
+    this.message.textContent = error ? `Not applied: ${error}` : '';
+    this.message.classList.toggle('error', !!error);
+  }
+
+  /** Sets the times (null: uniform) as one undoable edit; the Motion checks them. */
   apply(times) {
-    const m = this.app.motion;
-    if (times) {
-      try {
-        timingMap(times, m.poseCount, m.closed, 2);
-      } catch (e) {
-        this.message.textContent = `Not applied: ${e.message}`;
-        this.message.classList.add('error');
-        return false;
-      }
-    }
-    this.message.textContent = '';
-    this.message.classList.remove('error');
-    this.app.edit(() => (this.app.view.times = times ? [...times] : null), 'view:times');
-    return true;
+    const error = this.app.setTimes(times ? [...times] : null);
+    this.say(error);
+    return !error;
+  }
+
+  /** Sets the key velocities (null: all free) as one undoable edit; the Motion checks them. */
+  applyVelocities(velocities) {
+    const error = this.app.setVelocities(velocities);
+    this.say(error);
+    return !error;
   }
 
   /** Twice as long for the first and last spans. */
@@ -69,28 +74,48 @@ class TimingView {
     this.apply(t);
   }
 
-  /** Refills the table: one number input per time, the span to the previous one beside it. */
-  fillTable(m, times) {
-    const rows = [el('tr', {}, el('th', {}, 'pose'), el('th', {}, 'time (s)'), el('th', {}, 'span (s)'))];
+  /**
+   * Refills the table: per key its time (the span to the previous one beside it) and, one per
+   * control pose, its velocity (blank: free). A refused value shows the one in use again.
+   */
+  fillTable(m, times, velocities) {
+    const rows = [el('tr', {}, el('th', {}, 'pose'), el('th', {}, 'time (s)'), el('th', {}, 'span (s)'), el('th', {}, 'velocity (poses/s)'))];
     times.forEach((t, i) => {
       const input = el('input', {
-        type: 'number', step: '0.1', value: String(t), style: 'width:90px',
+        type: 'number', step: '0.1', value: String(t), style: 'width:80px',
         'aria-label': `time of pose ${i % m.poseCount}`,
         onchange: () => {
           const next = [...times];
           next[i] = Number(input.value);
-          if (!Number.isFinite(next[i])) {
-            this.message.textContent = `Not applied: time ${i} is not a number.`;
-            this.message.classList.add('error');
-          } else if (this.apply(next)) {
-            return;
-          }
+          if (!Number.isFinite(next[i]) || input.value.trim() === '') this.say(`time ${i} is not a number.`);
+          else if (this.apply(next)) return;
           // Refused: the input shows the time still in use again, the message says why.
           input.value = String(t);
         },
       });
+      let vcell = el('td', {}, i < m.poseCount ? '' : 'as pose 0');
+      if (i < m.poseCount) {
+        const v = velocities?.[i] ?? null;
+        const vin = el('input', {
+          type: 'number', step: '0.1', min: '0', value: v === null ? '' : String(v), placeholder: 'free', style: 'width:70px',
+          'aria-label': `velocity of pose ${i} (poses per second; blank: free)`,
+          onchange: () => {
+            const text = vin.value.trim();
+            const value = text === '' ? null : Number(text);
+            // A field the browser could not read as a number comes back as '' with badInput.
+            if (vin.validity?.badInput || (value !== null && !Number.isFinite(value))) this.say(`velocities[${i}]: not a number.`);
+            else {
+              const next = Array.from({ length: this.app.motion.poseCount }, (_, k) => velocities?.[k] ?? null);
+              next[i] = value;
+              if (this.applyVelocities(next.every((x) => x === null) ? null : next)) return;
+            }
+            vin.value = v === null ? '' : String(v);
+          },
+        });
+        vcell = el('td', {}, vin);
+      }
       const label = i < m.poseCount ? String(i) : '0 (again, end of cycle)';
-      rows.push(el('tr', {}, el('td', {}, label), el('td', {}, input), el('td', {}, i > 0 ? fmt(t - times[i - 1]) : '–')));
+      rows.push(el('tr', {}, el('td', {}, label), el('td', {}, input), el('td', {}, i > 0 ? fmt(t - times[i - 1]) : '–'), vcell));
     });
     this.table.replaceChildren(...rows);
   }
@@ -98,15 +123,17 @@ class TimingView {
   update() {
     const m = this.app.motion;
     const times = this.current();
-    // Rebuild the table only when the times change: a rebuild between a user's typing and the
+    const velocities = this.app.velocities();
+    // Rebuild the table only when the timing changes: a rebuild between a user's typing and the
     // input's `change` event would throw the typed value away with the old input.
-    const key = `${m.poseCount}|${m.closed}|${times.join(',')}`;
+    const key = `${m.poseCount}|${m.closed}|${times.join(',')}|${velocities?.join(',') ?? ''}`;
     if (key !== this.tableKey) {
       this.tableKey = key;
-      this.fillTable(m, times);
+      this.fillTable(m, times, velocities);
     }
     if (this.chart) {
-      const d = timingMap(times, m.poseCount, m.closed, 400);
+      // The map the playback uses: through the key times, with the key velocities.
+      const d = timingMap(times, m.poseCount, m.closed, 400, velocities ?? undefined);
       const t = [];
       const u = [];
       const du = [];
@@ -124,7 +151,7 @@ class TimingView {
 export default {
   id: 'timing',
   title: 'Timing',
-  hint: 'Per-pose times: retime the motion by a C¹ monotone map (paper §1)',
+  hint: 'Per-key times and velocities: retime the motion by a C¹ monotone map (paper §1)',
   live: false,
   create: (app, root) => new TimingView(app, root),
 };
