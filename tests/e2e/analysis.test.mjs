@@ -102,6 +102,14 @@ test(`${BACKEND}: a CSV of 200 poses asks how to import it; Esc changes nothing;
   await page.locator('#reduce-dialog button[type=submit]').click();
   assert.match(await page.locator('#reduce-dialog [role=alert]').textContent(), /tolerance/);
   assert.ok(await page.locator('#reduce-dialog').isVisible());
+  // A second dense file meanwhile (a drop under the dialog) is refused: one question at a time.
+  const second = await sb(async (text) => {
+    const { importFiles } = await import('./js/editor/files.js');
+    return importFiles(window.screwbender.app, [new File([text], 'second.csv')]);
+  }, denseCsv(100).toString());
+  assert.equal(second, false);
+  assert.match(await noticeAbout('second.csv'), /waiting for an answer/);
+  assert.equal(await page.locator('#reduce-dialog').count(), 1);
   await page.locator('#reduce-dialog button', { hasText: 'Cancel' }).click();
   await page.waitForSelector('#reduce-dialog', { state: 'detached' });
   assert.equal(await session(), s1);
@@ -293,6 +301,10 @@ for (const [w, h] of [[1280, 800], [390, 844]]) {
     await sb(() => window.screwbender.openView('plots'));
     await sb(() => window.screwbender.flushViews());
     await waitFrames(page, 2);
+    // Small screens too: every plot keeps at least 3 labelled ticks on each axis.
+    for (const t of await sb(() => window.screwbender.app.dock.current.charts.map((c) => c.ticks()))) {
+      assert.ok(t.x.length >= 3 && t.y.length >= 3, `ticks ${JSON.stringify(t)} at ${w}x${h}`);
+    }
     if (w === 390) {
       await quiet();
       await page.screenshot({ path: path.join(DOCS, 'analysis-390.png') });

@@ -123,6 +123,10 @@ export async function importFiles(app, fileList) {
   // Many poses (samples of a motion, e.g. an exported CSV): ask whether to thin them.
   let kept = null;
   if (doc.poses.length > MANY_POSES) {
+    if (document.getElementById('reduce-dialog')) {
+      app.showError(`${main.name}: another import is waiting for an answer; nothing was changed.`);
+      return false;
+    }
     const radius = Math.max(1e-3, ...app.bodyPoints().map((p) => Math.hypot(...p)));
     const choice = await askReduction(doc, main.name, radius);
     if (!choice) {

@@ -31,7 +31,7 @@ const TITLE_PX = 16;
 /** Gap between charts of the grid (CSS px, style.css `.plot-grid`). */
 const GAP_PX = 6;
 /** A chart is never lower than this (CSS px); below, the dock scrolls. */
-const MIN_CHART_PX = 130;
+const MIN_CHART_PX = 150;
 
 class PlotsView {
   constructor(app, root) {
