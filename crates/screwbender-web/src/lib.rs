@@ -5,7 +5,8 @@
 //! * Free functions: `screw`, `screwPoses`, `screwPairs`, `screwInfo`, `posesToMatrices`,
 //!   `scenes`, `limits`, `version`, `importMotionFile` (feature `files`; so is
 //!   `Motion.exportFile`), `methods` (feature `methods`: the comparison methods; see `Motion.methodSample`,
-//!   `compareMethods`, `quaternionSpline`).
+//!   `compareMethods`, `quaternionSpline`); `Motion.keyframeTracks` (three.js keyframe arrays,
+//!   feature `tracks`).
 //!
 //! Bulk results are typed arrays with fixed layouts (see [`convert`]): 7 `f64` per pose
 //! (origin `x, y, z`, quaternion `w, x, y, z`), 16 `f32` per column-major 4×4 matrix, 16 `f64`
@@ -30,6 +31,8 @@ pub mod options;
 mod scenes;
 mod screw;
 mod teaching;
+#[cfg(feature = "tracks")]
+mod tracks;
 mod types;
 
 pub use analysis::timing_map;

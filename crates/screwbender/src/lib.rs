@@ -125,15 +125,14 @@ pub use formats::csv::{parse_csv_poses, poses_csv, trajectory_csv, MAX_CSV_BYTES
 pub use formats::document::{MotionDocument, RawDocument, RawPose, MAX_DOCUMENT_BYTES};
 #[cfg(feature = "gltf")]
 pub use formats::gltf::{
-    consistent_rotations, import_glb, import_gltf, GltfAsset, GltfMotion, NodeSelection,
-    CONTROL_NODE_NAME, EXTRAS_KEY, GENERATOR, MAX_GLTF_BYTES, OBJECT_NODE_NAME,
-    PLACEHOLDER_HALF_EXTENTS,
+    import_glb, import_gltf, GltfAsset, GltfMotion, NodeSelection, CONTROL_NODE_NAME, EXTRAS_KEY,
+    GENERATOR, MAX_GLTF_BYTES, OBJECT_NODE_NAME, PLACEHOLDER_HALF_EXTENTS,
 };
 pub use formats::gltf::{is_glb, split_glb};
 #[cfg(feature = "gltf")]
 pub use formats::interop::{
     export_motion, import_motion_file, mesh_radius, ExportFormat, ExportSettings, ExportedMotion,
-    ImportKind, SamplingMode,
+    ImportKind,
 };
 pub use formats::keyframes::REPEAT_TOLERANCE;
 pub use formats::reduce::{reduce_poses, Reduction, MANY_POSES};
@@ -141,6 +140,10 @@ pub use formats::sampling::{
     check_timing, check_tolerance, interpolate_linear, linear_deviation, sample_fixed_rate,
     sample_motion, sample_polyscrew, sample_polyscrew_within, sample_screwbender, trajectory,
     Deviation, Sample, DEFAULT_TOLERANCE, MAX_SAMPLES, MAX_SAMPLE_ANGLE, MIN_TOLERANCE,
+};
+pub use formats::tracks::{
+    consistent_rotations, keyframe_tracks, sample_document, DocumentSamples, KeyframeTracks,
+    SamplingMode,
 };
 pub use motion::{Kinematics, Motion};
 pub use polyscrew::Polyscrew;

@@ -12,15 +12,10 @@ use crate::formats::gltf::export::PLACEHOLDER_HALF_EXTENTS;
 use crate::formats::gltf::export::{GltfAsset, GltfMotion};
 use crate::formats::gltf::glb::is_glb;
 use crate::formats::gltf::import::{import_glb, import_gltf, NodeSelection, MAX_GLTF_BYTES};
-use crate::formats::sampling::{
-    sample_fixed_rate, sample_polyscrew_within, Deviation, DEFAULT_TOLERANCE,
-};
-use crate::motion::Motion;
-use crate::polyscrew::Polyscrew;
+use crate::formats::sampling::Deviation;
+use crate::formats::tracks::{sample_document, DocumentSamples, SamplingMode};
 use crate::scenes::mesh::Mesh;
-use crate::screwbender::ScrewBender;
 use crate::subdivision::Subdivision;
-use crate::timing::Timing;
 
 /// The file formats of [`export_motion`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -48,23 +43,6 @@ impl ExportFormat {
                 },
             )),
         }
-    }
-}
-
-/// How the motion is sampled in time.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum SamplingMode {
-    /// Adaptive keyframes: linear interpolation between them stays within this distance (scene
-    /// units) of the true motion at the object's points (see [`sample_polyscrew_within`] and
-    /// [`ExportSettings::radius`]).
-    Adaptive(f64),
-    /// A fixed frame rate (frames per second).
-    FixedRate(f64),
-}
-
-impl Default for SamplingMode {
-    fn default() -> Self {
-        SamplingMode::Adaptive(DEFAULT_TOLERANCE)
     }
 }
 
@@ -142,13 +120,6 @@ pub fn export_motion(
             },
         ));
     }
-    let closed = doc.closed;
-    let n = doc.poses.len();
-    let coarse_spans = if closed { n } else { n.saturating_sub(1) };
-    let timing = match &settings.times {
-        Some(times) => Timing::for_keys(Some(times.clone()), doc.velocities.as_deref(), n, closed)?,
-        None => doc.timing()?,
-    };
     let radius = match settings.point {
         Some(_) => 0.0,
         None => settings.radius.unwrap_or_else(|| match settings.mesh {
@@ -160,20 +131,18 @@ pub fn export_motion(
         Some(p) => Deviation::Point(p),
         None => Deviation::Body { radius },
     };
-    let (motion, polyscrew): (Box<dyn Motion>, Polyscrew) = if sub.levels == 0 {
-        let p = Polyscrew::new(doc.poses.clone(), closed)?;
-        (Box::new(p.clone()), p)
-    } else {
-        let sb = ScrewBender::new(doc.poses.clone(), closed, sub)?;
-        let p = sb.refined().clone();
-        (Box::new(sb), p)
-    };
-    let samples = match settings.sampling {
-        SamplingMode::FixedRate(fps) => sample_fixed_rate(motion.as_ref(), &timing, fps)?,
-        SamplingMode::Adaptive(tolerance) => {
-            sample_polyscrew_within(&polyscrew, coarse_spans, &timing, tolerance, deviation)?
-        }
-    };
+    let DocumentSamples {
+        samples,
+        timing,
+        motion_name,
+    } = sample_document(
+        doc,
+        sub,
+        settings.sampling,
+        settings.times.as_deref(),
+        deviation,
+    )?;
+    let closed = doc.closed;
     let (data, bin) = match settings.format {
         ExportFormat::Csv => {
             let text = match settings.point {
@@ -214,7 +183,7 @@ pub fn export_motion(
             SamplingMode::Adaptive(_) => Some(radius),
             SamplingMode::FixedRate(_) => None,
         },
-        motion_name: motion.name(),
+        motion_name,
     })
 }
 

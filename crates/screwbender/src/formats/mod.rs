@@ -2,9 +2,10 @@
 //! sampling that turns a motion into keyframes within a tolerance.
 //!
 //! From the bottom up: `keyframes.rs` (what every keyframe import shares), `document.rs`,
-//! `sampling.rs`, `csv.rs`, `gltf/` (the GLB container, export, import), `reduce.rs` (fewer
-//! control poses from dense imported ones) and `interop.rs`, which picks a format for the CLI
-//! and the JS API.
+//! `sampling.rs`, `tracks.rs` (a document sampled in time as the exports do; keyframe tracks for
+//! three.js), `csv.rs`, `gltf/` (the GLB container, export, import), `reduce.rs` (fewer control
+//! poses from dense imported ones) and `interop.rs`, which picks a format for the CLI and the JS
+//! API.
 
 pub(crate) mod csv;
 pub(crate) mod document;
@@ -14,3 +15,4 @@ pub(crate) mod interop;
 pub(crate) mod keyframes;
 pub(crate) mod reduce;
 pub(crate) mod sampling;
+pub(crate) mod tracks;

@@ -26,6 +26,7 @@ use serde_json::json as js;
 use super::names::{CONTROL_NODE_NAME, EXTRAS_KEY};
 use crate::error::{Error, ErrorKind};
 use crate::formats::sampling::Sample;
+use crate::formats::tracks::consistent_rotations;
 use crate::pose::Pose;
 use crate::scenes::mesh::Mesh;
 
@@ -230,25 +231,6 @@ fn raw(v: &serde_json::Value) -> Result<Box<serde_json::value::RawValue>, Error>
             },
         )
     })
-}
-
-/// Rotations as `f32` `[x, y, z, w]`, each sign chosen so its dot with the previous one is ≥ 0
-/// (glTF slerps between the stored values, so `q` / `−q` flips would spin the long way).
-pub fn consistent_rotations(poses: &[Pose]) -> Vec<[f32; 4]> {
-    let mut prev: Option<glam::DQuat> = None;
-    poses
-        .iter()
-        .map(|p| {
-            let mut q = p.rotation.normalize();
-            if let Some(pq) = prev {
-                if pq.dot(q) < 0.0 {
-                    q = -q;
-                }
-            }
-            prev = Some(q);
-            [q.x as f32, q.y as f32, q.z as f32, q.w as f32]
-        })
-        .collect()
 }
 
 fn node_trs(name: String, pose: &Pose, mesh: Option<json::Index<json::Mesh>>) -> json::Node {

@@ -10,10 +10,7 @@ pub(crate) mod import;
 pub(crate) mod names;
 
 #[cfg(feature = "gltf")]
-pub use export::{
-    consistent_rotations, GltfAsset, GltfMotion, GENERATOR, OBJECT_NODE_NAME,
-    PLACEHOLDER_HALF_EXTENTS,
-};
+pub use export::{GltfAsset, GltfMotion, GENERATOR, OBJECT_NODE_NAME, PLACEHOLDER_HALF_EXTENTS};
 pub use glb::{is_glb, split_glb};
 #[cfg(feature = "gltf")]
 pub use import::{import_glb, import_gltf, NodeSelection, MAX_GLTF_BYTES};
