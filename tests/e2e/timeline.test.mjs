@@ -276,6 +276,43 @@ test(`${BACKEND}: times and velocities survive a reload and a share link; old se
   assert.deepEqual(problems, []);
 });
 
+test(`${BACKEND}: a <screw-bender> figure seeks in seconds of its motion's key times; its time event gives t and u`, async () => {
+  const fig = await play.context.newPage();
+  const figProblems = [];
+  fig.on('pageerror', (e) => figProblems.push(`pageerror: ${e.message}`));
+  fig.on('console', (m) => m.type() === 'error' && figProblems.push(`console: ${m.text()}`));
+  try {
+    await fig.goto(`${play.url}examples/course.html`);
+    await fig.waitForFunction(() => customElements.get('screw-bender'));
+    await fig.evaluate(() => document.getElementById('fig-fourpoint').ready);
+    await fig.evaluate((t) => {
+      const el = document.getElementById('fig-fourpoint');
+      el.document = { ...el.document, times: t };
+    }, TIMES);
+    await fig.waitForFunction((n) => document.getElementById('fig-fourpoint').document?.times?.length === n, TIMES.length, { timeout: 30000 });
+    const details = await fig.evaluate((t) => {
+      const el = document.getElementById('fig-fourpoint');
+      const seen = [];
+      el.addEventListener('time', (e) => seen.push(e.detail));
+      for (const x of t) el.seek(x);
+      el.seek(2);
+      return seen;
+    }, TIMES);
+    assert.equal(details.length, TIMES.length + 1, 'one time event per seek');
+    TIMES.forEach((t, i) => {
+      const d = details[i];
+      // The cycle's last time is its first pose again (t wraps to the start of the period).
+      assert.equal(d.t, i < 6 ? t : 0);
+      assert.ok(Math.abs(d.u - (i % 6)) < 1e-9, `figure: u = ${d.u} at t = ${t}`);
+      assert.deepEqual([d.start, d.end], [0, 9]);
+    });
+    assert.ok(details[7].u > 1 && details[7].u < 2, `u = ${details[7].u} at 2 s (between poses 1 and 2)`);
+    assert.deepEqual(figProblems, []);
+  } finally {
+    await fig.close();
+  }
+});
+
 test(`${BACKEND}: screenshots of the timeline (desktop and phone)`, async () => {
   await timed();
   await sb(() => {
