@@ -1,0 +1,51 @@
+// What a lesson step does to the app before it is shown: its scene or document, motion options,
+// display settings, timing, selection and dock view (fields: www/lessons/README.md).
+import * as wasm from '../../pkg/screwbender.js';
+
+/**
+ * Applies step `s` to `app` and points the highlight at `s.highlight` through `setTarget`.
+ * Throws (the player shows the message) if the app refuses a part of it.
+ */
+export function applyStep(app, s, setTarget) {
+  if (s.scene) app.loadPreset(s.scene);
+  if (s.document) {
+    const motion = new wasm.Motion(s.document, app.motion.options());
+    app.edit(() => {
+      app.motion.free();
+      app.motion = motion;
+      app.selected = -1;
+      app.anim.u = 0;
+      app.frameAll();
+    });
+  }
+  const o = s.options ? { ...s.options } : null;
+  if (o || s.display || s.timing?.times !== undefined) {
+    app.edit(() => {
+      if (o) {
+        if (o.closed !== undefined) app.motion.setClosed(o.closed);
+        delete o.closed;
+        if (o.j !== undefined && o.scheme === undefined) o.scheme = 'j';
+        if (Object.keys(o).length) app.motion.setOptions(o);
+      }
+      if (s.display) {
+        Object.assign(app.view, s.display);
+        if (s.display.object !== undefined) app.meshesChanged();
+      }
+      if (s.timing?.times !== undefined) app.view.times = s.timing.times;
+    });
+  }
+  if (s.select !== undefined) app.select(s.select < app.motion.poseCount ? s.select : -1);
+  const t = s.timing ?? {};
+  if (t.speed !== undefined) app.anim.speed = t.speed;
+  if (t.u !== undefined) {
+    const [a, b] = app.motion.domain();
+    app.anim.u = Math.min(b, Math.max(a, t.u));
+    app.anim.visible = true;
+    app.updateAnim();
+  }
+  if (t.play !== undefined) app.setPlaying(t.play);
+  if (s.dock !== undefined && s.dock !== (app.view.dock || '')) app.openView(s.dock);
+  setTarget(s.highlight ?? null);
+  app.ui.refresh();
+  app.requestDraw();
+}

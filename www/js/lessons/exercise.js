@@ -1,0 +1,99 @@
+// The exercise of a lesson step on the card: the task, the multiple choice, the Check and Hint
+// buttons, the hints shown so far, and the feedback of a check (checks themselves: checks.js).
+import { renderText } from './format.js';
+import { evaluateExercise } from './checks.js';
+import { writeProgress } from './progress.js';
+import { el } from './dom.js';
+
+/**
+ * Creates the exercise part of the lesson card in `box`; `bar` is the card's step bar (its dot
+ * of a solved step is marked). `st` is the player's state {lesson, step, answer, hintShown,
+ * progress}, read and updated here. Returns {render(x), choose(k), check()}.
+ */
+export function createExercise(app, box, bar, st) {
+  /** Shows exercise `x` of the open step. */
+  function render(x) {
+    const solved = st.progress.solved.includes(st.step);
+    const task = el('div', 'task');
+    task.append(el('b', 'label', solved ? 'Exercise ✓ solved' : 'Exercise'), renderText(x.task));
+    box.append(task);
+    if (x.choices) {
+      const fs = el('div', 'choices');
+      fs.setAttribute('role', 'radiogroup');
+      x.choices.forEach((c, k) => {
+        const label = el('label');
+        const r = el('input');
+        r.type = 'radio';
+        r.name = 'lesson-choice';
+        r.value = String(k);
+        r.checked = st.answer === k;
+        r.addEventListener('change', () => (st.answer = k));
+        const span = el('span');
+        span.append(renderText(c));
+        label.append(r, span);
+        fs.append(label);
+      });
+      box.append(fs);
+    }
+    const row = el('div', 'row');
+    const checkBtn = el('button', 'check primary', 'Check');
+    checkBtn.addEventListener('click', () => check());
+    row.append(checkBtn);
+    if (x.hints?.length) {
+      const hintBtn = el('button', 'hint', 'Hint');
+      hintBtn.addEventListener('click', () => showHint(x));
+      row.append(hintBtn);
+    }
+    box.append(row, el('div', 'hints'), Object.assign(el('p', 'feedback'), { role: 'status' }));
+    if (solved) setFeedback(true, [x.success ?? 'Solved earlier; check again any time.']);
+  }
+
+  function showHint(x) {
+    const hints = box.querySelector('.hints');
+    if (st.hintShown >= x.hints.length) return;
+    const h = el('div', 'hint-text');
+    h.append(el('b', '', `Hint ${st.hintShown + 1}: `), renderText(x.hints[st.hintShown]));
+    hints.append(h);
+    st.hintShown++;
+  }
+
+  function setFeedback(ok, lines, math = true) {
+    const fb = box.querySelector('.feedback');
+    fb.className = `feedback ${ok ? 'ok' : 'no'}`;
+    fb.replaceChildren();
+    for (const line of lines) {
+      const d = el('div');
+      if (math) d.append(renderText(line));
+      else d.textContent = line;
+      fb.append(d);
+    }
+  }
+
+  /** Picks answer `k` of the step's multiple choice. */
+  function choose(k) {
+    st.answer = k;
+    const r = box.querySelector(`input[value="${k}"]`);
+    if (r) r.checked = true;
+  }
+
+  /** Runs the open step's checks (the Check button); saves a solved state and the answer. */
+  function check() {
+    const { lesson, step, progress } = st;
+    const x = lesson?.steps[step]?.exercise;
+    if (!x) return null;
+    const r = evaluateExercise(x, app.motion, st.answer);
+    if (st.answer !== null) progress.answers[step] = st.answer;
+    if (r.ok && !progress.solved.includes(step)) progress.solved.push(step);
+    writeProgress(lesson.id, progress);
+    if (r.ok) setFeedback(true, [x.success ?? 'Correct.']);
+    else {
+      const lines = r.results.filter((c) => !c.ok).map((c) => (c.want ? `Not yet: ${c.got}; wanted ${c.want}.` : `Not yet: ${c.got}.`));
+      setFeedback(false, lines, false);
+    }
+    box.querySelector('.task .label').textContent = progress.solved.includes(step) ? 'Exercise ✓ solved' : 'Exercise';
+    bar.children[step]?.classList.toggle('solved', progress.solved.includes(step));
+    return r;
+  }
+
+  return { render, choose, check };
+}
