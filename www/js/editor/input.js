@@ -6,23 +6,22 @@
 import { qaxis, qmul, qnormalize } from '../math.js';
 import { SNAP_ROTATE, SNAP_TRANSLATE, gizmoAxes } from '../view/gizmo.js';
 import { pickPoses } from '../view/picking.js';
+import { beginPoseDrag, dragTarget, hoverPoseTool, redrawPoseDrag, setDragPose } from '../view/pose-drag.js';
 
 export default {
   id: 'input',
   create(app) {
-    function beginPoseDrag(part, pt, e) {
-      const pose = app.motion.pose(app.selected);
-      const drag = app.viewer.startDrag(part, pose, pt);
-      if (!drag) return false;
-      app.drag = { part, drag, index: app.selected, moved: false, before: app.snapshot(), session: app.viewer.drawing.dragSession() };
-      app.canvas.setPointerCapture?.(e.pointerId);
+    function beginDrag(part, pt, e) {
+      const d = beginPoseDrag(app.viewer, app.motion, app.selected, part, pt, e);
+      if (!d) return false;
+      app.drag = Object.assign(d, { before: app.snapshot() });
       app.viewer.rebuildGizmo();
       return true;
     }
 
     function dragMove(pt, snapOn) {
       const d = app.drag;
-      const pose = d.drag.move(app.viewer.ray(pt), pt, snapOn || app.view.snap);
+      const pose = dragTarget(app.viewer, d, pt, snapOn || app.view.snap);
       if (!pose) return;
       applyDragPose(d.index, pose);
     }
@@ -36,11 +35,10 @@ export default {
     function applyDragPose(index, pose) {
       const d = app.drag;
       const t0 = performance.now();
-      const fast = d.session && !app.view.showPolyscrew;
+      let fast;
       try {
-        if (fast) d.session.setPose(index, Float64Array.from([...pose.origin, ...pose.rotation]));
         // Views that follow drags read the Motion: give it the pose now, not only on release.
-        if (!fast || app.dock?.wantsLive) app.motion.setPose(index, pose);
+        fast = setDragPose(app.motion, d, pose, { polyscrew: app.view.showPolyscrew, live: !!app.dock?.wantsLive });
       } catch (err) {
         app.showError(err.message);
         return;
@@ -51,10 +49,8 @@ export default {
         app.history.push(d.before);
         d.moved = true;
       }
-      if (fast) {
-        d.pending = true;
-        app.viewer.drawing.dragStep(d.session, index, pose);
-      } else app.viewer.rebuild();
+      if (fast) d.pending = true;
+      redrawPoseDrag(app.viewer, d, pose, fast);
       app.dock?.changed('drag');
       app.stats.dragMs = performance.now() - t0;
     }
@@ -103,19 +99,19 @@ export default {
         lastPress = hits.length ? { pt } : null;
         if (again) {
           app.select(hits[(hits.indexOf(app.selected) + 1) % hits.length]);
-          if (!beginPoseDrag(facingPlane(), pt, e)) return 'taken';
+          if (!beginDrag(facingPlane(), pt, e)) return 'taken';
           app.drag.fromHandle = true;
           return 'drag';
         }
         const part = app.viewer.gizmoHit(pt);
-        if (part && beginPoseDrag(part, pt, e)) return 'drag';
+        if (part && beginDrag(part, pt, e)) return 'drag';
         if (!hits.length) return null;
         // Of overlapping handles, the selected one stays selected (the next press cycles).
         const k = hits.includes(app.selected) ? app.selected : hits[0];
         if (k !== app.selected) app.select(k);
         // A handle dragged right away moves its pose in the world plane facing the view.
         const plane = facingPlane();
-        if (!beginPoseDrag(plane, pt, e)) return 'taken';
+        if (!beginDrag(plane, pt, e)) return 'taken';
         app.hover = plane;
         app.drag.fromHandle = true;
         app.viewer.rebuildGizmo();
@@ -129,15 +125,7 @@ export default {
         if (app.drag) endDrag();
       },
       hover(pt) {
-        const hov = app.viewer.gizmoHit(pt);
-        const hp = hov ? -1 : app.viewer.pickPose(pt);
-        if (hov !== app.hover || hp !== app.hoverPose) {
-          app.hover = hov;
-          app.hoverPose = hp;
-          app.canvas.style.cursor = hov || hp >= 0 ? 'pointer' : 'grab';
-          app.viewer.rebuildHandles();
-          app.requestDraw();
-        }
+        hoverPoseTool(app.viewer, app, pt);
       },
       click() {
         // A click on empty space deselects.

@@ -23,6 +23,7 @@
 // the element frees its GPU data and observers; no inline script or style (the stylesheet is
 // css/screw-bender.css beside this folder), so a strict CSP with 'wasm-unsafe-eval' suffices.
 import { Viewer, newModel } from '../view/viewer.js';
+import { beginPoseDrag, dragTarget, hoverPoseTool, redrawPoseDrag, setDragPose } from '../view/pose-drag.js';
 import { loadMain, loadGl } from './modules.js';
 
 /** Attributes the element watches (each maps onto an option of mount()). */
@@ -565,12 +566,10 @@ class Figure {
     const v = () => this.viewer;
     const begin = (part, pt, e) => {
       const { model } = this;
-      const pose = model.motion.pose(model.selected);
-      const drag = v().startDrag(part, pose, pt);
-      if (!drag) return false;
+      const d = beginPoseDrag(v(), model.motion, model.selected, part, pt, e);
+      if (!d) return false;
       model.drag = { part };
-      this.drag = { drag, index: model.selected, moved: false, session: v().drawing.dragSession() };
-      v().canvas.setPointerCapture?.(e.pointerId);
+      this.drag = d;
       v().rebuildGizmo();
       return true;
     };
@@ -601,29 +600,15 @@ class Figure {
         this.guard(() => {
           const d = this.drag;
           if (!d) return;
-          const pose = d.drag.move(v().ray(pt), pt, e.shiftKey);
+          const pose = dragTarget(v(), d, pt, e.shiftKey);
           if (!pose) return;
-          this.model.motion.setPose(d.index, pose);
+          const fast = setDragPose(this.model.motion, d, pose, { polyscrew: this.model.view.showPolyscrew, live: true });
           d.moved = true;
-          if (d.session && !this.model.view.showPolyscrew) {
-            d.session.setPose(d.index, Float64Array.from([...pose.origin, ...pose.rotation]));
-            v().drawing.dragStep(d.session, d.index, pose);
-          } else v().rebuild();
+          redrawPoseDrag(v(), d, pose, fast);
         }),
       release: () => this.guard(end),
       cancel: () => this.guard(end),
-      hover: (pt) => {
-        const m = this.model;
-        const hov = v().gizmoHit(pt);
-        const hp = hov ? -1 : v().pickPose(pt);
-        if (hov !== m.hover || hp !== m.hoverPose) {
-          m.hover = hov;
-          m.hoverPose = hp;
-          v().canvas.style.cursor = hov || hp >= 0 ? 'pointer' : 'grab';
-          v().rebuildHandles();
-          v().requestDraw();
-        }
-      },
+      hover: (pt) => hoverPoseTool(v(), this.model, pt),
       click: () => {
         if (this.model.selected >= 0) this.select(-1);
       },
