@@ -67,6 +67,7 @@ fn export(motion: &ScrewBender, control: &[Pose], closed: bool, timing: &Timing)
         samples: &samples,
         control,
         control_times: timing.knots(),
+        control_velocities: None,
         closed,
         mesh: Some(&mesh),
         tolerance: Some(DEFAULT_TOLERANCE),

@@ -145,3 +145,46 @@ fn bad_timing_is_refused_and_changes_nothing() {
         assert_eq!(doc, before, "a refused timing changed the document");
     }
 }
+
+/// glTF keyframes carry the key times but not the retiming's slopes: the exporter records the
+/// given velocities in the control animation's extras and import restores them, so a timed,
+/// constrained motion comes back with the same timing; a malformed record is refused naming it.
+#[test]
+fn key_velocities_survive_a_glb_round_trip() {
+    use screwbender::{export_motion, import_glb, ExportSettings, NodeSelection};
+    let velocities = [None, Some(0.5), None, Some(2.0), None, None];
+    let (doc, _) = timed("l_cycle_rotated", &velocities);
+    let sub = Subdivision::new(Scheme::FourPoint, Rules::Direct, 3);
+    let glb = export_motion(&doc, sub, &ExportSettings::default())
+        .unwrap()
+        .data;
+    let back = import_glb(&glb, &NodeSelection::Auto).unwrap();
+    assert_eq!(back.velocities.as_deref(), Some(&velocities[..]));
+    assert!(back.times.is_some());
+    // Without velocities nothing is recorded (and nothing comes back).
+    let mut free = doc.clone();
+    free.set_timing(doc.times.clone(), None).unwrap();
+    let glb_free = export_motion(&free, sub, &ExportSettings::default())
+        .unwrap()
+        .data;
+    assert_eq!(
+        import_glb(&glb_free, &NodeSelection::Auto)
+            .unwrap()
+            .velocities,
+        None
+    );
+    // A record with a negative velocity (same length, so the GLB's chunk sizes hold): refused,
+    // naming the extras.
+    let (from, to) = (b"\"velocities\":[null,0.5", b"\"velocities\":[null,-99");
+    let at = glb
+        .windows(from.len())
+        .position(|w| w == from)
+        .expect("the GLB's JSON chunk records the velocities");
+    let mut bad_glb = glb.clone();
+    bad_glb[at..at + to.len()].copy_from_slice(to);
+    let err = import_glb(&bad_glb, &NodeSelection::Auto).unwrap_err();
+    assert!(
+        err.to_string().contains("extras.screwbender.velocities[1]"),
+        "{err}"
+    );
+}

@@ -157,6 +157,9 @@ pub fn export_motion(
                 samples: &samples,
                 control: &doc.poses,
                 control_times: timing.knots(),
+                // Free keys only: nothing to record.
+                control_velocities: Some(timing.velocities())
+                    .filter(|v| v.iter().any(Option::is_some)),
                 closed,
                 mesh: settings.mesh,
                 tolerance: match settings.sampling {

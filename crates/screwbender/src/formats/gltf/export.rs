@@ -14,7 +14,8 @@
 //! * optionally one empty node per control pose (`control pose i`), placed at the pose.
 //!
 //! Both animations carry `extras.screwbender = {"loop": closed, "closed": closed, …}` (a cycle
-//! loops). Times start at 0: the first knot time is subtracted (and noted as `timeOffset`).
+//! loops); the control poses' also carries the key velocities (`velocities`) when any is
+//! given. Times start at 0: the first knot time is subtracted (and noted as `timeOffset`).
 //! Values are stored as `f32` (rounding about `6e-8 |x|`).
 
 use std::collections::BTreeMap;
@@ -57,6 +58,10 @@ pub struct GltfMotion<'a> {
     pub control: &'a [Pose],
     /// The knot times of the control poses (`n + 1` for a cycle: the last is pose 0 again).
     pub control_times: &'a [f64],
+    /// The key velocities of the control poses (one per pose, `None` where free; `None` when all
+    /// are free), recorded in the control animation's `extras` so that import restores them:
+    /// glTF keyframes carry the key times but not the retiming's slopes.
+    pub control_velocities: Option<&'a [Option<f64>]>,
     /// Whether the motion is a cycle (the animations loop).
     pub closed: bool,
     /// The object's mesh; `None` draws a placeholder box ([`PLACEHOLDER_HALF_EXTENTS`]).
@@ -271,6 +276,17 @@ impl GltfAsset {
                 },
             ));
         }
+        if let Some(v) = m.control_velocities {
+            if v.len() != m.control.len() || v.iter().flatten().any(|v| !v.is_finite()) {
+                return Err(Error::new(
+                    "velocities",
+                    ErrorKind::OutOfRange {
+                        value: format!("{} velocities", v.len()),
+                        expected: format!("{} finite velocities or nulls", m.control.len()),
+                    },
+                ));
+            }
+        }
         let offset = m.control_times[0];
         let times: Vec<f64> = m.samples.iter().map(|s| s.time - offset).collect();
         for (i, w) in times.windows(2).enumerate() {
@@ -402,12 +418,16 @@ impl GltfAsset {
             control_poses.push(m.control[0]);
         }
         let control_times: Vec<f64> = m.control_times.iter().map(|t| t - offset).collect();
+        let mut control_extras = common;
+        if let Some(v) = m.control_velocities {
+            control_extras["velocities"] = js!(v);
+        }
         b.animation(
             CONTROL_NODE_NAME,
             control_node,
             &control_times,
             &control_poses,
-            common,
+            control_extras,
         )?;
 
         while b.bin.len() % 4 != 0 {
@@ -510,6 +530,7 @@ mod tests {
             samples: &samples,
             control: &poses,
             control_times: timing.knots(),
+            control_velocities: None,
             closed: true,
             mesh: None,
             tolerance: Some(1e-3),

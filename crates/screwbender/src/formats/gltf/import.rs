@@ -165,6 +165,19 @@ fn import_json(
             };
             let mut doc = finish(doc, closed)?;
             doc.times = key_times(&doc, &times, offset);
+            if let Some(v) = extras.as_ref().map(|v| &v[EXTRAS_KEY]["velocities"]) {
+                if !v.is_null() {
+                    let parent = format!("animations[{a}].extras.{EXTRAS_KEY}");
+                    let velocities = key_velocities(v).ok_or_else(|| {
+                        parse_err(
+                            format!("{parent}.velocities"),
+                            "not a list of numbers and nulls",
+                        )
+                    })?;
+                    doc.set_timing(doc.times.clone(), Some(velocities))
+                        .map_err(|e| e.within(&parent))?;
+                }
+            }
             Ok(doc)
         }
     }
@@ -436,6 +449,19 @@ fn animation_poses(
         })
         .collect::<Result<Vec<_>, _>>()?;
     Ok((poses, times.clone()))
+}
+
+/// The key velocities the exporter records (`extras.screwbender.velocities`: a number or `null`
+/// per control pose); `None` when the value is not such a list.
+fn key_velocities(value: &serde_json::Value) -> Option<Vec<Option<f64>>> {
+    value
+        .as_array()?
+        .iter()
+        .map(|v| match v {
+            serde_json::Value::Null => Some(None),
+            v => v.as_f64().map(Some),
+        })
+        .collect()
 }
 
 /// The key times of imported keyframes (`times` as stored plus the exporter's `timeOffset`):
