@@ -20,7 +20,7 @@ use super::options::{self, default_subdivision};
 use super::scenes::find_scene;
 use screwbender::{
     screw, Error, ErrorKind, Motion, MotionDocument, Polyscrew, Pose, Rules, ScrewBender,
-    Subdivision, MAX_REFINED_POSES,
+    Subdivision, SubdivisionBuffers, MAX_REFINED_POSES,
 };
 
 /// What a `Motion` stores: always valid (see [`State::check`]).
@@ -54,6 +54,11 @@ struct Inner {
     state: State,
     /// The subdivided motion of `state`, computed on first use.
     refined: Option<ScrewBender>,
+    /// The last subdivided motion after a change made it stale: the next subdivision is
+    /// rebuilt in its memory ([`ScrewBender::rebuild`]) instead of fresh memory.
+    spare: Option<ScrewBender>,
+    /// The subdivision's working sequences, kept from one subdivision to the next.
+    buffers: SubdivisionBuffers<Pose>,
 }
 
 /// A motion: control poses (a cycle or an open sequence) smoothed by screw subdivision.
@@ -85,6 +90,8 @@ impl MotionHandle {
             inner: RefCell::new(Inner {
                 state,
                 refined: None,
+                spare: None,
+                buffers: SubdivisionBuffers::new(),
             }),
         })
     }
@@ -111,7 +118,9 @@ impl MotionHandle {
         change(&mut next)?;
         next.check()?;
         inner.state = next;
-        inner.refined = None;
+        if let Some(stale) = inner.refined.take() {
+            inner.spare = Some(stale);
+        }
         Ok(())
     }
 
@@ -120,9 +129,22 @@ impl MotionHandle {
     pub(crate) fn with_refined<R>(&self, f: impl FnOnce(&ScrewBender) -> R) -> Result<R, JsError> {
         let mut inner = self.inner.try_borrow_mut().map_err(|_| busy())?;
         if inner.refined.is_none() {
-            let s = &inner.state;
-            let motion = ScrewBender::new(s.doc.poses.clone(), s.doc.closed, s.subdivision)?;
-            inner.refined = Some(motion);
+            let Inner {
+                state: s,
+                refined,
+                spare,
+                buffers,
+            } = &mut *inner;
+            // The same motion as `ScrewBender::new` bit for bit; in the memory of the last one
+            // when there is one (a subdivision into fresh memory pays a page fault per 4 KB).
+            let motion = match spare.take() {
+                Some(mut motion) => {
+                    motion.rebuild(&s.doc.poses, s.doc.closed, s.subdivision, buffers)?;
+                    motion
+                }
+                None => ScrewBender::new(s.doc.poses.clone(), s.doc.closed, s.subdivision)?,
+            };
+            *refined = Some(motion);
         }
         match &inner.refined {
             Some(motion) => Ok(f(motion)),
@@ -390,8 +412,11 @@ impl MotionHandle {
         next.check()?;
         // A drag calls this every frame: keep the refined motion and re-subdivide only the window
         // the moved pose influences (bit-identical to a rebuild, independent of the pose count).
-        if let Some(motion) = inner.refined.as_mut() {
-            motion.set_control_pose(i, pose)?;
+        let Inner {
+            refined, buffers, ..
+        } = &mut *inner;
+        if let Some(motion) = refined.as_mut() {
+            motion.set_control_pose_with(i, pose, buffers)?;
         }
         inner.state = next;
         Ok(())

@@ -85,6 +85,32 @@ impl ScrewBender {
     /// Returns the rewritten refined index range `(start, count)`, read cyclically. On error
     /// (index out of range, non-finite or non-unit pose) nothing changes.
     pub fn set_control_pose(&mut self, i: usize, pose: Pose) -> Result<(usize, usize), Error> {
+        self.set_control_pose_by(i, pose, |sub, control, closed, refined| {
+            sub.update_local(control, closed, i, refined)
+        })
+    }
+
+    /// [`ScrewBender::set_control_pose`] with caller-owned working buffers for the
+    /// re-subdivided window (see [`Subdivision::update_local_with`]): a drag that keeps them
+    /// needs no fresh memory per step. The result is the same bit for bit.
+    pub fn set_control_pose_with(
+        &mut self,
+        i: usize,
+        pose: Pose,
+        buffers: &mut SubdivisionBuffers<Pose>,
+    ) -> Result<(usize, usize), Error> {
+        self.set_control_pose_by(i, pose, |sub, control, closed, refined| {
+            sub.update_local_with(control, closed, i, refined, buffers)
+        })
+    }
+
+    /// [`ScrewBender::set_control_pose`] with `update` re-subdividing the window.
+    fn set_control_pose_by(
+        &mut self,
+        i: usize,
+        pose: Pose,
+        update: impl FnOnce(&Subdivision, &[Pose], bool, &mut [Pose]) -> Result<(usize, usize), Error>,
+    ) -> Result<(usize, usize), Error> {
         if i >= self.control.len() {
             return Err(Error::new(
                 "index",
@@ -97,10 +123,7 @@ impl ScrewBender {
         let pose = checked_pose(&pose).map_err(|e| e.within("pose"))?;
         let old = std::mem::replace(&mut self.control[i], pose);
         let refined = self.refined.poses_mut();
-        match self
-            .subdivision
-            .update_local(&self.control, self.closed, i, refined)
-        {
+        match update(&self.subdivision, &self.control, self.closed, refined) {
             Ok((start, count)) => {
                 self.refined.refresh_spans(start, count);
                 Ok((start, count))

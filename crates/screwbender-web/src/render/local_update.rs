@@ -15,12 +15,14 @@ use wasm_bindgen::prelude::*;
 use super::gpu::{write_instance, write_segment, LineStyle, INSTANCE_FLOATS, SEGMENT_FLOATS};
 use crate::convert::poses_from_array;
 use crate::motion::MotionHandle;
-use screwbender::{Motion, Pose, ScrewBender};
+use screwbender::{Motion, Pose, ScrewBender, SubdivisionBuffers};
 
 /// A drag in progress: the smoothed motion plus its strobe instances and trajectory segments.
 #[wasm_bindgen(js_name = DragSession)]
 pub struct DragSession {
     bender: ScrewBender,
+    /// The working buffers of the re-subdivided window, kept from one drag step to the next.
+    buffers: SubdivisionBuffers<Pose>,
     strobe_count: usize,
     colors: [[f32; 3]; 2],
     points: Vec<DVec3>,
@@ -137,6 +139,7 @@ impl DragSession {
         }
         let mut session = DragSession {
             bender,
+            buffers: SubdivisionBuffers::new(),
             strobe_count: strobe.min(screwbender::MAX_REFINED_POSES),
             colors: [rgb(&colors[..3]), rgb(&colors[3..])],
             points: points
@@ -165,7 +168,9 @@ impl DragSession {
         let pose = poses_from_array(pose, "pose")?
             .pop()
             .ok_or_else(|| JsError::new("pose: expected 7 numbers"))?;
-        let (start, count) = self.bender.set_control_pose(i, pose)?;
+        let (start, count) = self
+            .bender
+            .set_control_pose_with(i, pose, &mut self.buffers)?;
         let n = self.bender.refined().poses().len();
         if count >= n {
             self.rebuild_all();

@@ -189,12 +189,32 @@ impl Subdivision {
     /// subdivision reads there, so the result is bit-identical to a full recompute at a cost
     /// independent of the sequence length. Returns the refined index range that was rewritten as
     /// `(start, count)`, to be read cyclically (indices mod `refined.len()`).
+    ///
+    /// Natively the window's working buffers are kept on the thread as for
+    /// [`Subdivision::apply`]; [`Subdivision::update_local_with`] takes them from the caller.
     pub fn update_local<T: Blend>(
         &self,
         input: &[T],
         closed: bool,
         moved: usize,
         refined: &mut [T],
+    ) -> Result<(usize, usize), Error> {
+        let mut buffers = SubdivisionBuffers::kept();
+        let done = self.update_local_with(input, closed, moved, refined, &mut buffers);
+        buffers.keep();
+        done
+    }
+
+    /// [`Subdivision::update_local`] with caller-owned working buffers (a drag keeps them from
+    /// one step to the next, so a step needs no fresh memory). The result is the same bit for
+    /// bit.
+    pub fn update_local_with<T: Blend>(
+        &self,
+        input: &[T],
+        closed: bool,
+        moved: usize,
+        refined: &mut [T],
+        buffers: &mut SubdivisionBuffers<T>,
     ) -> Result<(usize, usize), Error> {
         self.validate()?;
         let len = self.output_len(input.len(), closed)?;
@@ -245,9 +265,7 @@ impl Subdivision {
             .map(|i| cycle[(centre + n - half + i) % n])
             .collect();
         let mut local = window;
-        let mut buffers = SubdivisionBuffers::kept();
-        self.refine_cycle(&mut local, &mut buffers);
-        buffers.keep();
+        self.refine_cycle(&mut local, buffers);
         let f = 1usize << self.levels;
         let total = n * f;
         let offset = if closed { 0 } else { k_ext * f };
@@ -466,6 +484,10 @@ fn extend_open_into<T: Blend>(input: &[T], k: usize, e: &mut Vec<T>) {
 /// So B-spline: `L(¾), L(¼), L(½)`; 4-point: `L(9/8), L(−1/8)`; Jarek: `L(7/8), L(1/8),
 /// L(17/16), L(−1/16)`. Every span is sampled at those fractions in one batch (its logarithm
 /// computed once), then the midpoints are taken in a second batch.
+// Never inlined (as `split_tweak_step`): called once per level, so the call costs nothing, and
+// every caller (`refine_cycle`, `step_cyclic`, the teaching steps) shares one copy per `T`
+// instead of inlining its own (3.3 KB gzip of the npm module).
+#[inline(never)]
 fn direct_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>, scratch: &mut Scratch<T>) {
     let n = p.len();
     let s = scheme.j_parameter();
@@ -534,6 +556,8 @@ fn interleave<T: Copy>(evens: &[T], odds: &[T], out: &mut Vec<T>) {
 /// The first version's rules (docs/math/subdivision.md §3): split, then tweak the split sequence `Z`, all right-hand
 /// sides reading `Z`. The 4-point and Jarek new-pose tweaks use the corrected argument order
 /// `s(s(Z_{j−2}, ½, Z_{j+2}), 5/4 resp. 9/8, Z_j)`.
+// Never inlined: see `direct_step`.
+#[inline(never)]
 fn split_tweak_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>, scratch: &mut Scratch<T>) {
     let n = p.len();
     let prev = |i: usize| if i == 0 { n - 1 } else { i - 1 };
