@@ -6,7 +6,9 @@
 //   node benches/wasm/compare.mjs /tmp/before pkg
 //
 // Prints, per scheme, the median ms of each build and the min / median / max of the per-burst
-// ratios (after / before).
+// ratios (after / before): for `subdivide()` alone, and for `subdivide()` then one `poseAt()`
+// (the motion ready to evaluate: since the span screws are computed on first use, that is
+// where they are paid).
 import fs from 'node:fs';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
@@ -41,7 +43,7 @@ const stats = (v) => {
 };
 
 console.log(`node ${process.version}; before ${before}, after ${after}`);
-for (const scheme of ['bspline', 'fourpoint', 'jarek']) {
+for (const [scheme, evaluate] of ['bspline', 'fourpoint', 'jarek'].flatMap((s) => [[s, false], [s, true]])) {
   const motions = modules.map((sb) => sb.Motion.fromPoses(control, true, { scheme, rules: 'direct', levels: 6 }));
   const same = motions.map((m) => m.subdivide());
   if (!same[0].every((v, i) => Object.is(v, same[1][i]))) throw new Error(`${scheme}: the builds disagree`);
@@ -54,6 +56,7 @@ for (const scheme of ['bspline', 'fourpoint', 'jarek']) {
       for (let r = 0; r < reps; r++) {
         m.setLevels(6);
         m.subdivide();
+        if (evaluate) m.poseAt(0.5);
       }
       return (performance.now() - t0) / reps;
     });
@@ -63,7 +66,7 @@ for (const scheme of ['bspline', 'fourpoint', 'jarek']) {
   }
   const [r0, r1, r2] = stats(ratios);
   console.log(
-    `subdivide 32 × 6, ${scheme} direct: before ${stats(times[0])[1].toFixed(3)} ms, after ${stats(times[1])[1].toFixed(3)} ms; ` +
+    `subdivide 32 × 6${evaluate ? ' + poseAt' : ''}, ${scheme} direct: before ${stats(times[0])[1].toFixed(3)} ms, after ${stats(times[1])[1].toFixed(3)} ms; ` +
       `after / before ${r0.toFixed(2)} / ${r1.toFixed(2)} / ${r2.toFixed(2)} (min / median / max)`,
   );
   motions.forEach((m) => m.free());

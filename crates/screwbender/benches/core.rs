@@ -206,13 +206,16 @@ fn spread(mut v: Vec<f64>) -> [f64; 3] {
 }
 
 /// `ScrewBender::new` against `Subdivision::apply` alone on the same 32 poses × 6 levels (2048
-/// refined poses), in alternating runs: what building the motion (validation, span screws)
-/// adds to the subdivision. Printed as min / median / max of the per-run ratios.
+/// refined poses), in alternating runs: what building the motion adds to the subdivision —
+/// the validation alone (the span screws are computed on first use), and the validation plus
+/// the span screws (`new` then `refined().spans()`, a motion ready to evaluate). Printed as
+/// min / median / max of the per-run ratios.
 fn report_motion_overhead() {
     let poses = cycle(&mut Rng(7), 32);
     for scheme in [Scheme::BSpline, Scheme::FourPoint, Scheme::Jarek] {
         let s = Subdivision::new(scheme, Rules::Direct, 6);
         let (mut ratios, mut apply, mut new) = (Vec::new(), Vec::new(), Vec::new());
+        let (mut ratios_spans, mut new_spans) = (Vec::new(), Vec::new());
         for _ in 0..300 {
             let t0 = std::time::Instant::now();
             for _ in 0..4 {
@@ -223,10 +226,21 @@ fn report_motion_overhead() {
                 black_box(ScrewBender::new(black_box(poses.clone()), true, s).unwrap());
             }
             let t2 = std::time::Instant::now();
-            let (a, b) = ((t1 - t0).as_secs_f64(), (t2 - t1).as_secs_f64());
+            for _ in 0..4 {
+                let m = ScrewBender::new(black_box(poses.clone()), true, s).unwrap();
+                black_box(m.refined().spans().len());
+            }
+            let t3 = std::time::Instant::now();
+            let (a, b, c) = (
+                (t1 - t0).as_secs_f64(),
+                (t2 - t1).as_secs_f64(),
+                (t3 - t2).as_secs_f64(),
+            );
             ratios.push(b / a);
+            ratios_spans.push(c / a);
             apply.push(a * 1e6 / 4.0);
             new.push(b * 1e6 / 4.0);
+            new_spans.push(c * 1e6 / 4.0);
         }
         // The span screws of the refined poses, one at a time (the route before batches) and
         // in batches (as `ScrewBender::new` builds them), alternating.
@@ -239,7 +253,8 @@ fn report_motion_overhead() {
                 .collect();
             black_box(one);
             let t1 = std::time::Instant::now();
-            black_box(screwbender::Polyscrew::new(black_box(refined.clone()), true).unwrap());
+            let p = screwbender::Polyscrew::new(black_box(refined.clone()), true).unwrap();
+            black_box(p.spans().len());
             let t2 = std::time::Instant::now();
             spans
                 .0
@@ -249,15 +264,17 @@ fn report_motion_overhead() {
                 .push((t2 - t1).as_secs_f64() * 1e9 / refined.len() as f64);
         }
         println!(
-            "  span screws per refined pose (medians): one at a time {:.1} ns, Polyscrew::new {:.1} ns",
+            "  span screws per refined pose (medians): one at a time {:.1} ns, Polyscrew::new + spans() {:.1} ns",
             spread(spans.0)[1],
             spread(spans.1)[1]
         );
         let [r0, r1, r2] = spread(ratios);
-        let (a, b) = (spread(apply)[1], spread(new)[1]);
+        let [q0, q1, q2] = spread(ratios_spans);
+        let (a, b, c) = (spread(apply)[1], spread(new)[1], spread(new_spans)[1]);
         println!(
             "ScrewBender::new / Subdivision::apply, {scheme} direct, 2048 refined poses: \
-             {r0:.2} / {r1:.2} / {r2:.2} (min / median / max; medians {b:.1} vs {a:.1} us)"
+             {r0:.2} / {r1:.2} / {r2:.2}; with the span screws {q0:.2} / {q1:.2} / {q2:.2} \
+             (min / median / max; medians {b:.1} and {c:.1} vs {a:.1} us)"
         );
     }
 }

@@ -1,5 +1,7 @@
 //! Polyscrews: poses joined by screws (docs/math/polyscrew.md).
 
+use std::sync::{Mutex, OnceLock, PoisonError};
+
 use glam::DVec3;
 
 use crate::error::{Error, ErrorKind};
@@ -10,16 +12,54 @@ use crate::screw::Screw;
 /// A sequence of poses joined by screws: on span `i` the motion is `screw(P_i, t, P_{i+1})`.
 ///
 /// Cyclic (`closed`) polyscrews have `n` spans including `P_{n−1} → P_0`; open ones have `m − 1`.
-/// Each span's screw is computed once, on construction. The motion parameter `u` is in coarse units:
+/// Each span's screw is computed once, on first use (all spans in one batch): a polyscrew whose
+/// poses alone are read (a refined motion handed out as poses) never pays for its 216-byte
+/// screws. The motion parameter `u` is in coarse units:
 /// span `i` covers `u ∈ [i·h, (i+1)·h]` where `h` is the span length (`1` for a control polyscrew,
 /// `2^−ℓ` for one refined by `ℓ` levels of subdivision), so refined and control motions share one
 /// parameter.
-#[derive(Clone, Debug, PartialEq)]
 pub struct Polyscrew {
     poses: Vec<Pose>,
     closed: bool,
-    spans: Vec<Screw>,
+    /// The span screws, computed on first use ([`Polyscrew::spans`]).
+    spans: OnceLock<Vec<Screw>>,
+    /// The memory of span screws made stale by [`Polyscrew::refill`], reused when they are
+    /// computed again.
+    spare: Mutex<Vec<Screw>>,
     span_length: f64,
+}
+
+impl Clone for Polyscrew {
+    fn clone(&self) -> Self {
+        Polyscrew {
+            poses: self.poses.clone(),
+            closed: self.closed,
+            spans: self.spans.clone(),
+            spare: Mutex::new(Vec::new()),
+            span_length: self.span_length,
+        }
+    }
+}
+
+/// Equal poses, closedness, span length and span screws (computed if they were not yet).
+impl PartialEq for Polyscrew {
+    fn eq(&self, other: &Self) -> bool {
+        self.poses == other.poses
+            && self.closed == other.closed
+            && self.span_length == other.span_length
+            && self.spans() == other.spans()
+    }
+}
+
+impl std::fmt::Debug for Polyscrew {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Polyscrew")
+            .field("poses", &self.poses)
+            .field("closed", &self.closed)
+            .field("spans", &self.spans())
+            .field("span_length", &self.span_length)
+            .finish()
+    }
 }
 
 impl Polyscrew {
@@ -57,11 +97,11 @@ impl Polyscrew {
             ));
         }
         check_poses(&mut poses)?;
-        let spans = span_screws(&poses, closed);
         Ok(Polyscrew {
             poses,
             closed,
-            spans,
+            spans: OnceLock::new(),
+            spare: Mutex::new(Vec::new()),
             span_length,
         })
     }
@@ -90,8 +130,9 @@ impl Polyscrew {
         check_poses(&mut self.poses)?;
         self.closed = closed;
         self.span_length = span_length;
-        self.spans.clear();
-        span_screws_into(&self.poses, closed, &mut self.spans);
+        if let Some(stale) = self.spans.take() {
+            *self.spare.get_mut().unwrap_or_else(PoisonError::into_inner) = stale;
+        }
         Ok(())
     }
 
@@ -105,10 +146,14 @@ impl Polyscrew {
     /// read cyclically for a closed polyscrew).
     pub(crate) fn refresh_spans(&mut self, start: usize, count: usize) {
         let n = self.poses.len();
-        let spans = self.spans.len();
+        // Not computed yet: they will be, from the new poses.
+        let Some(screws) = self.spans.get_mut() else {
+            return;
+        };
+        let spans = screws.len();
         if count >= n {
-            self.spans.clear();
-            span_screws_into(&self.poses, self.closed, &mut self.spans);
+            screws.clear();
+            span_screws_into(&self.poses, self.closed, screws);
             return;
         }
         // Spans start−1 … start+count−1 have an end in the range: recomputed in runs of
@@ -132,7 +177,7 @@ impl Polyscrew {
                 // The closing span n − 1 → 0 alone.
                 fresh.push(Screw::between(&self.poses[first], &self.poses[0]));
             }
-            self.spans[first..first + len].copy_from_slice(&fresh);
+            screws[first..first + len].copy_from_slice(&fresh);
             k += len;
         }
     }
@@ -147,9 +192,26 @@ impl Polyscrew {
         self.closed
     }
 
+    /// The number of spans: `n` closed, `n − 1` open.
+    fn span_count(&self) -> usize {
+        let n = self.poses.len();
+        if self.closed {
+            n
+        } else {
+            n - 1
+        }
+    }
+
     /// The screws of the spans, `spans()[i]` from pose `i` to pose `i+1` (mod `n` when closed).
     pub fn spans(&self) -> &[Screw] {
-        &self.spans
+        self.spans.get_or_init(|| {
+            // In the memory of the last stale screws, if any (bit for bit the same screws).
+            let mut spans =
+                std::mem::take(&mut *self.spare.lock().unwrap_or_else(PoisonError::into_inner));
+            spans.clear();
+            span_screws_into(&self.poses, self.closed, &mut spans);
+            spans
+        })
     }
 
     /// Coarse parameter units covered by one span.
@@ -161,7 +223,7 @@ impl Polyscrew {
     /// of an open polyscrew) for coarse parameter `u`.
     pub fn locate(&self, u: f64) -> (usize, f64) {
         let x = u / self.span_length;
-        let count = self.spans.len();
+        let count = self.span_count();
         if self.closed {
             let x = x.rem_euclid(count as f64);
             // rem_euclid may round up to exactly `count`.
@@ -180,7 +242,7 @@ impl Polyscrew {
     /// The pose at coarse parameter `u` (docs/math/polyscrew.md).
     pub fn pose_at(&self, u: f64) -> Pose {
         let (i, t) = self.locate(u);
-        self.spans[i].at(t)
+        self.spans()[i].at(t)
     }
 
     /// Closed-form kinematics of the body point `local` at `u`, per coarse parameter unit.
@@ -196,7 +258,7 @@ impl Polyscrew {
     /// Kinematics on span `i` at local fraction `t` (see [`Polyscrew::point_kinematics`]); with
     /// `t = 1` this is the left-hand value at the span's end.
     pub fn span_kinematics(&self, i: usize, t: f64, local: DVec3) -> Kinematics {
-        let span = &self.spans[i];
+        let span = &self.spans()[i];
         let x = span.at(t).transform_point(local);
         let (omega, v0) = span.twist();
         let inv_h = 1.0 / self.span_length;
@@ -250,13 +312,6 @@ pub(crate) fn check_poses(poses: &mut [Pose]) -> Result<(), Error> {
     Ok(())
 }
 
-/// The screw of every span of a pose sequence (see [`span_screws_into`]).
-pub(crate) fn span_screws(poses: &[Pose], closed: bool) -> Vec<Screw> {
-    let mut spans = Vec::new();
-    span_screws_into(poses, closed, &mut spans);
-    spans
-}
-
 /// Appends the screw of every span of a pose sequence to `out`: several at a time on SIMD
 /// lanes where the build has them, bit for bit [`Screw::between`] of each span.
 pub(crate) fn span_screws_into(poses: &[Pose], closed: bool, out: &mut Vec<Screw>) {
@@ -276,7 +331,7 @@ impl Motion for Polyscrew {
     }
 
     fn domain(&self) -> (f64, f64) {
-        (0.0, self.spans.len() as f64 * self.span_length)
+        (0.0, self.span_count() as f64 * self.span_length)
     }
 
     fn is_closed(&self) -> bool {
