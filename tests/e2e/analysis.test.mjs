@@ -2,7 +2,8 @@
 // modal dialog; Esc changes nothing); the plots have units, labelled 1-2-5 ticks, a playhead
 // that follows playback and a hover that shows that instant's pose in 3-D; Metrics and Methods
 // speak in human names; the dock's tabs stay in one row with an overflow menu, and the 3-D view
-// moves into the part of the window the dock leaves free.
+// moves into the part of the window the dock leaves free (and the toolbar: phones on their side).
+// On phones the Plots view shows one chart at a time, picked from a list, with nothing to scroll.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
@@ -168,6 +169,10 @@ test(`${BACKEND}: plots have units on the y axes and at least 3 labelled ticks o
       assert.ok([1, 2, 5].some((k) => Math.abs(m - k) < 1e-6), `${c.id} ${axis} step ${step}`);
     }
   }
+  // Wide screens: every chart at once, no chart list.
+  const shown = await sb(() => window.screwbender.app.dock.current.charts.filter((c) => c.box.offsetParent !== null).length);
+  assert.equal(shown, 5);
+  assert.ok(await page.locator('#dock .view-plots select.pick').isHidden());
   // Nothing to scroll: the dock's body holds all the charts.
   const body = await sb(() => {
     const b = document.querySelector('#dock .body');
@@ -251,7 +256,7 @@ const tabRow = () =>
     all: [...document.querySelectorAll('#dock .tabs button')].map((b) => b.dataset.view),
   }));
 
-for (const [w, h] of [[1280, 800], [390, 844]]) {
+for (const [w, h] of [[1280, 800], [390, 844], [844, 390]]) {
   test(`${BACKEND}: ${w}x${h}: the dock's tabs are one row; the overflow menu and the arrow keys reach every view`, async () => {
     await page.setViewportSize({ width: w, height: h });
     await sb(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
@@ -313,7 +318,7 @@ for (const [w, h] of [[1280, 800], [390, 844]]) {
   });
 }
 
-for (const [w, h] of [[1280, 800], [1000, 800], [700, 800], [390, 844]]) {
+for (const [w, h] of [[1280, 800], [1000, 800], [700, 800], [390, 844], [844, 390]]) {
   test(`${BACKEND}: ${w}x${h}: with the dock open the scene is framed in the part of the window the dock leaves free`, async () => {
     await page.setViewportSize({ width: w, height: h });
     await sb(() => window.screwbender.openView(''));
@@ -326,9 +331,11 @@ for (const [w, h] of [[1280, 800], [1000, 800], [700, 800], [390, 844]]) {
       const n = app.motion.poseCount;
       const pts = Array.from({ length: n }, (_, i) => window.screwbender.handleOnPage(i));
       const c = { x: pts.reduce((s, p) => s + p.x, 0) / n, y: pts.reduce((s, p) => s + p.y, 0) / n };
-      const d = document.getElementById('dock').getBoundingClientRect();
-      const v = document.getElementById('view').getBoundingClientRect();
-      return { c, d: { l: d.left, r: d.right, t: d.top, b: d.bottom }, v: { l: v.left, r: v.right, t: v.top, b: v.bottom } };
+      const box = (id) => {
+        const b = document.getElementById(id).getBoundingClientRect();
+        return { l: b.left, r: b.right, t: b.top, b: b.bottom };
+      };
+      return { c, d: box('dock'), v: box('view'), tb: box('toolbar') };
     });
     const inDock = r.c.x > r.d.l && r.c.x < r.d.r && r.c.y > r.d.t && r.c.y < r.d.b;
     assert.ok(!inDock, `the scene's centre ${JSON.stringify(r.c)} is under the dock ${JSON.stringify(r.d)}`);
@@ -337,6 +344,11 @@ for (const [w, h] of [[1280, 800], [1000, 800], [700, 800], [390, 844]]) {
     const overlapX = Math.min(r.v.r, r.d.r) - Math.max(r.v.l, r.d.l);
     const overlapY = Math.min(r.v.b, r.d.b) - Math.max(r.v.t, r.d.t);
     assert.ok(overlapX <= 1 || overlapY <= 1, `view ${JSON.stringify(r.v)} under the dock ${JSON.stringify(r.d)}`);
+    // Nor under the toolbar (on phones on their side it stands at the left edge).
+    const underX = Math.min(r.v.r, r.tb.r) - Math.max(r.v.l, r.tb.l);
+    const underY = Math.min(r.v.b, r.tb.b) - Math.max(r.v.t, r.tb.t);
+    assert.ok(underX <= 1 || underY <= 1, `view ${JSON.stringify(r.v)} under the toolbar ${JSON.stringify(r.tb)}`);
+    assert.ok(r.v.r - r.v.l >= 240 && r.v.b - r.v.t >= 200, `view ${JSON.stringify(r.v)} too small`);
     // Closed: the view fills the window again.
     await sb(() => window.screwbender.openView(''));
     const full = await sb(() => {
@@ -344,6 +356,79 @@ for (const [w, h] of [[1280, 800], [1000, 800], [700, 800], [390, 844]]) {
       return [v.left, v.top, v.width, v.height];
     });
     assert.deepEqual(full, [0, 0, w, h]);
+    assert.deepEqual(problems, []);
+  });
+}
+
+for (const [w, h, shot] of [[390, 844, 'analysis-390-plots.png'], [844, 390, 'analysis-844x390.png']]) {
+  test(`${BACKEND}: ${w}x${h}: the Plots view shows one chart at a time, picked from a list; nothing scrolls`, async () => {
+    await page.setViewportSize({ width: w, height: h });
+    await sb(() => window.screwbender.openView(''));
+    await openPlots();
+    await waitFrames(page, 2);
+    const state = () =>
+      sb(() => {
+        const v = window.screwbender.app.dock.current;
+        const b = document.querySelector('#dock .body');
+        const body = b.getBoundingClientRect();
+        const legend = document.querySelector('#dock .plot-grid .legend').getBoundingClientRect();
+        const shown = v.charts.filter((c) => c.box.offsetParent !== null);
+        return {
+          shown: shown.map((c) => c.id),
+          ticks: shown.map((c) => c.ticks()),
+          y: shown.map((c) => c.plot.axes[1].label),
+          plotHeight: shown.map((c) => c.plot.over.clientHeight),
+          axis: v.axis,
+          scroll: b.scrollHeight,
+          client: b.clientHeight,
+          legendIn: legend.top >= body.top && legend.bottom <= body.bottom + 1,
+        };
+      });
+    const pick = page.locator('#dock .view-plots select.pick');
+    assert.ok(await pick.isVisible(), 'the chart list is shown');
+    assert.ok(await page.locator('#dock .view-plots select[aria-label=coordinate]').isHidden(), 'the list replaces the coordinate menu');
+    // The body point and the derivatives are under Options: hidden until it is pressed.
+    const options = page.locator('#dock .view-plots button.pick');
+    const point = page.locator('#dock .view-plots input[aria-label="body point x"]');
+    assert.ok(await point.isHidden(), 'the body point is under Options');
+    await options.click();
+    assert.equal(await options.getAttribute('aria-expanded'), 'true');
+    assert.ok(await point.isVisible(), 'Options shows the body point');
+    assert.ok(await page.locator('#dock .view-plots select[aria-label=derivatives]').isVisible(), 'Options shows the derivatives');
+    await options.click();
+    assert.equal(await options.getAttribute('aria-expanded'), 'false');
+    assert.ok(await point.isHidden(), 'Options pressed again hides them');
+    const checks = [
+      ['position x', 'coord', 0, /x \(units\)/],
+      ['speed |v|', 'speed', 0, /\(units\/s\)/],
+      ['angular acceleration |α|', 'alpha', 0, /\(rad\/s²\)/],
+      ['position z', 'coord', 2, /z \(units\)/],
+    ];
+    for (const [label, id, axis, unit] of checks) {
+      await pick.selectOption({ label });
+      await sb(() => window.screwbender.flushViews());
+      await waitFrames(page, 1);
+      const s = await state();
+      assert.deepEqual(s.shown, [id], `${label}: charts shown ${s.shown}`);
+      assert.equal(s.axis, axis, `${label}: coordinate`);
+      assert.match(s.y[0], unit, `${label}: y label ${s.y[0]}`);
+      assert.ok(s.ticks[0].x.length >= 3 && s.ticks[0].y.length >= 3, `${label}: ticks ${JSON.stringify(s.ticks[0])}`);
+      assert.ok(s.plotHeight[0] >= 60, `${label}: plot ${s.plotHeight[0]} px high`);
+      assert.ok(s.scroll <= s.client + 1, `${label}: the dock scrolls: ${s.scroll} > ${s.client}`);
+      assert.ok(s.legendIn, `${label}: the legend is out of the dock`);
+    }
+    // The playhead follows the time on the chart shown.
+    await sb(() => window.screwbender.app.seekTime(1.5));
+    await page.waitForFunction(() => {
+      const c = window.screwbender.app.dock.current.charts.find((k) => k.box.offsetParent !== null);
+      return c.playheadX !== null && Math.abs(c.playheadX - 1.5) < 1e-9;
+    });
+    await pick.selectOption({ label: 'position x' });
+    await sb(() => window.screwbender.app.seekTime(0));
+    await sb(() => window.screwbender.flushViews());
+    await waitFrames(page, 2);
+    await quiet();
+    await page.screenshot({ path: path.join(DOCS, shot) });
     assert.deepEqual(problems, []);
   });
 }

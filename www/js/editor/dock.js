@@ -14,14 +14,34 @@
 //
 // The tabs stay in one row: those that do not fit go to a "More views" menu (the open view's
 // tab is always in the row); arrow keys move between views in the tab list. While the dock
-// covers part of the window, the 3-D view's canvas takes the largest free part beside it
-// (fitView), so the scene is framed where it can be seen. Charts (views/plot.js) get their
+// covers part of the window, the 3-D view's canvas takes the largest free part beside it, less
+// the toolbar where the toolbar stands in that part (fitView: phones on their side), so the
+// scene is framed where it can be seen. Charts (views/plot.js) get their
 // playhead from playback, and hovering a chart shows that instant's pose (preview).
 import { VIEWS } from '../views/index.js';
 import { setPlayheadSource } from '../views/plot.js';
 
 /** The smallest free part of the window (CSS px) the 3-D view moves into beside the dock. */
 const MIN_FREE = { width: 240, height: 200 };
+
+/**
+ * Part `p` ({left, top, width, height}) less the rectangle `o` (a DOMRect) where they overlap:
+ * `p` cut at one side of `o`, the side that keeps the most of it. `p` itself if they do not.
+ */
+function without(p, o) {
+  const right = p.left + p.width;
+  const bottom = p.top + p.height;
+  if (o.width === 0 || o.height === 0 || o.right <= p.left || o.left >= right || o.bottom <= p.top || o.top >= bottom) return p;
+  const cuts = [
+    { left: o.right, top: p.top, width: right - o.right, height: p.height },
+    { left: p.left, top: p.top, width: o.left - p.left, height: p.height },
+    { left: p.left, top: o.bottom, width: p.width, height: bottom - o.bottom },
+    { left: p.left, top: p.top, width: p.width, height: o.top - p.top },
+  ];
+  let best = null;
+  for (const c of cuts) if (c.width > 0 && c.height > 0 && (!best || c.width * c.height > best.width * best.height)) best = c;
+  return best ?? { left: p.left, top: p.top, width: 0, height: 0 };
+}
 
 export class Dock {
   constructor(app) {
@@ -197,8 +217,9 @@ export class Dock {
 
   /**
    * Puts the 3-D view's canvas into the largest part of the window the dock leaves free (left,
-   * right, above or below it), or back to the whole window when the dock is closed or leaves no
-   * usable part. The caller re-frames the scene (app.openView).
+   * right, above or below it; where the toolbar stands in a part, the part beside it), or back
+   * to the whole window when the dock is closed or leaves no usable part. The caller re-frames
+   * the scene (app.openView).
    */
   fitView() {
     const c = this.app.canvas;
@@ -206,6 +227,7 @@ export class Dock {
     let free = null;
     if (this.active) {
       const d = this.root.getBoundingClientRect();
+      const toolbar = document.getElementById('toolbar')?.getBoundingClientRect() ?? null;
       const W = window.innerWidth;
       const H = window.innerHeight;
       const parts = [
@@ -213,7 +235,9 @@ export class Dock {
         { left: d.right, top: 0, width: W - d.right, height: H },
         { left: 0, top: 0, width: W, height: d.top },
         { left: 0, top: d.bottom, width: W, height: H - d.bottom },
-      ].filter((p) => p.width >= MIN_FREE.width && p.height >= MIN_FREE.height);
+      ]
+        .map((p) => (toolbar ? without(p, toolbar) : p))
+        .filter((p) => p.width >= MIN_FREE.width && p.height >= MIN_FREE.height);
       for (const p of parts) if (!free || p.width * p.height > free.width * free.height) free = p;
     }
     const s = c.style;

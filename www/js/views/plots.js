@@ -1,6 +1,8 @@
 // Smoothness plots (paper Fig. 8 of V1 / Fig. 7 of V2): a body point's coordinate, speed and
 // acceleration, and the body's angular velocity and acceleration, over time, for the three
-// schemes and the plain polyscrew side by side, with the control-pose times marked.
+// schemes and the plain polyscrew side by side, with the control-pose times marked. On phones
+// one chart at a time, picked from a list, fills the dock (nothing to scroll); the body point,
+// the derivatives and the note show under an Options button.
 import { Motion } from '../../pkg/screwbender.js';
 import { lineChart, el } from './plot.js';
 
@@ -32,6 +34,18 @@ const TITLE_PX = 16;
 const GAP_PX = 6;
 /** A chart is never lower than this (CSS px); below, the dock scrolls. */
 const MIN_CHART_PX = 150;
+/** The one chart shown on phones is never lower than this (CSS px). */
+const MIN_ONE_CHART_PX = 110;
+/** Phones (the breakpoints of style.css): one chart at a time. */
+const PHONE = '(max-width: 760px), (max-height: 500px)';
+/** The entries of the phones' chart list: a chart, and for the coordinate chart its axis. */
+const PICKS = [
+  ...[0, 1, 2].map((axis) => ({ chart: 0, axis, label: `position ${'xyz'[axis]}` })),
+  { chart: 1, label: 'speed |v|' },
+  { chart: 2, label: 'acceleration |a|' },
+  { chart: 3, label: 'angular velocity |ω|' },
+  { chart: 4, label: 'angular acceleration |α|' },
+];
 
 class PlotsView {
   constructor(app, root) {
@@ -39,27 +53,43 @@ class PlotsView {
     this.point = [2, 0, 0];
     this.axis = 0;
     this.derivatives = 'analytic';
+    /** The chart shown on phones (index in CHARTS). */
+    this.shown = 0;
     const pointInputs = [0, 1, 2].map((i) =>
       el('input', { type: 'number', step: '0.1', value: String(this.point[i]), style: 'width:48px', 'aria-label': `body point ${'xyz'[i]}`, onchange: () => this.readPoint() }),
     );
     this.pointInputs = pointInputs;
-    const axisSel = el('select', { 'aria-label': 'coordinate', onchange: (e) => { this.axis = Number(e.target.value); this.update('edit'); } },
+    const axisSel = el('select', { 'aria-label': 'coordinate', onchange: (e) => this.setAxis(Number(e.target.value)) },
       ...[0, 1, 2].map((a) => el('option', { value: String(a) }, 'xyz'[a])));
+    this.axisSel = axisSel;
+    const pickSel = el('select', { 'aria-label': 'chart', class: 'pick', onchange: (e) => this.pick(Number(e.target.value)) },
+      ...PICKS.map((p, k) => el('option', { value: String(k) }, p.label)));
+    this.pickSel = pickSel;
+    const axisLabel = el('span', { title: 'Coordinate of the body point plotted in the first chart' }, 'plot');
+    const pickLabel = el('span', { class: 'pick', title: 'The chart shown (one at a time on small screens)' }, 'chart');
+    /** Phones: whether the options (body point, derivatives, note) are shown. */
+    this.optionsOpen = false;
+    const optionsBtn = el('button', { type: 'button', class: 'act pick', 'aria-expanded': 'false', title: 'The body point, the derivatives and a note on these plots', onclick: () => this.toggleOptions() }, 'Options');
+    this.optionsBtn = optionsBtn;
+    const pointLabel = el('span', { title: 'Body point in the object’s local coordinates (scene units)' }, 'point');
+    const derivLabel = el('span', { title: 'How velocities and accelerations are computed' }, 'derivatives');
     const derivSel = el('select', { 'aria-label': 'derivatives', onchange: (e) => { this.derivatives = e.target.value; this.update('edit'); } },
       el('option', { value: 'analytic', title: 'Derivatives of the refined polyscrew' }, 'analytic'),
       el('option', { value: 'limit', title: 'Differences of refined poses (the limit motion)' }, 'limit'));
     root.append(
       el('div', { class: 'row' },
-        el('span', { title: 'Body point in the object’s local coordinates (scene units)' }, 'point'), ...pointInputs,
-        el('span', { title: 'Coordinate of the body point plotted in the first chart' }, 'plot'), axisSel,
-        el('span', { title: 'How velocities and accelerations are computed' }, 'derivatives'), derivSel),
-      el('details', { class: 'note' },
+        pointLabel, ...pointInputs, axisLabel, axisSel, pickLabel, pickSel, optionsBtn, derivLabel, derivSel),
+      (this.about = el('details', { class: 'note' },
         el('summary', {}, 'About these plots (units: scene units, seconds, radians)'),
         'Same control poses, rules and levels for every curve; only the scheme differs. Dashed lines mark the control-pose times, ',
         'the solid line is the playhead; hover a plot to see that instant’s pose in 3-D. ',
         'Analytic derivatives are those of the refined polyscrew: its angular velocity is constant on each refined span, so jumps shrink level by level; ',
-        'the differences of refined poses approximate the limit motion, as plotted in the paper.'),
+        'the differences of refined poses approximate the limit motion, as plotted in the paper.')),
     );
+    /** Shown on wide screens only / on phones only / on phones under Options. */
+    this.wide = [axisLabel, axisSel];
+    this.narrow = [pickLabel, pickSel, optionsBtn];
+    this.options = [pointLabel, ...pointInputs, derivLabel, derivSel, this.about];
     this.legend = el('div', { class: 'row legend' }, ...SCHEME_SERIES.map((s) => el('span', {}, el('span', { class: 'swatch', style: `background:${s.color}` }), s.label)));
     this.grid = el('div', { class: 'plot-grid' });
     root.append(this.grid);
@@ -68,27 +98,63 @@ class PlotsView {
     // The dock changed size (window, layout): the charts follow without sampling again.
     this.resizer = new ResizeObserver(() => this.charts && this.layout());
     this.resizer.observe(root);
+    this.phone = window.matchMedia(PHONE);
+    this.phone.addEventListener('change', () => this.charts && this.layout());
+  }
+
+  /** Phones: shows or hides the options (the chart gets the room they leave). */
+  toggleOptions() {
+    this.optionsOpen = !this.optionsOpen;
+    this.optionsBtn.setAttribute('aria-expanded', String(this.optionsOpen));
+    if (this.charts) this.layout();
+  }
+
+  /** Plots coordinate `axis` (0, 1, 2) of the body point in the first chart. */
+  setAxis(axis) {
+    this.axis = axis;
+    this.axisSel.value = String(axis);
+    this.pickSel.value = String(PICKS.findIndex((p) => p.chart === this.shown && (p.axis ?? axis) === axis));
+    this.update('edit');
+  }
+
+  /** Shows entry `k` of PICKS as the one chart on phones (tests call it too). */
+  pick(k) {
+    const p = PICKS[k];
+    if (!p) return;
+    this.shown = p.chart;
+    this.pickSel.value = String(k);
+    if (p.axis !== undefined && p.axis !== this.axis) this.setAxis(p.axis);
+    else if (this.charts) this.layout();
   }
 
   /**
    * Sizes the charts to the dock: two columns when it is wide enough (the legend in the sixth
    * cell), and heights that fill the dock's height without scrolling (down to MIN_CHART_PX).
+   * Phones: the chart picked in the list alone, without its title, the legend in a row under it.
    */
   layout() {
     const width = this.root.clientWidth;
     if (width === 0) return;
-    const cols = width >= 440 ? 2 : 1;
-    const rows = Math.ceil((CHARTS.length + (cols === 2 ? 1 : 0)) / cols);
+    const one = this.phone.matches;
+    this.root.classList.toggle('one-chart', one);
+    for (const e of this.wide) e.hidden = one;
+    for (const e of this.narrow) e.hidden = !one;
+    for (const e of this.options) e.hidden = one && !this.optionsOpen;
+    this.charts.forEach((c, k) => (c.box.hidden = one && k !== this.shown));
+    const cols = !one && width >= 440 ? 2 : 1;
+    const rows = one ? 1 : Math.ceil((CHARTS.length + (cols === 2 ? 1 : 0)) / cols);
     const body = this.root.parentElement;
     const pad = parseFloat(getComputedStyle(body).paddingBottom) || 0;
-    const room = body.getBoundingClientRect().bottom - pad - this.grid.getBoundingClientRect().top - 2;
-    const h = Math.max(MIN_CHART_PX, Math.floor((room - (rows - 1) * GAP_PX) / rows));
+    let room = body.getBoundingClientRect().bottom - pad - this.grid.getBoundingClientRect().top - 2;
+    if (one) room -= this.legend.getBoundingClientRect().height + GAP_PX;
+    const h = Math.max(one ? MIN_ONE_CHART_PX : MIN_CHART_PX, Math.floor((room - (rows - 1) * GAP_PX) / rows));
     const w = Math.floor((width - (cols - 1) * GAP_PX) / cols);
     this.grid.style.gridTemplateColumns = `repeat(${cols}, ${w}px)`;
-    const key = `${cols}|${w}|${h}`;
+    const key = `${one}|${this.shown}|${this.optionsOpen}|${cols}|${w}|${h}`;
     if (key === this.layoutKey) return;
     this.layoutKey = key;
-    for (const c of this.charts) c.resize(w, h - TITLE_PX);
+    // Phones: the list names the chart, which shows no title (style.css).
+    for (const c of this.charts) c.resize(w, one ? h : h - TITLE_PX);
   }
 
   readPoint() {
