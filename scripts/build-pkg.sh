@@ -91,7 +91,8 @@ if [[ ${VIEWER:-1} == 1 ]]; then
   viewer_module webgl,files "$viewer/pkg-gl"
   header "viewer: sources"
   mkdir -p "$viewer/js/element" "$viewer/js/view" "$viewer/js/editor" "$viewer/css"
-  cp www/js/element/screw-bender.js "$viewer/js/element/"
+  # The element's files; modules.js is replaced below.
+  cp www/js/element/*.js "$viewer/js/element/"
   cp www/js/view/*.js "$viewer/js/view/"
   cp www/js/math.js "$viewer/js/"
   cp www/js/editor/session.js "$viewer/js/editor/"

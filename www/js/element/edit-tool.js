@@ -1,0 +1,60 @@
+// The editing of an editable figure (`editable`): its pointer tool.
+import { beginPoseDrag, dragTarget, hoverPoseTool, redrawPoseDrag, setDragPose } from '../view/pose-drag.js';
+
+/**
+ * The pointer tool of an editable figure `fig`: select a pose, drag it with the gizmo (the
+ * steps shared with the playground's editor are view/pose-drag.js); a drag that moved the pose
+ * saves it (`persist`) and fires `change`.
+ */
+export function editTool(fig) {
+  const v = () => fig.viewer;
+  const begin = (part, pt, e) => {
+    const { model } = fig;
+    const d = beginPoseDrag(v(), model.motion, model.selected, part, pt, e);
+    if (!d) return false;
+    model.drag = { part };
+    fig.drag = d;
+    v().rebuildGizmo();
+    return true;
+  };
+  const end = () => {
+    const d = fig.drag;
+    if (!d) return;
+    fig.drag = null;
+    fig.model.drag = null;
+    d.session?.free();
+    if (d.moved) {
+      fig.viewer.rebuild();
+      fig.persist();
+      fig.emit('change', { poses: Float64Array.from(fig.model.motion.poses()), index: d.index });
+    }
+    fig.viewer.rebuildGizmo();
+    fig.viewer.requestDraw();
+  };
+  return {
+    press: (pt, e) => {
+      const part = v().gizmoHit(pt);
+      if (part && begin(part, pt, e)) return 'drag';
+      const k = v().pickPose(pt);
+      if (k < 0) return null;
+      if (k !== fig.model.selected) fig.select(k);
+      return begin('view', pt, e) ? 'drag' : 'taken';
+    },
+    drag: (pt, e) =>
+      fig.guard(() => {
+        const d = fig.drag;
+        if (!d) return;
+        const pose = dragTarget(v(), d, pt, e.shiftKey);
+        if (!pose) return;
+        const fast = setDragPose(fig.model.motion, d, pose, { polyscrew: fig.model.view.showPolyscrew, live: true });
+        d.moved = true;
+        redrawPoseDrag(v(), d, pose, fast);
+      }),
+    release: () => fig.guard(end),
+    cancel: () => fig.guard(end),
+    hover: (pt) => hoverPoseTool(v(), fig.model, pt),
+    click: () => {
+      if (fig.model.selected >= 0) fig.select(-1);
+    },
+  };
+}

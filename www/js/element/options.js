@@ -1,0 +1,83 @@
+// The options of a <screw-bender> figure (its attributes, or mount()'s options): their names, the
+// checks of their values, and the error that names the option and the value at fault.
+
+/** Attributes the element watches (each maps onto an option of mount()). */
+export const ATTRIBUTES = [
+  'scene', 'src', 'share', 'scheme', 'levels', 'j', 'rules', 'strobe', 'show', 'autoplay', 'loop',
+  'speed', 'editable', 'controls', 'camera', 'theme', 'persist',
+];
+/** Layers of the `show` option, and those shown by default. */
+export const LAYERS = ['strobe', 'control', 'trajectories', 'polyscrew', 'polygon', 'triads', 'grid'];
+export const DEFAULT_SHOW = 'strobe control trajectories polygon triads grid';
+export const LAYER_FIELD = {
+  strobe: 'showStrobe', control: 'showControl', trajectories: 'showTrajectories', polyscrew: 'showPolyscrew',
+  polygon: 'showPolygon', triads: 'showTriads', grid: 'showGrid',
+};
+const SCHEMES = ['bspline', 'fourpoint', 'jarek', 'j'];
+const RULES = ['direct', 'split'];
+export const CONTROLS = ['none', 'minimal', 'full'];
+export const THEMES = ['light', 'dark'];
+/** Named camera views: yaw and pitch in degrees. */
+const VIEWS = { iso: [-60, 34], front: [-90, 5], side: [0, 5], top: [-90, 89] };
+/** Most strobe copies a figure draws. */
+export const MAX_STROBE = 20000;
+/** An error naming the option (attribute) and the value that caused it. */
+export class OptionError extends Error {
+  constructor(attribute, value, message) {
+    super(`${attribute}="${String(value).slice(0, 120)}": ${message}`);
+    this.attribute = attribute;
+    this.value = value;
+  }
+}
+
+/** An option's boolean: present and not false / "false". */
+export const bool = (v) => v !== undefined && v !== null && v !== false && v !== 'false';
+
+/** Reads and checks one option; throws an OptionError on a bad value. */
+export function number(name, value, lo, hi, integer = false) {
+  const x = typeof value === 'number' ? value : Number(String(value).trim());
+  if (String(value).trim() === '' || !Number.isFinite(x)) throw new OptionError(name, value, 'not a number');
+  if (integer && !Number.isInteger(x)) throw new OptionError(name, value, 'not a whole number');
+  if (x < lo || x > hi) throw new OptionError(name, value, `out of range (${lo} to ${hi})`);
+  return x;
+}
+
+/** Checks that `value` is one of `list`. */
+export function oneOf(name, value, list) {
+  if (!list.includes(value)) throw new OptionError(name, value, `expected one of ${list.join(', ')}`);
+  return value;
+}
+
+/** Camera option → {yaw, pitch, distance?} in radians. */
+export function cameraView(value) {
+  const v = String(value).trim();
+  if (VIEWS[v]) return { yaw: (VIEWS[v][0] * Math.PI) / 180, pitch: (VIEWS[v][1] * Math.PI) / 180 };
+  const parts = v.split(/[\s,]+/).map(Number);
+  if ((parts.length === 2 || parts.length === 3) && parts.every(Number.isFinite) && Math.abs(parts[1]) <= 89.9 && !(parts[2] <= 0)) {
+    return { yaw: (parts[0] * Math.PI) / 180, pitch: (parts[1] * Math.PI) / 180, distance: parts[2] };
+  }
+  throw new OptionError('camera', value, `expected ${Object.keys(VIEWS).join(', ')} or "yaw pitch [distance]" (degrees; |pitch| < 90)`);
+}
+
+/** The subdivision options among `o` (checked), for Motion.setOptions. */
+export function subdivisionOptions(o) {
+  const out = {};
+  if (o.scheme != null && o.scheme !== '') out.scheme = oneOf('scheme', o.scheme, SCHEMES);
+  if (o.j != null && o.j !== '') {
+    out.j = number('j', o.j, -4, 4);
+    out.scheme ??= 'j';
+  }
+  if (o.rules != null && o.rules !== '') out.rules = oneOf('rules', o.rules, RULES);
+  if (o.levels != null && o.levels !== '') out.levels = number('levels', o.levels, 0, 12, true);
+  return out;
+}
+
+/** Options from an element's attributes (and its inline JSON child). */
+export function optionsOf(el) {
+  const o = {};
+  for (const a of ATTRIBUTES) if (el.hasAttribute(a)) o[a] = el.getAttribute(a);
+  for (const b of ['autoplay', 'editable']) if (o[b] === '') o[b] = true;
+  const script = el.querySelector(':scope > script[type="application/json"]');
+  if (script) o.inline = script.textContent;
+  return o;
+}

@@ -1,0 +1,34 @@
+// The WebAssembly side that all figures of a page share: one module instance (the main module, or
+// the WebGL2 one when WebGPU has no usable adapter; element/modules.js says which), and one
+// queue in which figures open their renderers.
+import { loadMain, loadGl } from './modules.js';
+
+let wasmReady = null;
+/**
+ * The one wasm module instance all figures share (initialised on first use): the main module,
+ * or the WebGL2 module when there is one and WebGPU offers no usable adapter.
+ */
+export function loadWasm() {
+  wasmReady ??= (async () => {
+    let adapter = null;
+    if (loadGl && navigator.gpu) {
+      try {
+        adapter = await navigator.gpu.requestAdapter();
+      } catch {
+        adapter = null;
+      }
+    }
+    const m = await (loadGl && !adapter ? loadGl() : loadMain());
+    await m.default();
+    return m;
+  })();
+  return wasmReady;
+}
+
+/** Figures open their renderers one after another, so the first one's WebGPU device is shared. */
+let startChain = Promise.resolve();
+export function serially(f) {
+  const run = startChain.then(f, f);
+  startChain = run.catch(() => {});
+  return run;
+}
