@@ -53,10 +53,13 @@ fn with_clock<R>(doc: MotionDocument, f: impl FnOnce(&Clock) -> R) -> Result<R, 
     };
     CLOCK.with(|cell| {
         let mut cached = cell.borrow_mut();
-        if cached.as_ref().is_none_or(|c| c.key != key) {
-            *cached = Some(Clock::of(key)?);
-        }
-        Ok(f(cached.as_ref().expect("the clock was just built")))
+        let clock = match cached.take() {
+            Some(c) if c.key == key => c,
+            _ => Clock::of(key)?,
+        };
+        let out = f(&clock);
+        *cached = Some(clock);
+        Ok(out)
     })
 }
 
