@@ -93,6 +93,8 @@ export function createHighlight(app, card) {
       spotEl.style.height = `${r.h}px`;
       spotEl.classList.toggle('round', !!r.round);
     }
+    // One loop at a time: `place` is also called from outside (a resize, a new step).
+    cancelAnimationFrame(raf);
     if (target) raf = requestAnimationFrame(place);
   }
 
