@@ -285,6 +285,8 @@ export class App {
   /** After any change of motion/options/view: rebuild GPU data, autosave, redraw. */
   changed(save = true) {
     this.viewer.rebuild();
+    // The playhead keeps its time in seconds; a retimed motion shows another pose then.
+    this.viewer.retime();
     this.warnSubdivision();
     if (save) this.autosave();
     this.ui?.refresh();
@@ -293,8 +295,6 @@ export class App {
 
   /**
    * Up to 1700 px wide, the settings panel would cover the right part of the 3-D view that the
-    // The playhead keeps its time in seconds; a retimed motion shows another pose then.
-    this.viewer.retime();
    * open dock leaves: fold it while the dock is open, and unfold it again when it closes (if it
    * was open).
    */
@@ -342,6 +342,7 @@ export class App {
       // The editing scene (A3) starts with its top-left pose selected, ready to drag.
       this.selected = PRESELECT[id] ?? -1;
       this.anim.u = 0;
+      this.anim.t = undefined;
       this.meshesChanged();
       this.frameAll();
     };
@@ -350,7 +351,6 @@ export class App {
       apply();
       this.changed();
     }
-      this.anim.t = undefined;
   }
 
   /**

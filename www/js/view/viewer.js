@@ -192,8 +192,8 @@ export class Viewer {
     // Nothing to draw until the model has a motion (the loop runs from start()).
     if (!motion) return;
     if (anim.playing) {
-      const dt = this.lastNow ? Math.min(0.5, (now - this.lastNow) / 1000) : 0;
       // Real time: t advances in seconds (times the speed); the object shows u = p(t).
+      const dt = this.lastNow ? Math.min(0.5, (now - this.lastNow) / 1000) : 0;
       const [a, b] = motion.timeDomain();
       let t = this.playTime() + dt * anim.speed;
       if (t > b) {
@@ -229,7 +229,6 @@ export class Viewer {
     this.frames++;
   }
 
-  /** Starts or stops playback; either way the animated object stays shown. */
   // ---------------------------------------------------------------- playback in seconds
 
   /**
@@ -281,6 +280,7 @@ export class Viewer {
     else this.playTime();
   }
 
+  /** Starts or stops playback; either way the animated object stays shown. */
   setPlaying(on) {
     const { anim } = this.model;
     anim.playing = on;
