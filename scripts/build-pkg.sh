@@ -7,6 +7,9 @@
 #   PACK=0 ./scripts/build-pkg.sh        # pkg/ only
 #   PKG_DIR=/tmp/p ./scripts/build-pkg.sh  # another output directory
 #
+# The viewer also carries the bunny6 preset's mesh, viewer/vendor/bunny.obj (with bunny.NOTICE:
+# its origin and terms), beside the sources that fetch it.
+#
 # The viewer has two renderer modules: viewer/pkg/ with features webgpu,files (no wgpu-core, GL
 # backend or shader translation: the browser compiles the WGSL) and viewer/pkg-gl/ with webgl,files
 # (WebGL2 through wgpu's GL backend and naga), which the element imports only when WebGPU has no
@@ -55,6 +58,52 @@ else
     --enable-sign-ext --enable-mutable-globals --enable-multivalue --enable-simd \
     "$PKG_DIR/screwbender_bg.wasm" -o "$PKG_DIR/screwbender_bg.opt.wasm"
   mv "$PKG_DIR/screwbender_bg.opt.wasm" "$PKG_DIR/screwbender_bg.wasm"
+
+  header "types without the DOM lib"
+  # wasm-bindgen's init types name DOM types (RequestInfo, Response, BufferSource) and the
+  # WebAssembly namespace, which a Node-only TypeScript project (lib es2022, types node, no
+  # skipLibCheck) does not have. Replace them by structural types declared in the file itself:
+  # URL, Request, Response, ArrayBuffer and WebAssembly.Module values still match them.
+  node - "$PKG_DIR/screwbender.d.ts" "$PKG_DIR/screwbender_bg.wasm.d.ts" <<'JS'
+const fs = require('fs');
+const decls = `
+/** A URL (a \`URL\` object or anything with its \`href\`); declared here so that these types need no DOM lib. */
+export interface UrlLike { readonly href: string }
+/** A fetch \`Request\` (anything with its \`url\`). */
+export interface RequestLike { readonly url: string }
+/** A fetch \`Response\` (anything with its \`arrayBuffer()\`). */
+export interface ResponseLike { arrayBuffer(): Promise<ArrayBuffer> }
+/** The bytes of a .wasm file (the DOM's \`BufferSource\`). */
+export type BytesLike = ArrayBuffer | ArrayBufferView;
+/** A compiled \`WebAssembly.Module\` (which has no members of its own). */
+export type WasmModuleLike = object;
+/** The module's \`WebAssembly.Memory\`. */
+export interface WasmMemoryLike { readonly buffer: ArrayBuffer; grow(delta: number): number }
+/** The module's \`WebAssembly.Table\` of JavaScript values. */
+export interface WasmTableLike { readonly length: number; get(index: number): unknown; grow(delta: number, value?: unknown): number; set(index: number, value?: unknown): void }
+`;
+const swaps = [
+  ['RequestInfo | URL | Response | BufferSource | WebAssembly.Module', 'string | UrlLike | RequestLike | ResponseLike | BytesLike | WasmModuleLike'],
+  ['BufferSource | WebAssembly.Module', 'BytesLike | WasmModuleLike'],
+  ['WebAssembly.Memory', 'WasmMemoryLike'],
+  ['WebAssembly.Table', 'WasmTableLike'],
+];
+for (const [i, file] of process.argv.slice(2).entries()) {
+  let text = fs.readFileSync(file, 'utf8');
+  for (const [from, to] of swaps) text = text.split(from).join(to);
+  if (i === 0) {
+    text = text.replace(/^export type InitInput =/m, `${decls.trim()}\n\nexport type InitInput =`);
+  } else {
+    // The module's own exports: the memory and table types from the main file.
+    text = `import type { WasmMemoryLike, WasmTableLike } from './screwbender.js';\n${text}`;
+  }
+  // Doc comments may name them (`WebAssembly.instantiate`); code may not.
+  const code = text.split('\n').filter((line) => !/^\s*(\*|\/\*\*)/.test(line)).join('\n');
+  const left = code.match(/\b(RequestInfo|BufferSource|WebAssembly\.\w+)\b/);
+  if (left) throw new Error(`${file}: ${left[0]} is still named (a new wasm-bindgen output?)`);
+  fs.writeFileSync(file, text);
+}
+JS
 fi
 
 WASM_OPT_FEATURES=(--enable-bulk-memory --enable-reference-types --enable-nontrapping-float-to-int
@@ -97,6 +146,10 @@ if [[ ${VIEWER:-1} == 1 ]]; then
   cp www/js/math.js "$viewer/js/"
   cp www/js/editor/session.js "$viewer/js/editor/"
   cp www/css/screw-bender.css "$viewer/css/"
+  # The Stanford bunny of the bunny6 preset, where drawing.js fetches it (../../vendor/ from
+  # js/view/), with its origin and terms; fetched only when a figure shows that preset.
+  mkdir -p "$viewer/vendor"
+  cp www/vendor/bunny.obj www/vendor/bunny.NOTICE "$viewer/vendor/"
   # The package's main renderer module has WebGPU only: name the WebGL2 module.
   cat >"$viewer/js/element/modules.js" <<'JS'
 // The figure's WebAssembly modules in the npm package (written by scripts/build-pkg.sh): the
@@ -104,6 +157,13 @@ if [[ ${VIEWER:-1} == 1 ]]; then
 export const loadMain = () => import('../../pkg/screwbender.js');
 export const loadGl = () => import('../../pkg-gl/screwbender.js');
 JS
+  # The viewer's sources ship minified (esbuild, Vite's: each file on its own, imports and
+  # import.meta.url kept, comments dropped): a figure downloads them all, and the readable ones
+  # are www/js/. About 40 KB gzip becomes 25 KB (scripts/viewer-size.sh counts them).
+  while IFS= read -r -d '' f; do
+    "$REPO_ROOT/node_modules/.bin/esbuild" "$f" --minify --format=esm --log-level=warning --outfile="$f.min"
+    mv "$f.min" "$f"
+  done < <(find "$viewer/js" -name '*.js' -print0)
   cp npm/viewer.js npm/viewer.d.ts "$PKG_DIR/"
 fi
 

@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # Measures what a browser downloads to show one read-only <screw-bender> figure from the npm
-# package built in PKG (default pkg/, by scripts/build-pkg.sh), gzip -9 per file, and fails over
-# budget:
+# package built in PKG (default pkg/, by scripts/build-pkg.sh, whose viewer sources are minified),
+# gzip -9 per file, and fails over budget:
 #   WebGPU path: viewer.js, the figure's JS and CSS, viewer/pkg/ (glue + WebGPU-only wasm)
 #                ≤ WEBGPU_GZIP_BUDGET bytes (default 450 000);
 #   WebGL2 path: the same JS and CSS and viewer/pkg-gl/ (glue + WebGL2 wasm), not the WebGPU
 #                module ≤ WEBGL_GZIP_BUDGET bytes (default 1 200 000).
 # js/editor/session.js (and with it the main glue) is imported only for a `share` payload, so
-# neither path counts it.
+# neither path counts it. Nor does either count viewer/vendor/bunny.obj (the Stanford bunny, about
+# 46 KB gzip), which a figure fetches only to show the bunny6 preset; it is logged apart.
 # Also checks that neither wasm carries a name section and that the WebGPU module has no GL
 # backend or shader translator (no naga/glow/WebGL2RenderingContext in its glue or wasm).
 #
@@ -40,6 +41,7 @@ webgl_total=$((common_gz + gl_gz))
 log "viewer JS + CSS (${#common[@]} files): $common_gz bytes gzip; WebGPU glue $glue_gz"
 log "WebGPU wasm: $(wc -c <"$v/pkg/screwbender_bg.wasm") bytes, $webgpu_wasm_gz gzip"
 log "WebGL2 module (glue + wasm): $(wc -c <"$v/pkg-gl/screwbender_bg.wasm") bytes wasm, $gl_gz gzip"
+[[ -f $v/vendor/bunny.obj ]] && log "bunny6 preset's mesh (fetched only for that preset, not counted): $(gz "$v/vendor/bunny.obj") bytes gzip"
 log "one read-only figure, WebGPU: $webgpu_total bytes gzip (budget $WEBGPU_GZIP_BUDGET)"
 log "one read-only figure, WebGL2: $webgl_total bytes gzip (budget $WEBGL_GZIP_BUDGET)"
 

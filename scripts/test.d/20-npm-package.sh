@@ -8,7 +8,9 @@
 #   2. install the tarball into fresh apps under a mktemp dir, with only the npm registry:
 #      a Node app (smoke test through the package "exports"), a Vite 7 app (`vite build`, served
 #      on 127.0.0.1, and the Vite dev server; plus `tsc --strict` on a usage file against the
-#      shipped .d.ts), and a plain ES-module page with an import map (no bundler);
+#      shipped .d.ts with the DOM lib, math and viewer entries, and on a Node-only usage file
+#      with lib es2022 and types node, no DOM lib and no skipLibCheck), and a plain ES-module
+#      page with an import map (no bundler);
 #   3. run the smoke checks (tests/js/smoke.mjs) in headless Chromium through playwright-core.
 set -euo pipefail
 # shellcheck source=scripts/lib.sh
@@ -25,6 +27,7 @@ cd "$REPO_ROOT"
 WASM_GZIP_BUDGET=${WASM_GZIP_BUDGET:-165000}
 VITE_VERSION=7.3.8
 TYPESCRIPT_VERSION=5.9.3
+TYPES_NODE_VERSION=20.19.43
 NPM_INSTALL=(npm install --no-audit --no-fund --loglevel=error)
 
 ./scripts/build-pkg.sh
@@ -46,6 +49,11 @@ found=$(tar tzf "$tarball" | grep -v -E '^package/LICENSE|^package/viewer/' | LC
 if [[ $found != "$expected" ]]; then
   die "tarball files differ from the expected list:"$'\n'"$found"
 fi
+# The viewer's bunny mesh and its notice (origin and terms of the scan) travel together.
+listing=$(tar tzf "$tarball")
+for f in package/viewer/vendor/bunny.obj package/viewer/vendor/bunny.NOTICE; do
+  grep -qx "$f" <<<"$listing" || die "the tarball lacks $f"
+done
 ./scripts/viewer-size.sh pkg
 wasm_raw=$(wc -c <pkg/screwbender_bg.wasm)
 wasm_gz=$(gzip -9c pkg/screwbender_bg.wasm | wc -c)
@@ -92,13 +100,17 @@ node tests/js/browser-smoke.mjs --serve "$work/plain" --label "plain page"
 header "Vite $VITE_VERSION app"
 mkdir "$work/vite"
 app_package_json sb-vite-smoke >"$work/vite/package.json"
-(cd "$work/vite" && timed "npm install (tarball, vite, typescript)" \
-  "${NPM_INSTALL[@]}" "$tarball" "vite@$VITE_VERSION" "typescript@$TYPESCRIPT_VERSION")
+(cd "$work/vite" && timed "npm install (tarball, vite, typescript, @types/node)" \
+  "${NPM_INSTALL[@]}" "$tarball" "vite@$VITE_VERSION" "typescript@$TYPESCRIPT_VERSION" \
+  "@types/node@$TYPES_NODE_VERSION")
 smoke_files "$work/vite"
 cp tests/js/install/vite/index.html tests/js/install/vite/vite.config.js \
-  tests/js/install/types-check.ts tests/js/install/tsconfig.json "$work/vite/"
+  tests/js/install/types-check.ts tests/js/install/tsconfig.json \
+  tests/js/install/node-types-check.ts tests/js/install/tsconfig.node.json "$work/vite/"
 cp tests/js/install/browser-main.js "$work/vite/main.js"
 (cd "$work/vite" && timed "tsc --strict (types-check.ts)" ./node_modules/.bin/tsc -p tsconfig.json)
+(cd "$work/vite" && timed "tsc --strict, Node only (node-types-check.ts)" \
+  ./node_modules/.bin/tsc -p tsconfig.node.json)
 (cd "$work/vite" && timed "vite build" ./node_modules/.bin/vite build)
 node tests/js/browser-smoke.mjs --serve "$work/vite/dist" --label "vite build"
 

@@ -1,7 +1,7 @@
 // Browser smoke entry shared by the Vite app and the plain ES-module page: loads the package,
 // runs the checks and publishes the result for the Playwright driver (window.__smoke). Then the
 // viewer entry: a <screw-bender> figure must start (WebGPU, or here usually the WebGL2 module)
-// and show no message.
+// and show no message; a bunny6 figure must show the Stanford bunny packaged with the viewer.
 import init, * as sb from 'screwbender';
 import { runSmoke } from './smoke.mjs';
 
@@ -10,6 +10,7 @@ async function main() {
     await init();
     const result = runSmoke(sb);
     result.checks.push(await viewerCheck());
+    result.checks.push(await bunnyCheck());
     result.ok = result.checks.every((c) => c.ok);
     window.__smoke = result;
   } catch (e) {
@@ -39,5 +40,35 @@ async function viewerCheck() {
     return { name: 'viewer: mount a figure', ok, detail };
   } catch (e) {
     return { name: 'viewer: mount a figure', ok: false, detail: String(e && e.stack ? e.stack : e) };
+  }
+}
+
+/** A bunny6 figure: the packaged Stanford bunny (viewer/vendor/bunny.obj) must load and be drawn. */
+async function bunnyCheck() {
+  const name = 'viewer: the bunny6 preset shows the packaged bunny';
+  try {
+    const { mount } = await import('screwbender/viewer');
+    const el = document.createElement('div');
+    el.style.width = '400px';
+    el.style.height = '250px';
+    document.body.append(el);
+    const events = [];
+    el.addEventListener('error', (e) => events.push(e.detail.message));
+    const fig = mount(el, { scene: 'bunny6', levels: 3 });
+    await fig.ready;
+    // drawing.js fetches the mesh when the preset is shown; the promise settles once it is
+    // uploaded (or, on failure, once the wedge stays in its place).
+    const drawing = fig.viewer.drawing;
+    await drawing.bunnyLoad;
+    const triangles = drawing.bunnyTriangles ?? 0;
+    const msg = el.shadowRoot.querySelector('.msg');
+    const ok = typeof drawing.bunny === 'string' && triangles > 1000 && msg.hidden && events.length === 0;
+    const detail = `bunny ${typeof drawing.bunny === 'string' ? 'loaded' : 'NOT loaded'}, ${triangles} triangles; ` +
+      `${msg.hidden ? 'no message' : msg.textContent}; ${events.length} error events`;
+    fig.destroy();
+    el.remove();
+    return { name, ok, detail };
+  } catch (e) {
+    return { name, ok: false, detail: String(e && e.stack ? e.stack : e) };
   }
 }

@@ -1,0 +1,19 @@
+// Type-checked by scripts/test.d/20-npm-package.sh in a Node-only TypeScript project
+// (tsconfig.node.json: lib es2022, types node, no DOM lib, no skipLibCheck): the math entry's
+// types must compile there, init included, and wrong uses must fail.
+import { readFileSync } from 'node:fs';
+import init, { initSync, Motion, timingMap, type MotionDocument, type Pose } from 'screwbender';
+
+initSync({ module: readFileSync(new URL('./node_modules/screwbender/screwbender_bg.wasm', import.meta.url)) });
+await init({ module_or_path: readFileSync('screwbender_bg.wasm') });
+const out = await init();
+const pages: number = out.memory.grow(0);
+
+const motion = Motion.fromScene('l_cycle_rotated');
+const pose: Pose = motion.poseAt(0.5);
+const doc: MotionDocument = motion.toDocument();
+const kinematics: Float64Array = motion.timedKinematics(16, [1, 0, 0]);
+const map: Float64Array = timingMap([0, 1, 3, 4, 6], 4, true, 8);
+// @ts-expect-error: the parameter is a number
+motion.poseAt('0.5');
+console.log(pages, pose.rotation[0], doc.poses.length, kinematics.length, map.length);
