@@ -13,6 +13,7 @@ use screwbender::{
 use crate::args::{number, numbers, velocities, ArgReader, SubdivisionArgs};
 use crate::failure::Failure;
 use crate::input::read_document;
+use crate::output::Output;
 
 /// Parsed `export` options.
 #[derive(Default)]
@@ -89,7 +90,7 @@ fn write(path: &Path, data: &[u8]) -> Result<(), Failure> {
 }
 
 /// Runs `screwbender export`; returns what goes to standard output (CSV without `-o`).
-pub fn export(args: &[String]) -> Result<String, Failure> {
+pub fn export(args: &[String]) -> Result<Output, Failure> {
     let o = parse(args)?;
     let format = o
         .format
@@ -135,7 +136,7 @@ pub fn export(args: &[String]) -> Result<String, Failure> {
             bin_name: &bin_name,
         },
     )?;
-    let mut stdout = String::new();
+    let mut stdout = Vec::new();
     let written = match (format, out) {
         (ExportFormat::Gltf, _) => {
             write(&gltf_path, &exported.data)?;
@@ -147,7 +148,7 @@ pub fn export(args: &[String]) -> Result<String, Failure> {
             out.to_string()
         }
         (_, None) => {
-            stdout = String::from_utf8(exported.data).expect("CSV is UTF-8");
+            stdout = exported.data;
             "standard output".into()
         }
     };
@@ -164,5 +165,5 @@ pub fn export(args: &[String]) -> Result<String, Failure> {
             exported.sample_count, exported.motion_name
         );
     }
-    Ok(stdout)
+    Ok(Output::writer(move |w| w.write_all(&stdout)))
 }

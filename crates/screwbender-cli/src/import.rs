@@ -14,6 +14,7 @@ use screwbender::{
 
 use crate::args::{number, ArgReader};
 use crate::failure::Failure;
+use crate::output::Output;
 
 /// Reads a file of at most [`MAX_GLTF_BYTES`] (checked before reading).
 fn read_limited(path: &Path) -> Result<Vec<u8>, Failure> {
@@ -88,7 +89,7 @@ fn reduction(text: &str) -> Result<Reduction, Failure> {
 }
 
 /// Runs `screwbender import`; returns the document for standard output (empty with `-o`).
-pub fn import(args: &[String]) -> Result<String, Failure> {
+pub fn import(args: &[String]) -> Result<Output, Failure> {
     let mut output = None;
     let mut selection = NodeSelection::Auto;
     let mut open = false;
@@ -157,11 +158,11 @@ pub fn import(args: &[String]) -> Result<String, Failure> {
             if doc.closed { "cycle" } else { "open" }
         );
     }
-    let text = doc.to_json();
+    let text = Output::writer(move |w| doc.write_json(w));
     match output {
         Some(out) => {
-            std::fs::write(&out, text).map_err(|e| Failure(format!("{out}: {e}")))?;
-            Ok(String::new())
+            text.write_file(&out)?;
+            Ok(Output::text(String::new()))
         }
         None => Ok(text),
     }

@@ -10,8 +10,9 @@ mod export;
 mod failure;
 mod import;
 mod input;
+mod output;
 
-use std::io::Write;
+use std::io::{self, Write};
 use std::process::ExitCode;
 
 use screwbender::{scenes, Motion, MotionDocument, Polyscrew, Pose, Screw, ScrewBender, ScrewKind};
@@ -20,6 +21,7 @@ use serde_json::{json, Value};
 use args::{number, ArgReader, SubdivisionArgs};
 use failure::Failure;
 use input::read_document;
+use output::Output;
 
 const HELP: &str = "\
 screwbender — smooth rigid motions by screw subdivision (Powell & Rossignac)
@@ -100,22 +102,8 @@ EXAMPLE:
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     match run(&args) {
-        Ok(out) => {
-            // A reader that stops early (`screwbender preset x | head`) is not an error, and
-            // `print!` would panic on the broken pipe: write explicitly and stop quietly.
-            let mut stdout = std::io::stdout().lock();
-            match stdout
-                .write_all(out.as_bytes())
-                .and_then(|()| stdout.flush())
-            {
-                Ok(()) => ExitCode::SUCCESS,
-                Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
-                Err(e) => {
-                    eprintln!("screwbender: standard output: {e}");
-                    ExitCode::from(2)
-                }
-            }
-        }
+        // A reader that stops early (`screwbender preset x | head`) is not an error.
+        Ok(out) => out.write_stdout(),
         Err(Failure(msg)) => {
             eprintln!("screwbender: {msg}");
             ExitCode::from(2)
@@ -123,21 +111,24 @@ fn main() -> ExitCode {
     }
 }
 
-fn run(args: &[String]) -> Result<String, Failure> {
+fn run(args: &[String]) -> Result<Output, Failure> {
     let Some((command, rest)) = args.split_first() else {
         return Err(Failure(
             "no command given (try 'screwbender --help')".into(),
         ));
     };
     match command.as_str() {
-        "help" | "--help" | "-h" => Ok(HELP.to_string()),
-        "--version" | "-V" => Ok(format!("screwbender {}\n", env!("CARGO_PKG_VERSION"))),
+        "help" | "--help" | "-h" => Ok(Output::text(HELP.to_string())),
+        "--version" | "-V" => Ok(Output::text(format!(
+            "screwbender {}\n",
+            env!("CARGO_PKG_VERSION")
+        ))),
         "subdivide" => subdivide(rest),
         "eval" => eval(rest),
-        "screw" => screw_command(rest),
-        "preset" => preset(rest),
-        "compare" => compare_command(rest),
-        "rational" => compare::rational(rest),
+        "screw" => screw_command(rest).map(Output::text),
+        "preset" => preset(rest).map(Output::text),
+        "compare" => compare_command(rest).map(Output::text),
+        "rational" => compare::rational(rest).map(Output::text),
         "export" => export::export(rest),
         "import" => import::import(rest),
         other => Err(Failure(format!(
@@ -188,7 +179,7 @@ fn parse_options(args: &[String], accepts: Accepts) -> Result<Options, Failure> 
     Ok(o)
 }
 
-fn subdivide(args: &[String]) -> Result<String, Failure> {
+fn subdivide(args: &[String]) -> Result<Output, Failure> {
     let o = parse_options(
         args,
         Accepts {
@@ -207,14 +198,14 @@ fn subdivide(args: &[String]) -> Result<String, Failure> {
     let control = Polyscrew::new(doc.poses, closed)?;
     let mut out = MotionDocument::new(sub.apply(control.poses(), closed)?, closed);
     out.name = doc.name;
-    Ok(out.to_json())
+    Ok(Output::writer(move |w| out.write_json(w)))
 }
 
 fn pose_json(p: &Pose) -> Value {
     json!({"origin": p.origin.to_array(), "rotation": p.rotation_wxyz()})
 }
 
-fn eval(args: &[String]) -> Result<String, Failure> {
+fn eval(args: &[String]) -> Result<Output, Failure> {
     let o = parse_options(
         args,
         Accepts {
@@ -236,18 +227,16 @@ fn eval(args: &[String]) -> Result<String, Failure> {
     } else {
         Box::new(ScrewBender::new(doc.poses, closed, sub)?)
     };
-    let poses: Vec<Value> =
-        o.us.iter()
-            .map(|&u| {
-                let mut v = pose_json(&motion.pose_at(u));
-                v["u"] = json!(u);
-                v
-            })
-            .collect();
-    Ok(with_pose_lines(
-        &[("motion", json!(motion.name())), ("closed", json!(closed))],
-        &poses,
-    ))
+    let header = [("motion", json!(motion.name())), ("closed", json!(closed))];
+    // Each pose is evaluated as its line is written.
+    Ok(Output::writer(move |w| {
+        let poses = o.us.iter().map(|&u| {
+            let mut v = pose_json(&motion.pose_at(u));
+            v["u"] = json!(u);
+            v
+        });
+        write_pose_lines(w, &header, poses)
+    }))
 }
 
 fn screw_command(args: &[String]) -> Result<String, Failure> {
@@ -282,15 +271,14 @@ fn screw_command(args: &[String]) -> Result<String, Failure> {
             "angle": p.angle, "slide": p.slide, "pitch": p.pitch,
             "point": p.point.to_array(), "foot": p.foot.to_array()}),
     };
-    let poses: Vec<Value> =
-        o.ts.iter()
-            .map(|&t| {
-                let mut v = pose_json(&s.at(t));
-                v["t"] = json!(t);
-                v
-            })
-            .collect();
-    Ok(with_pose_lines(&[("screw", params)], &poses))
+    let poses = o.ts.iter().map(|&t| {
+        let mut v = pose_json(&s.at(t));
+        v["t"] = json!(t);
+        v
+    });
+    let mut out = Vec::new();
+    write_pose_lines(&mut out, &[("screw", params)], poses).expect("writing to memory cannot fail");
+    Ok(String::from_utf8(out).expect("JSON is UTF-8"))
 }
 
 fn compare_command(args: &[String]) -> Result<String, Failure> {
@@ -329,17 +317,21 @@ fn preset(args: &[String]) -> Result<String, Failure> {
     }
 }
 
-/// A JSON object with the given header fields (in order) and a `poses` array, one pose per
-/// line — the same layout as a motion document, so outputs diff and grep well.
-fn with_pose_lines(header: &[(&str, Value)], poses: &[Value]) -> String {
-    let mut s = String::from("{\n");
+/// Writes a JSON object with the given header fields (in order) and a `poses` array, one pose
+/// per line — the same layout as a motion document, so outputs diff and grep well.
+fn write_pose_lines(
+    w: &mut dyn Write,
+    header: &[(&str, Value)],
+    poses: impl ExactSizeIterator<Item = Value>,
+) -> io::Result<()> {
+    w.write_all(b"{\n")?;
     for (key, value) in header {
-        s += &format!("  {}: {},\n", json!(key), value);
+        writeln!(w, "  {}: {},", json!(key), value)?;
     }
-    s += "  \"poses\": [\n";
-    for (i, p) in poses.iter().enumerate() {
-        s += &format!("    {p}{}\n", if i + 1 < poses.len() { "," } else { "" });
+    w.write_all(b"  \"poses\": [\n")?;
+    let n = poses.len();
+    for (i, p) in poses.enumerate() {
+        writeln!(w, "    {p}{}", if i + 1 < n { "," } else { "" })?;
     }
-    s += "  ]\n}\n";
-    s
+    w.write_all(b"  ]\n}\n")
 }

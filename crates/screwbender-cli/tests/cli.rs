@@ -8,7 +8,7 @@ mod support;
 use std::io::Write;
 use std::process::{Command, Stdio};
 
-use screwbender::{MotionDocument, Pose};
+use screwbender::{MotionDocument, Pose, Rules, Scheme, Subdivision};
 
 use support::run;
 
@@ -338,6 +338,67 @@ fn compare_prints_the_metrics_table() {
         assert_eq!(out.code, 2, "{args:?}");
         assert!(out.stderr.contains(want), "{args:?}: {}", out.stderr);
     }
+}
+
+/// A large output is written as it is produced: a reader that takes its first lines and then
+/// stops (`| head`) gets exactly the start of the full output, and the binary ends quietly
+/// with exit 0; read in full, the output is the core's document of the same subdivision.
+#[test]
+fn large_output_streams_and_a_reader_may_stop_partway() {
+    let input = preset("cylinder5");
+    let args = [
+        "subdivide",
+        "--scheme",
+        "fourpoint",
+        "--rules",
+        "direct",
+        "--levels",
+        "12",
+    ];
+    let full = run(&args, &input);
+    assert_eq!(full.code, 0, "{}", full.stderr);
+    let doc = MotionDocument::from_json(&input).unwrap();
+    let poses = Subdivision::new(Scheme::FourPoint, Rules::Direct, 12)
+        .apply(&doc.poses, doc.closed)
+        .unwrap();
+    assert_eq!(poses.len(), 5 << 12);
+    let mut want = MotionDocument::new(poses, doc.closed);
+    want.name = doc.name;
+    assert_eq!(
+        full.stdout,
+        want.to_json(),
+        "the CLI writes the core's document"
+    );
+
+    let mut child = Command::new(env!("CARGO_BIN_EXE_screwbender"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(input.as_bytes())
+        .unwrap();
+    let mut head = vec![0; 10_000];
+    std::io::Read::read_exact(child.stdout.as_mut().unwrap(), &mut head).unwrap();
+    drop(child.stdout.take()); // stop reading, with most of the output still to come
+    let out = child.wait_with_output().unwrap();
+    assert!(
+        full.stdout.len() > 100 * head.len(),
+        "{}",
+        full.stdout.len()
+    );
+    assert_eq!(head, full.stdout.as_bytes()[..head.len()]);
+    assert_eq!(out.status.code(), Some(0));
+    assert!(
+        out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
 }
 
 /// A reader that closes the pipe early is not an error (no panic message, exit 0).

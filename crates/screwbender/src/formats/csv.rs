@@ -8,6 +8,8 @@
 //! first (within [`crate::REPEAT_TOLERANCE`]) marks a cycle and is dropped. Errors name the line
 //! (`line 3`) and column.
 
+use std::io::{self, Write};
+
 use glam::DVec3;
 
 use crate::error::{Error, ErrorKind};
@@ -127,23 +129,48 @@ pub fn parse_csv_poses(text: &str) -> Result<MotionDocument, Error> {
 /// Sampled poses as CSV: header `t,u,x,y,z,qw,qx,qy,qz`, one sample per line (full `f64`
 /// precision, shortest round-trip form).
 pub fn poses_csv(samples: &[Sample]) -> String {
-    let mut s = String::from("t,u,x,y,z,qw,qx,qy,qz\n");
+    to_text(|w| write_poses_csv(w, samples))
+}
+
+/// Writes [`poses_csv`]'s text to `w` line by line, without building it in memory first.
+///
+/// Errors: only those of `w`.
+pub fn write_poses_csv<W: Write + ?Sized>(w: &mut W, samples: &[Sample]) -> io::Result<()> {
+    w.write_all(b"t,u,x,y,z,qw,qx,qy,qz\n")?;
     for p in samples {
         let [x, y, z] = p.pose.origin.to_array();
         let [qw, qx, qy, qz] = p.pose.rotation_wxyz();
-        s += &format!("{},{},{x},{y},{z},{qw},{qx},{qy},{qz}\n", p.time, p.u);
+        writeln!(w, "{},{},{x},{y},{z},{qw},{qx},{qy},{qz}", p.time, p.u)?;
     }
-    s
+    Ok(())
 }
 
 /// The world trajectory of the body point `local` as CSV: header `t,u,x,y,z`.
 pub fn trajectory_csv(samples: &[Sample], local: DVec3) -> String {
-    let mut s = String::from("t,u,x,y,z\n");
+    to_text(|w| write_trajectory_csv(w, samples, local))
+}
+
+/// Writes [`trajectory_csv`]'s text to `w` line by line, without building it in memory first.
+///
+/// Errors: only those of `w`.
+pub fn write_trajectory_csv<W: Write + ?Sized>(
+    w: &mut W,
+    samples: &[Sample],
+    local: DVec3,
+) -> io::Result<()> {
+    w.write_all(b"t,u,x,y,z\n")?;
     for p in samples {
-        let w = p.pose.transform_point(local);
-        s += &format!("{},{},{},{},{}\n", p.time, p.u, w.x, w.y, w.z);
+        let q = p.pose.transform_point(local);
+        writeln!(w, "{},{},{},{},{}", p.time, p.u, q.x, q.y, q.z)?;
     }
-    s
+    Ok(())
+}
+
+/// The text a writer of this module produces (they write only UTF-8, and a `Vec` never fails).
+fn to_text(write: impl FnOnce(&mut Vec<u8>) -> io::Result<()>) -> String {
+    let mut out = Vec::new();
+    write(&mut out).expect("writing to memory cannot fail");
+    String::from_utf8(out).expect("the CSV writers write UTF-8")
 }
 
 #[cfg(test)]

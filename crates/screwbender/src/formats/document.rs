@@ -275,35 +275,47 @@ impl MotionDocument {
     /// Pretty-printed JSON (two-space indent, one pose per line).
     #[cfg(feature = "json")]
     pub fn to_json(&self) -> String {
-        let raw = self.to_raw();
-        let mut s = String::from("{\n");
-        if let Some(name) = &raw.name {
-            s += &format!("  \"name\": {},\n", json_string(name));
-        }
-        s += &format!("  \"closed\": {},\n", raw.closed);
-        if let Some(times) = &raw.times {
-            let line = serde_json::to_string(times).expect("finite numbers always serialise");
-            s += &format!("  \"times\": {line},\n");
-        }
-        if let Some(v) = &raw.velocities {
-            let line = serde_json::to_string(v).expect("finite numbers always serialise");
-            s += &format!("  \"velocities\": {line},\n");
-        }
-        s += "  \"poses\": [\n";
-        for (i, p) in raw.poses.iter().enumerate() {
-            let line = serde_json::to_string(p).expect("finite numbers always serialise");
-            s += "    ";
-            s += &line;
-            s += if i + 1 < raw.poses.len() { ",\n" } else { "\n" };
-        }
-        s += "  ]\n}\n";
-        s
+        let mut out = Vec::new();
+        self.write_json(&mut out)
+            .expect("writing to memory cannot fail");
+        String::from_utf8(out).expect("JSON is UTF-8")
     }
-}
 
-#[cfg(feature = "json")]
-fn json_string(s: &str) -> String {
-    serde_json::to_string(s).expect("strings always serialise")
+    /// Writes [`MotionDocument::to_json`]'s text to `w` pose by pose, without building it (or
+    /// the file form of every pose) in memory first.
+    ///
+    /// Errors: only those of `w`.
+    #[cfg(feature = "json")]
+    pub fn write_json<W: std::io::Write + ?Sized>(&self, w: &mut W) -> std::io::Result<()> {
+        w.write_all(b"{\n")?;
+        if let Some(name) = &self.name {
+            w.write_all(b"  \"name\": ")?;
+            serde_json::to_writer(&mut *w, name)?;
+            w.write_all(b",\n")?;
+        }
+        writeln!(w, "  \"closed\": {},", self.closed)?;
+        if let Some(times) = &self.times {
+            w.write_all(b"  \"times\": ")?;
+            serde_json::to_writer(&mut *w, times)?;
+            w.write_all(b",\n")?;
+        }
+        if let Some(v) = &self.velocities {
+            w.write_all(b"  \"velocities\": ")?;
+            serde_json::to_writer(&mut *w, v)?;
+            w.write_all(b",\n")?;
+        }
+        w.write_all(b"  \"poses\": [\n")?;
+        for (i, p) in self.poses.iter().enumerate() {
+            w.write_all(b"    ")?;
+            serde_json::to_writer(&mut *w, &RawPose::from_pose(p))?;
+            w.write_all(if i + 1 < self.poses.len() {
+                b",\n"
+            } else {
+                b"\n"
+            })?;
+        }
+        w.write_all(b"  ]\n}\n")
+    }
 }
 
 #[cfg(test)]
