@@ -20,8 +20,11 @@ import pose from './editor/pose.js';
 import presets from './editor/presets.js';
 import responsive from './editor/responsive.js';
 import labels from './editor/labels.js';
+import viewpoint from './editor/viewpoint.js';
+import theme from './editor/theme.js';
+import media from './editor/media.js';
 
-const PARTS = [notices, session, files, input, pose, presets, responsive, labels];
+const PARTS = [notices, session, files, input, pose, presets, responsive, labels, viewpoint, theme, media];
 
 /** Strobe count when a preset loads: fewer copies where the object is bulky (readable, as in the paper). */
 const PRESET_STROBE = {
@@ -61,6 +64,8 @@ export class App {
       gizmoLocal: false, // the gizmo's axes: the world's (false) or the selected pose's own
       showGrid: true,
       snap: false,
+      /** 'auto' (the system's prefers-color-scheme), 'light' or 'dark' (editor/theme.js). */
+      theme: 'auto',
       /** The open analysis view ('' = dock closed). */
       dock: '',
     };
@@ -109,6 +114,9 @@ export class App {
     this.parts.presets.bind();
     this.parts.responsive.bind();
     this.parts.labels.bind();
+    this.parts.viewpoint.bind();
+    this.parts.theme.bind();
+    this.parts.media.bind();
     window.addEventListener('beforeunload', () => this.autosave());
     this.ready = true;
   }

@@ -171,6 +171,8 @@ export class Figure {
     model.anim.loop = o.loop == null ? true : bool(o.loop);
     this.el.fig.dataset.controls = controls;
     this.el.fig.dataset.theme = theme;
+    // The 3-D view's background and line colours follow the chrome.
+    this.viewer?.setDark(theme === 'dark');
     if (!this.editable && model.selected >= 0) model.selected = -1;
     if (model.motion) {
       if (cam && ('camera' in patch || patch === this.opts)) {

@@ -1,5 +1,18 @@
 // Orbit camera (z up): yaw/pitch around a target, distance; mouse, wheel and touch controls.
+// Perspective or orthographic: the orthographic view shows, at every depth, what the
+// perspective one shows in the plane of the target (same framing, zoom and pan).
 import { add, cross, lookAt, mmul, normalize, perspective, scale, sub } from '../math.js';
+
+/**
+ * The named views (yaw around z from +x, pitch): front looks along +y (x right, z up), side
+ * along −x (y right, z up), top down the −z axis (x right, y up), iso from (1, −1, 1).
+ */
+export const CAMERA_PRESETS = {
+  front: { yaw: -Math.PI / 2, pitch: 0 },
+  side: { yaw: 0, pitch: 0 },
+  top: { yaw: -Math.PI / 2, pitch: Math.PI / 2 },
+  iso: { yaw: -Math.PI / 4, pitch: Math.atan(Math.SQRT1_2) },
+};
 
 export class OrbitCamera {
   constructor() {
@@ -9,10 +22,12 @@ export class OrbitCamera {
     this.pitch = 0.6; // elevation
     this.fovy = (38 * Math.PI) / 180;
     this.aspect = 1;
+    /** Orthographic projection (true) or perspective (false). */
+    this.ortho = false;
   }
 
   toJSON() {
-    return { target: this.target, distance: this.distance, yaw: this.yaw, pitch: this.pitch };
+    return { target: this.target, distance: this.distance, yaw: this.yaw, pitch: this.pitch, ortho: this.ortho };
   }
 
   load(s) {
@@ -21,7 +36,31 @@ export class OrbitCamera {
     if (Array.isArray(s.target) && s.target.length === 3 && s.target.every(ok)) this.target = [...s.target];
     if (ok(s.distance) && s.distance > 0) this.distance = s.distance;
     if (ok(s.yaw)) this.yaw = s.yaw;
-    if (ok(s.pitch)) this.pitch = s.pitch;
+    if (ok(s.pitch)) this.pitch = Math.max(-Math.PI / 2, Math.min(Math.PI / 2, s.pitch));
+    if (typeof s.ortho === 'boolean') this.ortho = s.ortho;
+  }
+
+  /** Turns to the named view of CAMERA_PRESETS (target and distance kept); false when unknown. */
+  preset(name) {
+    const p = Object.hasOwn(CAMERA_PRESETS, name) ? CAMERA_PRESETS[name] : null;
+    if (!p) return false;
+    this.yaw = p.yaw;
+    this.pitch = p.pitch;
+    return true;
+  }
+
+  /**
+   * Half the depth of the orthographic view around the target (scene units): deep enough for
+   * the framed scene, shallow enough that the lines' depth bias (crates/screwbender-web/src/
+   * render/line.wgsl) stays about as large as in perspective.
+   */
+  get orthoDepth() {
+    return 4 * this.distance + 20;
+  }
+
+  /** Half the height of the view in the plane of the target (scene units). */
+  get halfHeight() {
+    return this.distance * Math.tan(this.fovy / 2);
   }
 
   get eye() {
@@ -34,20 +73,29 @@ export class OrbitCamera {
     return normalize(sub(this.target, this.eye));
   }
 
-  /** Camera right and up vectors (world). */
+  /** Camera right and up vectors (world); from the yaw alone, so a view straight down works. */
   basis() {
     const f = this.forward;
-    const right = normalize(cross(f, [0, 0, 1]));
+    const right = [-Math.sin(this.yaw), Math.cos(this.yaw), 0];
     return { right, up: cross(right, f), forward: f };
   }
 
   view() {
-    return lookAt(this.eye, this.target, [0, 0, 1]);
+    return lookAt(this.eye, this.target, this.basis().up);
   }
 
   proj() {
+    const far = this.distance * 50 + 100;
+    if (this.ortho) {
+      // Depth 0..1 over the slab of the target ± orthoDepth (what lies behind the eye of a
+      // zoomed-in view stays visible, as it should orthographically).
+      const h = this.halfHeight;
+      const w = h * this.aspect;
+      const s = this.orthoDepth;
+      return Float64Array.from([1 / w, 0, 0, 0, 0, 1 / h, 0, 0, 0, 0, -1 / (2 * s), 0, 0, 0, (s - this.distance) / (2 * s), 1]);
+    }
     const near = Math.max(this.distance * 0.01, 0.01);
-    return perspective(this.fovy, this.aspect, near, this.distance * 50 + 100);
+    return perspective(this.fovy, this.aspect, near, far);
   }
 
   viewProj() {
@@ -56,6 +104,7 @@ export class OrbitCamera {
 
   orbit(dx, dy) {
     this.yaw -= dx * 0.008;
+    // A preset's view straight down may sit past the orbit's limit: it moves back inside.
     this.pitch = Math.max(-1.55, Math.min(1.55, this.pitch + dy * 0.008));
   }
 
@@ -70,12 +119,20 @@ export class OrbitCamera {
     this.distance = Math.max(0.2, Math.min(5000, this.distance * factor));
   }
 
-  /** World ray through CSS pixel (x, y) of a w×h viewport: {o, d}. */
+  /**
+   * World ray through CSS pixel (x, y) of a w×h viewport: {o, d}. Orthographic: parallel to
+   * the view direction, from the pixel's point on the nearest plane the projection sees (hits
+   * in front of `o` are then all the visible ones).
+   */
   ray(x, y, w, h) {
     const { right, up, forward } = this.basis();
     const t = Math.tan(this.fovy / 2);
     const nx = ((2 * x) / w - 1) * t * this.aspect;
     const ny = (1 - (2 * y) / h) * t;
+    if (this.ortho) {
+      const side = add(scale(right, nx * this.distance), scale(up, ny * this.distance));
+      return { o: add(add(this.eye, side), scale(forward, this.distance - this.orthoDepth)), d: forward };
+    }
     return { o: this.eye, d: normalize(add(forward, add(scale(right, nx), scale(up, ny)))) };
   }
 

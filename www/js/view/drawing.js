@@ -8,7 +8,7 @@
 import { poseMatrix, length, sub, add, scale } from '../math.js';
 import {
   SLOT, LAYER, COLORS, INSTANCE, SEGMENT, MAX_MORPH_STROBE, instances, mix, Segments, poseOf, track, matricesOf,
-  gridSegments,
+  gridSegments, palette,
 } from './scene.js';
 import { gizmoAxes, gizmoGeometry } from './gizmo.js';
 
@@ -17,8 +17,8 @@ import { gizmoAxes, gizmoGeometry } from './gizmo.js';
  * The trajectories' line style — colour, width (device pixels), alpha and depth bias — defined
  * once for the full rebuild and for the drag session, which draws the same lines in wasm.
  */
-function trajectoryLine(dpr) {
-  return { color: COLORS.trajectory, width: 2 * dpr, alpha: 0.92, bias: 0.002 };
+function trajectoryLine(dpr, colors = COLORS) {
+  return { color: colors.trajectory, width: 2 * dpr, alpha: 0.92, bias: 0.002 };
 }
 
 /** Size of the cube an imported mesh is scaled to fit (scene units; exports use it as well). */
@@ -66,6 +66,11 @@ export class Drawing {
   /** `viewer`: the owning Viewer (renderer, camera, model, pixelSize, requestDraw, hooks). */
   constructor(viewer) {
     this.viewer = viewer;
+  }
+
+  /** The colours for the viewer's background (scene.js palette). */
+  get colors() {
+    return palette(!!this.viewer.dark);
   }
 
   get model() {
@@ -144,7 +149,8 @@ export class Drawing {
     const r = this.viewer.renderer;
     const { motion: m, view: v } = this.model;
     const closed = m.closed;
-    const strobeColor = (k, n) => mix(COLORS.strobeA, COLORS.strobeB, n > 1 ? k / (n - 1) : 0);
+    const colors = this.colors;
+    const strobeColor = (k, n) => mix(colors.strobeA, colors.strobeB, n > 1 ? k / (n - 1) : 0);
     if (v.showStrobe && !this.morphing) {
       r.setInstances(SLOT.strobe, instances(m.sampleMatrices(v.strobe), strobeColor));
     } else r.setInstances(SLOT.strobe, new Float32Array(0));
@@ -154,7 +160,7 @@ export class Drawing {
     const seg = new Segments();
     if (v.showTrajectories) {
       const refined = m.subdivide();
-      const line = trajectoryLine(dpr);
+      const line = trajectoryLine(dpr, colors);
       for (const p of this.bodyPoints()) seg.polyline(track(refined, p), closed, line.color, line.width, line.alpha, line.bias);
     }
     r.setLines(LAYER.trajectories, seg.array(), false);
@@ -242,12 +248,12 @@ export class Drawing {
     if (v.showPolygon) {
       const pts = [];
       for (let k = 0; k < n; k++) pts.push(poseOf(poses, k).origin);
-      pg.polyline(pts, m.closed, COLORS.polygon, 1.3 * dpr, 0.8);
+      pg.polyline(pts, m.closed, this.colors.polygon, 1.3 * dpr, 0.8);
     }
     this.ctl.polygon = pg.array();
     r.setLines(LAYER.polygon, this.ctl.polygon, false);
     if (withGrid) {
-      const { grid, axes } = gridSegments(sceneScale * 0.8 + 2, dpr);
+      const { grid, axes } = gridSegments(sceneScale * 0.8 + 2, dpr, this.colors);
       r.setLines(LAYER.grid, v.showGrid ? grid : new Float32Array(0), false);
       r.setLines(LAYER.axes, v.showGrid ? axes : new Float32Array(0), false);
     }
@@ -310,11 +316,11 @@ export class Drawing {
     try {
       const { dpr } = this.viewer.pixelSize();
       const points = v.showTrajectories ? this.bodyPoints().flat() : [];
-      const line = trajectoryLine(dpr);
+      const line = trajectoryLine(dpr, this.colors);
       return new this.viewer.wasm.DragSession(
         motion,
         v.showStrobe ? v.strobe : 0,
-        Float32Array.from([...COLORS.strobeA, ...COLORS.strobeB]),
+        Float32Array.from([...this.colors.strobeA, ...this.colors.strobeB]),
         Float64Array.from(points),
         Float32Array.from([...line.color, line.alpha, line.width, line.bias]),
       );

@@ -11,7 +11,11 @@ export function local(viewer, e) {
   return [e.clientX - r.left, e.clientY - r.top];
 }
 
-/** The camera ray through canvas point `pt` (CSS pixels). */
+/**
+ * The camera ray through canvas point `pt` (CSS pixels): from the eye in perspective, parallel
+ * to the view direction in the orthographic projection (camera.js ray), so every pick below
+ * works in both.
+ */
 export function ray(viewer, pt) {
   const { cssW, cssH } = viewer.pixelSize();
   return viewer.camera.ray(pt[0], pt[1], cssW, cssH);

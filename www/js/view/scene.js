@@ -36,6 +36,28 @@ export const COLORS = {
   handle: hexLinear('#ffffff'),
 };
 
+/**
+ * What changes on a dark background (the viewer's `dark`): the lines drawn in dark ink on the
+ * light one turn light, the grid dimmer, so that each keeps its contrast.
+ */
+export const DARK_COLORS = {
+  trajectory: hexLinear('#e9edf5'),
+  polygon: hexLinear('#a3abba'),
+  grid: hexLinear('#7d8699'),
+  strobeA: hexLinear('#5a86b8'),
+};
+
+/** The background colours as displayed (sRGB components; the page's and the element's CSS use the same). */
+export const BACKGROUND = {
+  light: [0.91, 0.925, 0.945], // #e8ecf1
+  dark: [0.106, 0.122, 0.153], // #1b1f27
+};
+
+/** The colours of a light (false) or dark (true) background: COLORS with DARK_COLORS over them. */
+export function palette(dark) {
+  return dark ? { ...COLORS, ...DARK_COLORS } : COLORS;
+}
+
 /** Interleaves `count` column-major matrices (16 floats each) with colours from colorAt(k). */
 export function instances(matrices, colorAt, alpha = 1) {
   const n = matrices.length / 16;
@@ -112,8 +134,8 @@ export function matricesOf(arr, s = 1) {
   return out;
 }
 
-/** The ground grid (z = 0) and world axes. */
-export function gridSegments(extent, dpr) {
+/** The ground grid (z = 0) and world axes (`colors`: a palette()). */
+export function gridSegments(extent, dpr, colors = COLORS) {
   const s = new Segments();
   const n = Math.max(5, Math.ceil(extent));
   for (let i = -n; i <= n; i++) {
@@ -121,11 +143,11 @@ export function gridSegments(extent, dpr) {
     const a = major ? 0.55 : 0.28;
     const w = (major ? 1.3 : 1) * dpr;
     if (i !== 0) {
-      s.push([i, -n, 0], [i, n, 0], COLORS.grid, w, a);
-      s.push([-n, i, 0], [n, i, 0], COLORS.grid, w, a);
+      s.push([i, -n, 0], [i, n, 0], colors.grid, w, a);
+      s.push([-n, i, 0], [n, i, 0], colors.grid, w, a);
     } else {
-      s.push([0, -n, 0], [0, 0, 0], COLORS.grid, w, a);
-      s.push([-n, 0, 0], [0, 0, 0], COLORS.grid, w, a);
+      s.push([0, -n, 0], [0, 0, 0], colors.grid, w, a);
+      s.push([-n, 0, 0], [0, 0, 0], colors.grid, w, a);
     }
   }
   const axes = new Segments();

@@ -16,7 +16,7 @@
 // model is read afresh on every rebuild, never copied, so its owner edits it in place and then
 // calls the matching rebuild (see newModel for its fields).
 import { OrbitCamera } from './camera.js';
-import { SLOT } from './scene.js';
+import { SLOT, BACKGROUND } from './scene.js';
 import { Drawing } from './drawing.js';
 import * as picking from './picking.js';
 import { bindPointer } from './pointer.js';
@@ -106,6 +106,7 @@ export class Viewer {
     if (!this.webgl2 && hasGpu && this.backend !== 'WebGPU') {
       this.warn('WebGPU is present but has no usable adapter; using WebGL2.');
     }
+    if (this.dark) this.renderer.setBackground(...BACKGROUND.dark);
     this.renderer.setMesh(SLOT.handle, 'unit-sphere', true);
     this.renderer.setMesh(SLOT.arrow, 'unit-cone', true);
     this.resizeObserver = new ResizeObserver(() => {
@@ -287,6 +288,50 @@ export class Viewer {
     anim.visible = true;
     this.lastNow = undefined;
     this.onPlay(on);
+  }
+
+  // ---------------------------------------------------------------- theme and pictures
+
+  /** A dark (true) or light background, with line colours to match (scene.js palette). */
+  setDark(on) {
+    if (!!on === !!this.dark) return;
+    this.dark = !!on;
+    this.renderer?.setBackground(...BACKGROUND[this.dark ? 'dark' : 'light']);
+    if (this.renderer && this.model.motion) this.rebuild();
+    this.requestDraw();
+  }
+
+  /**
+   * Draws the current view at `scale` times the drawing buffer once per background of
+   * `backgrounds` (sRGB triples; null: the theme's), calling read(canvas, i) after each in the
+   * same task (a WebGPU canvas is readable only until its frame is presented), then restores
+   * the size and background. Throws, changing nothing, when the picture would exceed the
+   * device's largest texture or cannot be drawn.
+   */
+  snapshot(scale, backgrounds, read) {
+    const { w, h, cssW, cssH } = this.measure();
+    const W = Math.round(w * scale);
+    const H = Math.round(h * scale);
+    const max = this.renderer.maxSize;
+    if (W > max || H > max) throw new Error(`a ${W} × ${H} picture is larger than this graphics device allows (${max} × ${max})`);
+    const own = BACKGROUND[this.dark ? 'dark' : 'light'];
+    this.camera.aspect = cssW / Math.max(1, cssH);
+    try {
+      this.renderer.resize(W, H);
+      this.renderer.setLineScale(scale);
+      this.renderer.setCamera(Float32Array.from(this.camera.viewProj()), Float32Array.from(this.camera.eye));
+      backgrounds.forEach((bg, i) => {
+        this.renderer.setBackground(...(bg ?? own));
+        // A surface that is not ready yet is reconfigured by the failed attempt.
+        if (!this.renderer.render() && !this.renderer.render()) throw new Error('the view could not be drawn; try again');
+        read(this.canvas, i);
+      });
+    } finally {
+      this.renderer.setBackground(...own);
+      this.renderer.setLineScale(1);
+      this.renderer.resize(w, h);
+      this.requestDraw();
+    }
   }
 
   // ---------------------------------------------------------------- camera

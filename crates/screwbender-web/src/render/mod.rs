@@ -59,6 +59,44 @@ impl RendererHandle {
         self.inner.samples()
     }
 
+    /// The largest drawing-buffer side the device allows, in physical pixels (a picture drawn
+    /// larger than the canvas must fit it).
+    #[wasm_bindgen(getter, js_name = maxSize)]
+    pub fn max_size(&self) -> u32 {
+        self.inner.max_size()
+    }
+
+    /// Sets the background colour as displayed: sRGB-encoded `r`, `g`, `b` in 0..=1 (the
+    /// default is a light grey, `0.91, 0.925, 0.945`). Throws naming the component that is not a
+    /// number in 0..=1, and then keeps the previous background. Drawn from the next frame on.
+    #[wasm_bindgen(js_name = setBackground)]
+    pub fn set_background(&mut self, r: f64, g: f64, b: f64) -> Result<(), JsError> {
+        for (name, c) in [("r", r), ("g", g), ("b", b)] {
+            if !(0.0..=1.0).contains(&c) {
+                return Err(JsError::new(&format!(
+                    "background {name}: {c} is not a number in 0..1"
+                )));
+            }
+        }
+        self.inner.set_background([r, g, b]);
+        Ok(())
+    }
+
+    /// Multiplies every line width by `scale` from the next `setCamera` on (1 by default): a
+    /// picture drawn at `scale` times the canvas size (a 2× screenshot) keeps the lines'
+    /// proportions. Throws when `scale` is not a finite number in 0.1..=16, and then keeps the
+    /// previous scale.
+    #[wasm_bindgen(js_name = setLineScale)]
+    pub fn set_line_scale(&mut self, scale: f64) -> Result<(), JsError> {
+        if !(0.1..=16.0).contains(&scale) {
+            return Err(JsError::new(&format!(
+                "line scale: {scale} is not a number in 0.1..16"
+            )));
+        }
+        self.inner.set_line_scale(scale as f32);
+        Ok(())
+    }
+
     /// Resizes the drawing buffer (physical pixels: CSS size × devicePixelRatio).
     pub fn resize(&mut self, width: u32, height: u32) {
         self.inner.resize(width, height);

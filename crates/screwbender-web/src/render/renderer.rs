@@ -17,7 +17,8 @@ use screwbender::mesh::Mesh;
 const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth24Plus;
 /// Preferred MSAA sample count (used when the surface format supports it).
 const MSAA_SAMPLES: u32 = 4;
-/// Background colour as displayed (sRGB-encoded): the paper's white, slightly cooled.
+/// Default background colour as displayed (sRGB-encoded): the paper's white, slightly cooled
+/// (the page may set another one: [`Renderer::set_background`]).
 const CLEAR: wgpu::Color = wgpu::Color {
     r: 0.91,
     g: 0.925,
@@ -123,6 +124,10 @@ pub struct Renderer {
     msaa: Option<wgpu::TextureView>,
     meshes: Vec<Option<MeshSlot>>,
     lines: Vec<Option<LineLayer>>,
+    /// The background as displayed (sRGB-encoded, opaque).
+    clear: wgpu::Color,
+    /// Line widths are multiplied by this (a picture drawn at k times the canvas size).
+    line_scale: f32,
 }
 
 /// Why the renderer could not start (shown in the page).
@@ -394,6 +399,8 @@ impl Renderer {
             msaa,
             meshes: Vec::new(),
             lines: Vec::new(),
+            clear: CLEAR,
+            line_scale: 1.0,
         })
     }
 
@@ -435,6 +442,27 @@ impl Renderer {
         }
     }
 
+    /// The largest drawing buffer side the device allows (physical pixels).
+    pub fn max_size(&self) -> u32 {
+        self.device.limits().max_texture_dimension_2d
+    }
+
+    /// Sets the background as displayed (sRGB-encoded components in 0..=1, opaque).
+    pub fn set_background(&mut self, rgb: [f64; 3]) {
+        self.clear = wgpu::Color {
+            r: rgb[0],
+            g: rgb[1],
+            b: rgb[2],
+            a: 1.0,
+        };
+    }
+
+    /// Multiplies every line width by `scale` (> 0) from the next [`Renderer::update`] on: a
+    /// picture drawn at `scale` times the canvas size keeps the lines' proportions.
+    pub fn set_line_scale(&mut self, scale: f32) {
+        self.line_scale = scale;
+    }
+
     /// The MSAA sample count in use (1 = no multisampling).
     pub fn samples(&self) -> u32 {
         self.samples
@@ -456,7 +484,12 @@ impl Renderer {
     pub fn update(&mut self, view_proj: [f32; 16], eye: [f32; 3]) {
         self.globals.view_proj = view_proj;
         self.globals.eye = [eye[0], eye[1], eye[2], 1.0];
-        let (w, h) = (self.config.width as f32, self.config.height as f32);
+        // The line shader turns widths in pixels into clip space through the viewport: a
+        // smaller viewport than the target widens every line by the same factor.
+        let (w, h) = (
+            self.config.width as f32 / self.line_scale,
+            self.config.height as f32 / self.line_scale,
+        );
         self.globals.viewport = [w, h, 1.0 / w, 1.0 / h];
         self.queue
             .write_buffer(&self.globals_buffer, 0, bytemuck::bytes_of(&self.globals));
@@ -601,17 +634,17 @@ impl Renderer {
             Some(msaa) => (msaa, Some(&view)),
             None => (&view, None),
         };
-        // CLEAR is a display colour: decode it when the target encodes sRGB itself.
+        // The background is a display colour: decode it when the target encodes sRGB itself.
         let clear = if self.config.format.is_srgb() {
             let lin = |c: f64| c.powf(2.2);
             wgpu::Color {
-                r: lin(CLEAR.r),
-                g: lin(CLEAR.g),
-                b: lin(CLEAR.b),
+                r: lin(self.clear.r),
+                g: lin(self.clear.g),
+                b: lin(self.clear.b),
                 a: 1.0,
             }
         } else {
-            CLEAR
+            self.clear
         };
         for overlay in [false, true] {
             let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {

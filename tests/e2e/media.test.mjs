@@ -1,0 +1,510 @@
+// End-to-end: pictures out of the playground (editor/media.js) — a real PNG download at 1× and
+// 2× (size, non-blank pixels, a transparent background), a real WebM video of one cycle (EBML
+// header, duration, frames), cancelling a recording, a browser without a video encoder — and the view
+// (editor/viewpoint.js, editor/theme.js): camera presets, the orthographic projection with
+// picking by a real click, the dark theme (toggle and prefers-color-scheme on a first visit),
+// the menus at phone size.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import path from 'node:path';
+import { waitFrames, playgroundPage, openPage, BACKEND, ROOT } from './lib.mjs';
+
+let play;
+let page;
+let problems;
+/** A blank page (no content security policy) where downloaded files are decoded. */
+let blank;
+
+before(async () => {
+  ({ play, page, problems } = await playgroundPage({ acceptDownloads: true }));
+  blank = await play.context.newPage();
+  await page.evaluate(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  // The first-visit hint moves with the layout; it is not what these tests are about.
+  await page.evaluate(() => document.querySelector('#hint .close')?.click());
+  await waitFrames(page, 2);
+});
+
+after(async () => {
+  await play?.close();
+});
+
+/** The light and dark backgrounds as displayed (www/js/view/scene.js BACKGROUND), 0..255. */
+const LIGHT = [232, 236, 241];
+const DARK = [27, 31, 39];
+/** Per-channel tolerance on a background pixel (8-bit rounding, the encoders). */
+const BG_TOL = 4;
+
+/** Runs `action` and returns the download it causes (null when none came within `ms`). */
+async function downloadOf(action, ms = 180000) {
+  const got = page.waitForEvent('download', { timeout: ms }).catch(() => null);
+  await action();
+  return got;
+}
+
+/** Opens the toolbar's View menu (unless open). */
+async function openMenu() {
+  if ((await page.locator('#t-view').getAttribute('aria-expanded')) !== 'true') await page.click('#t-view');
+}
+
+/** Clicks `item` in the View menu. */
+async function menuClick(item) {
+  await openMenu();
+  await page.click(item);
+}
+
+/** Width and height from a PNG's IHDR chunk (throws when the signature is not PNG's). */
+function pngSize(bytes) {
+  assert.deepEqual([...bytes.subarray(0, 8)], [0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a], 'PNG signature');
+  assert.equal(bytes.subarray(12, 16).toString('latin1'), 'IHDR');
+  return { width: bytes.readUInt32BE(16), height: bytes.readUInt32BE(20) };
+}
+
+/**
+ * Decodes a PNG in the page: the fraction of pixels differing from `bg` (sum of channel
+ * differences > 30), the alpha of the corner pixel and the fraction of opaque pixels.
+ */
+function decodePng(bytes, bg) {
+  return blank.evaluate(async ({ b64, bg }) => {
+    const blob = new Blob([Uint8Array.from(atob(b64), (ch) => ch.charCodeAt(0))]);
+    const bmp = await createImageBitmap(blob, { premultiplyAlpha: 'none', colorSpaceConversion: 'none' });
+    const c = document.createElement('canvas');
+    c.width = bmp.width;
+    c.height = bmp.height;
+    const g = c.getContext('2d');
+    g.drawImage(bmp, 0, 0);
+    const d = g.getImageData(0, 0, c.width, c.height).data;
+    let differ = 0;
+    let opaque = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      if (Math.abs(d[i] - bg[0]) + Math.abs(d[i + 1] - bg[1]) + Math.abs(d[i + 2] - bg[2]) > 30) differ++;
+      if (d[i + 3] === 255) opaque++;
+    }
+    const n = d.length / 4;
+    return { differ: differ / n, opaque: opaque / n, corner: [...d.subarray(0, 4)] };
+  }, { b64: Buffer.from(bytes).toString('base64'), bg });
+}
+
+/**
+ * What a WebM file says of its time: `duration` (s) from the Duration element of its Info, and
+ * `span` (s) from its blocks (the last block's time minus the first's, plus one frame at `fps`)
+ * and their count. Walks the EBML elements, entering the Segment, Info and Clusters.
+ */
+function webmTimes(bytes, fps) {
+  const MASTERS = new Set([0x18538067, 0x1549a966, 0x1f43b675]); // Segment, Info, Cluster
+  let pos = 0;
+  const vint = (keepMarker) => {
+    const first = bytes[pos];
+    let len = 1;
+    while (len <= 8 && !(first & (0x80 >> (len - 1)))) len++;
+    let v = keepMarker ? first : first & (0xff >> len);
+    for (let k = 1; k < len; k++) v = v * 256 + bytes[pos + k];
+    pos += len;
+    return v;
+  };
+  const uint = (at, n) => {
+    let v = 0;
+    for (let k = 0; k < n; k++) v = v * 256 + bytes[at + k];
+    return v;
+  };
+  let scale = 1e6; // ns per timecode unit (TimecodeScale's default)
+  let duration = NaN;
+  let cluster = 0;
+  let first = Infinity;
+  let last = -Infinity;
+  let blocks = 0;
+  while (pos < bytes.length) {
+    const id = vint(true);
+    const size = vint(false);
+    const start = pos;
+    if (MASTERS.has(id)) continue;
+    if (id === 0x2ad7b1) scale = uint(start, size);
+    else if (id === 0x4489) duration = size === 8 ? bytes.readDoubleBE(start) : bytes.readFloatBE(start);
+    else if (id === 0xe7) cluster = uint(start, size);
+    else if (id === 0xa3) {
+      pos = start;
+      vint(false); // track number
+      const t = cluster + bytes.readInt16BE(pos);
+      first = Math.min(first, t);
+      last = Math.max(last, t);
+      blocks++;
+    }
+    pos = start + size;
+  }
+  return { duration: (duration * scale) / 1e9, span: ((last - first) * scale) / 1e9 + 1 / fps, blocks };
+}
+
+const drawingBuffer = () => page.evaluate(() => window.screwbender.app.pixelSize());
+const readBytes = async (download) => fs.readFileSync(await download.path());
+
+test('PNG at 1×: a real download of the drawing buffer, named after the preset, not blank', async () => {
+  const { w, h } = await drawingBuffer();
+  const d = await downloadOf(() => menuClick('#m-png'));
+  assert.ok(d, 'a download');
+  assert.match(d.suggestedFilename(), /^[a-z0-9-]+\.png$/);
+  const bytes = await readBytes(d);
+  assert.deepEqual(pngSize(bytes), { width: w, height: h });
+  const px = await decodePng(bytes, LIGHT);
+  assert.ok(px.differ > 0.02, `drawn content: ${(px.differ * 100).toFixed(2)} % of the pixels differ from the background`);
+  assert.equal(px.opaque, 1, 'an opaque picture');
+  for (let k = 0; k < 3; k++) assert.ok(Math.abs(px.corner[k] - LIGHT[k]) <= BG_TOL, `background corner ${px.corner}`);
+  // The view is drawn at its own size again afterwards.
+  const canvas = await page.evaluate(() => [window.screwbender.app.canvas.width, window.screwbender.app.canvas.height]);
+  assert.deepEqual(canvas, [w, h]);
+});
+
+test('PNG at 2×: drawn at twice the size (not scaled up), transparent background on request', async () => {
+  const { w, h } = await drawingBuffer();
+  await openMenu();
+  await page.check('#m-png-2x');
+  await page.check('#m-png-transparent');
+  const d = await downloadOf(() => page.click('#m-png'));
+  assert.match(d.suggestedFilename(), /@2x\.png$/);
+  const bytes = await readBytes(d);
+  assert.deepEqual(pngSize(bytes), { width: 2 * w, height: 2 * h });
+  const px = await decodePng(bytes, [0, 0, 0]);
+  assert.equal(px.corner[3], 0, `transparent background at the corner: ${px.corner}`);
+  assert.ok(px.opaque > 0.01, `opaque content: ${(px.opaque * 100).toFixed(2)} %`);
+  assert.ok(px.opaque < 0.9, 'the background is not opaque');
+  // A 2× picture really has more detail than a scaled-up 1× one: edges at pixel steps of 1, not 2.
+  const singleSteps = await blank.evaluate(async (b64) => {
+    const bmp = await createImageBitmap(new Blob([Uint8Array.from(atob(b64), (ch) => ch.charCodeAt(0))]));
+    const c = new OffscreenCanvas(bmp.width, bmp.height);
+    const g = c.getContext('2d');
+    g.drawImage(bmp, 0, 0);
+    const d = g.getImageData(0, 0, c.width, c.height).data;
+    // Pixels that differ from both horizontal neighbours' pair partner: impossible in a 2× upscale.
+    let odd = 0;
+    for (let y = 0; y < c.height; y += 7) {
+      for (let x = 0; x + 1 < c.width; x += 2) {
+        const i = (y * c.width + x) * 4;
+        if (Math.abs(d[i + 3] - d[i + 7]) > 60) odd++;
+      }
+    }
+    return odd;
+  }, Buffer.from(bytes).toString('base64'));
+  assert.ok(singleSteps > 20, `edges between the pixels of a pair: ${singleSteps}`);
+  await openMenu();
+  await page.check('#m-png-1x');
+  await page.uncheck('#m-png-transparent');
+  await page.keyboard.press('Escape');
+});
+
+test('a bad picture request changes nothing and says why', async () => {
+  const before = await page.evaluate(() => JSON.stringify(window.screwbender.session()));
+  const r = await page.evaluate(() => window.screwbender.app.parts.media.savePng({ scale: 3 }));
+  assert.equal(r, null);
+  const errors = await page.evaluate(() => window.screwbender.errors());
+  assert.match(errors.at(-1), /scale: 3 is not 1 or 2/);
+  assert.equal(await page.evaluate(() => JSON.stringify(window.screwbender.session())), before);
+});
+
+test('WebM: every frame of one cycle, EBML header, duration = the cycle, not blank', async () => {
+  // A small view: software encoding on a loaded machine takes its time.
+  await page.setViewportSize({ width: 480, height: 320 });
+  await waitFrames(page, 2);
+  // Retimed (key times in seconds, 0.4 s per span): the video follows the timeline's seconds.
+  const refused = await page.evaluate(() => window.screwbender.app.setTimes([0, 0.4, 0.8, 1.2, 1.6, 2.0, 2.4]));
+  assert.equal(refused, null);
+  const cycle = await page.evaluate(() => {
+    const { start, end } = window.screwbender.app.viewer.playhead();
+    return end - start;
+  });
+  assert.ok(Math.abs(cycle - 2.4) < 1e-12, `cycle ${cycle} s`);
+  // (The menu's button is clicked in the tests below, at the full size.)
+  let result;
+  const d = await downloadOf(async () => {
+    result = await page.evaluate(() => window.screwbender.app.parts.media.recordVideo());
+  });
+  assert.ok(d, `a video download (${JSON.stringify(result)})`);
+  assert.match(d.suggestedFilename(), /^[a-z0-9-]+\.webm$/);
+  const bytes = await readBytes(d);
+  assert.deepEqual([...bytes.subarray(0, 4)], [0x1a, 0x45, 0xdf, 0xa3], 'EBML header');
+  assert.ok(bytes.includes(Buffer.from('webm')), 'DocType webm');
+  // The cycle closes: 30 frames per second of it, the last one frame before the first again.
+  const FPS = 30;
+  const want = Math.round(cycle * FPS);
+  const times = webmTimes(bytes, FPS);
+  assert.equal(times.blocks, want, 'every frame is in the video');
+  // Frame times are whole milliseconds in the file.
+  const TOL = 1.5e-3;
+  assert.ok(Math.abs(times.duration - want / FPS) <= TOL, `Duration ${times.duration} s, cycle ${cycle} s`);
+  assert.ok(Math.abs(times.span - want / FPS) <= TOL, `blocks span ${times.span} s`);
+  // A real player reads it: its size is the view's, its duration the cycle's, a frame has the drawing.
+  const { w, h } = await drawingBuffer();
+  const video = await blank.evaluate(async ({ b64, bg }) => {
+    const blob = new Blob([Uint8Array.from(atob(b64), (ch) => ch.charCodeAt(0))], { type: 'video/webm' });
+    const v = document.createElement('video');
+    v.muted = true;
+    v.src = URL.createObjectURL(blob);
+    await new Promise((resolve, reject) => {
+      v.onloadeddata = resolve;
+      v.onerror = () => reject(new Error(`video error ${v.error?.code}`));
+    });
+    await new Promise((resolve) => {
+      v.onseeked = resolve;
+      v.currentTime = v.duration / 3;
+    });
+    const c = new OffscreenCanvas(v.videoWidth, v.videoHeight);
+    const g = c.getContext('2d');
+    g.drawImage(v, 0, 0);
+    const d = g.getImageData(0, 0, c.width, c.height).data;
+    let differ = 0;
+    for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - bg[0]) + Math.abs(d[i + 1] - bg[1]) + Math.abs(d[i + 2] - bg[2]) > 30) differ++;
+    return { width: v.videoWidth, height: v.videoHeight, duration: v.duration, differ: differ / (d.length / 4) };
+  }, { b64: bytes.toString('base64'), bg: LIGHT });
+  assert.deepEqual([video.width, video.height], [w & ~1, h & ~1], 'the view\'s size (even sides)');
+  assert.ok(Math.abs(video.duration - cycle) <= 0.05, `the player's duration ${video.duration} s`);
+  assert.ok(video.differ > 0.02, `a drawn frame: ${(video.differ * 100).toFixed(1)} % differs from the background`);
+  assert.equal(await page.locator('#rec').isHidden(), true);
+  assert.deepEqual(problems, []);
+  assert.equal(await page.evaluate(() => window.screwbender.app.setTimes(null)), null);
+  await page.setViewportSize({ width: 1280, height: 800 });
+  await waitFrames(page, 2);
+});
+
+test('cancelling a recording stops it and downloads nothing', async () => {
+  const anim = await page.evaluate(() => ({ u: window.screwbender.app.anim.u, playing: window.screwbender.app.anim.playing }));
+  let downloads = 0;
+  const count = () => downloads++;
+  page.on('download', count);
+  await menuClick('#m-video');
+  await page.waitForFunction(() => !document.getElementById('rec').hidden && document.getElementById('rec-progress').value > 0);
+  await page.click('#rec-cancel');
+  await page.waitForFunction(() => document.getElementById('rec').hidden);
+  // Nothing arrives afterwards either (the recorder's last data is dropped).
+  await page.waitForTimeout(1500);
+  page.off('download', count);
+  assert.equal(downloads, 0);
+  const after = await page.evaluate(() => ({ u: window.screwbender.app.anim.u, playing: window.screwbender.app.anim.playing }));
+  assert.deepEqual(after, anim, 'the playback as before');
+  assert.equal(await page.evaluate(() => window.screwbender.app.parts.media.recording), false);
+});
+
+test('without a video encoder: a clear message, nothing changes, no exception', async () => {
+  const before = await page.evaluate(() => JSON.stringify(window.screwbender.session()));
+  const errorsBefore = problems.length;
+  await page.evaluate(() => {
+    window.__enc = window.VideoEncoder;
+    window.VideoEncoder = undefined;
+  });
+  let downloads = 0;
+  const count = () => downloads++;
+  page.on('download', count);
+  await menuClick('#m-video');
+  await page.waitForFunction(() => /no video encoder/.test(window.screwbender.errors().at(-1) ?? ''));
+  await page.evaluate(() => (window.VideoEncoder = window.__enc));
+  page.off('download', count);
+  assert.equal(downloads, 0);
+  assert.equal(await page.locator('#rec').isHidden(), true);
+  assert.equal(await page.locator('#banner').isVisible(), true);
+  assert.equal(await page.evaluate(() => JSON.stringify(window.screwbender.session())), before);
+  assert.equal(problems.length, errorsBefore, problems.join('\n'));
+});
+
+const camera = () => page.evaluate(() => ({ ...window.screwbender.app.camera.toJSON() }));
+
+test('camera presets by key and by menu set the view direction', async () => {
+  const EPS = 1e-12;
+  await page.focus('#view');
+  await page.keyboard.press('Shift+T');
+  let c = await camera();
+  assert.ok(Math.abs(c.yaw + Math.PI / 2) < EPS && Math.abs(c.pitch - Math.PI / 2) < EPS, `top: ${c.yaw}, ${c.pitch}`);
+  // Looking straight down, x points right on the screen: pose handles keep their order in x.
+  await page.keyboard.press('Shift+F');
+  c = await camera();
+  assert.ok(Math.abs(c.yaw + Math.PI / 2) < EPS && Math.abs(c.pitch) < EPS, `front: ${c.yaw}, ${c.pitch}`);
+  // Lower-case f is still the 4-point scheme (editor/input.js), not a camera view.
+  await page.keyboard.press('f');
+  assert.equal(await page.evaluate(() => window.screwbender.options().scheme), 'fourpoint');
+  assert.equal((await camera()).pitch, c.pitch);
+  await menuClick('[data-camera=side]');
+  c = await camera();
+  assert.ok(Math.abs(c.yaw) < EPS && Math.abs(c.pitch) < EPS, `side: ${c.yaw}, ${c.pitch}`);
+  await page.click('[data-camera=iso]');
+  c = await camera();
+  assert.ok(Math.abs(c.yaw + Math.PI / 4) < EPS && Math.abs(c.pitch - Math.atan(Math.SQRT1_2)) < EPS, `iso: ${c.yaw}, ${c.pitch}`);
+  await page.keyboard.press('Escape');
+  assert.equal(await page.locator('#view-menu').isHidden(), true, 'Esc closes the menu');
+  // The top view is drawn (no degenerate look-at straight down).
+  await page.focus('#view');
+  await page.keyboard.press('Shift+T');
+  await waitFrames(page, 2);
+  const vp = await page.evaluate(() => [...window.screwbender.app.viewer.vp]);
+  assert.ok(vp.every(Number.isFinite), 'a finite view-projection looking straight down');
+});
+
+test('orthographic: the projection changes, persists, and a real click still selects a pose', async () => {
+  await menuClick('#m-ortho');
+  await page.keyboard.press('Escape');
+  await waitFrames(page, 2);
+  const s = await page.evaluate(() => {
+    const { app } = window.screwbender;
+    const p = app.camera.proj();
+    return { ortho: app.camera.ortho, p11: p[11], p15: p[15], saved: app.session().camera.ortho };
+  });
+  assert.deepEqual(s, { ortho: true, p11: 0, p15: 1, saved: true });
+  assert.equal(await page.locator('#m-ortho').getAttribute('aria-pressed'), 'true');
+  await page.evaluate(() => window.screwbender.app.frameAll());
+  await waitFrames(page, 2);
+  for (const k of [1, 3]) {
+    await page.evaluate(() => window.screwbender.app.select(-1));
+    const at = await page.evaluate((i) => window.screwbender.handleOnPage(i), k);
+    await page.mouse.click(at.x, at.y);
+    await waitFrames(page, 1);
+    assert.equal(await page.evaluate(() => window.screwbender.selected()), k, `pose ${k} selected by a click at ${at.x}, ${at.y}`);
+  }
+  // The orthographic ray is parallel to the view direction at every pixel.
+  const rays = await page.evaluate(() => {
+    const v = window.screwbender.app.viewer;
+    return [v.ray([10, 10]).d, v.ray([300, 200]).d, v.camera.forward];
+  });
+  for (const d of rays.slice(0, 2)) for (let k = 0; k < 3; k++) assert.ok(Math.abs(d[k] - rays[2][k]) < 1e-12);
+  // O toggles back to perspective.
+  await page.focus('#view');
+  await page.keyboard.press('o');
+  assert.equal(await page.evaluate(() => window.screwbender.app.camera.ortho), false);
+  assert.equal(await page.evaluate(() => window.screwbender.app.camera.proj()[11]), -1);
+});
+
+/**
+ * The view's canvas as drawn now (one frame drawn and read in the same task, as the PNG export
+ * does; a page screenshot of a WebGPU canvas can take minutes on a loaded machine): the colours
+ * at `spots` ([x, y] drawing-buffer pixels; when null, up to 20 points of the middle showing
+ * `bg` are found).
+ */
+function examine(spots, bg) {
+  return page.evaluate(({ spots, bg }) => {
+    let out;
+    window.screwbender.app.viewer.snapshot(1, [null], (canvas) => {
+      const g = document.createElement('canvas').getContext('2d', { willReadFrequently: true });
+      g.canvas.width = canvas.width;
+      g.canvas.height = canvas.height;
+      g.drawImage(canvas, 0, 0);
+      const { width: w, height: h } = canvas;
+      const d = g.getImageData(0, 0, w, h).data;
+      const at = (x, y) => [...d.subarray((y * w + x) * 4, (y * w + x) * 4 + 3)];
+      if (!spots) {
+        spots = [];
+        for (let y = Math.round(h / 4); y < (3 * h) / 4 && spots.length < 20; y += 13) {
+          for (let x = Math.round(w / 4); x < (3 * w) / 4 && spots.length < 20; x += 17) {
+            if (at(x, y).every((v, k) => Math.abs(v - bg[k]) <= 4)) spots.push([x, y]);
+          }
+        }
+      }
+      out = { spots, colours: spots.map(([x, y]) => at(x, y)) };
+    });
+    return out;
+  }, { spots, bg });
+}
+
+/** Whether the first channels of pixel `a` are within `tol` of colour `b`. */
+const near = (a, b, tol) => b.every((x, k) => Math.abs(a[k] - x) <= tol);
+
+test('dark theme: the toggle darkens the page and the canvas, and is kept in the session', async () => {
+  await page.evaluate(() => window.screwbender.app.frameAll());
+  await waitFrames(page, 2);
+  // Points of the view showing the light background (nothing drawn there, off the chrome).
+  const { spots } = await examine(null, LIGHT);
+  assert.ok(spots.length >= 10, `background visible at ${spots.length} points`);
+  await menuClick('#m-theme');
+  await page.keyboard.press('Escape');
+  await waitFrames(page, 2);
+  assert.equal(await page.evaluate(() => document.documentElement.dataset.theme), 'dark');
+  assert.equal(await page.locator('#m-theme').getAttribute('aria-pressed'), 'true');
+  const dark = await examine(spots);
+  dark.colours.forEach((c, k) => assert.ok(near(c, DARK, BG_TOL), `dark canvas background at ${spots[k]}: ${c}`));
+  // The trajectories and the control polygon turn light (readable on the dark background).
+  const lines = await page.evaluate(() => {
+    const c = window.screwbender.app.viewer.drawing.colors;
+    return [c.trajectory, c.polygon];
+  });
+  for (const c of lines) assert.ok(Math.min(...c) > 0.35, `a light line colour (linear RGB): ${c}`);
+  // The page's chrome is dark too.
+  assert.equal(await page.evaluate(() => getComputedStyle(document.getElementById('toolbar')).color), 'rgb(230, 233, 239)');
+  assert.equal(await page.evaluate(() => window.screwbender.session().view.theme), 'dark');
+  // A PNG follows the theme.
+  const d = await downloadOf(() => menuClick('#m-png'));
+  const corner = (await decodePng(await readBytes(d), DARK)).corner;
+  assert.ok(near(corner, DARK, BG_TOL), `dark PNG background: ${corner}`);
+  // D toggles back.
+  await page.focus('#view');
+  await page.keyboard.press('d');
+  await waitFrames(page, 2);
+  assert.equal(await page.evaluate(() => document.documentElement.dataset.theme), 'light');
+  const again = await examine(spots);
+  again.colours.forEach((c, k) => assert.ok(near(c, LIGHT, BG_TOL), `light again at ${spots[k]}: ${c}`));
+  assert.deepEqual(problems, []);
+});
+
+test('prefers-color-scheme: dark gives the dark theme on a first visit', async () => {
+  const context = await play.browser.newContext({ viewport: { width: 1280, height: 800 }, colorScheme: 'dark' });
+  try {
+    const { page: p, problems: pp } = await openPage(context, play.url, BACKEND);
+    const s = await p.evaluate(() => ({ theme: document.documentElement.dataset.theme, setting: window.screwbender.app.view.theme }));
+    assert.deepEqual(s, { theme: 'dark', setting: 'auto' });
+    const c = await p.evaluate(() => {
+      const { app } = window.screwbender;
+      let px;
+      app.viewer.snapshot(1, [null], (canvas) => {
+        const g = document.createElement('canvas').getContext('2d');
+        g.canvas.width = canvas.width;
+        g.canvas.height = canvas.height;
+        g.drawImage(canvas, 0, 0);
+        px = [...g.getImageData(1, 1, 1, 1).data.subarray(0, 3)];
+      });
+      return px;
+    });
+    assert.ok(near(c, DARK, BG_TOL), `dark canvas on a first visit: ${c}`);
+    // The system turning light again is followed while the setting is 'auto'.
+    await p.emulateMedia({ colorScheme: 'light' });
+    await p.waitForFunction(() => document.documentElement.dataset.theme === 'light');
+    assert.deepEqual(pp, []);
+  } finally {
+    await context.close();
+  }
+});
+
+test('the View menu at phone size and at 1280×800: on screen, by keyboard, Esc closes it', async () => {
+  for (const size of [{ width: 390, height: 844 }, { width: 1280, height: 800 }]) {
+    await page.setViewportSize(size);
+    await waitFrames(page, 2);
+    await page.focus('#t-view');
+    await page.keyboard.press('Enter');
+    assert.equal(await page.evaluate(() => document.activeElement.dataset.camera), 'front', 'the focus moves into the menu');
+    const box = await page.locator('#view-menu').boundingBox();
+    assert.ok(box.x >= 0 && box.y >= 0 && box.x + box.width <= size.width && box.y + box.height <= size.height, `on screen: ${JSON.stringify(box)}`);
+    for (const id of ['#m-png', '#m-video', '#m-theme']) assert.ok(await page.locator(id).isVisible(), id);
+    await page.keyboard.press('Escape');
+    assert.equal(await page.locator('#view-menu').isHidden(), true);
+    assert.equal(await page.evaluate(() => document.activeElement.id), 't-view', 'the focus goes back to the button');
+  }
+});
+
+/** The serious and critical axe violations of the page as it is now (axe from npm, injected). */
+async function audit() {
+  if (!(await page.evaluate(() => typeof window.axe?.run === 'function'))) {
+    // Through the debugging protocol: the page's CSP (rightly) refuses inline scripts.
+    await page.evaluate(fs.readFileSync(path.join(ROOT, 'node_modules/axe-core/axe.min.js'), 'utf8'));
+  }
+  const found = await page.evaluate(async () => {
+    const r = await window.axe.run(document, { resultTypes: ['violations'] });
+    return r.violations.map((v) => ({ id: v.id, impact: v.impact, nodes: v.nodes.map((n) => n.target.join(' ')) }));
+  });
+  return found.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => `${v.impact} ${v.id}: ${v.nodes.slice(0, 4).join(', ')}`);
+}
+
+test('axe: no serious or critical violation with the View menu open (both themes) and while recording', async () => {
+  for (const theme of ['light', 'dark']) {
+    await page.evaluate((t) => (window.screwbender.app.view.theme = t), theme);
+    await openMenu();
+    assert.deepEqual(await audit(), [], `View menu, ${theme} theme`);
+    await page.keyboard.press('Escape');
+  }
+  await page.evaluate(() => (window.screwbender.app.view.theme = 'auto'));
+  await menuClick('#m-video');
+  await page.waitForFunction(() => !document.getElementById('rec').hidden);
+  assert.deepEqual(await audit(), [], 'recording bar');
+  await page.click('#rec-cancel');
+  await page.waitForFunction(() => document.getElementById('rec').hidden);
+});

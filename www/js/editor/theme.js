@@ -1,0 +1,76 @@
+// The light and dark themes: the page's chrome (css/style.css, the block of `data-theme="dark"`
+// variables on <html>) and the 3-D view's background and line colours (Viewer.setDark). The
+// setting is app.view.theme — 'auto' follows the system's `prefers-color-scheme` (and its
+// changes), 'light' and 'dark' hold — kept with the session and the share link like every view
+// setting; the View menu's toggle (and D with the view focused) picks the opposite of what is
+// shown.
+//
+// The part turns app.view.theme into a property whose setter applies the theme, so a restored
+// session, an undo or a share link shows its theme without a call of its own.
+
+/** The values of app.view.theme. */
+export const THEMES = ['auto', 'light', 'dark'];
+
+export default {
+  id: 'theme',
+  create(app) {
+    const query = window.matchMedia?.('(prefers-color-scheme: dark)');
+    let value = THEMES.includes(app.view.theme) ? app.view.theme : 'auto';
+    let bound = false;
+
+    /** Whether the theme shown is dark. */
+    const isDark = () => value === 'dark' || (value === 'auto' && !!query?.matches);
+
+    function apply() {
+      const dark = isDark();
+      document.documentElement.dataset.theme = dark ? 'dark' : 'light';
+      // Form controls and scroll bars follow as well.
+      document.documentElement.style.colorScheme = dark ? 'dark' : 'light';
+      if (bound) {
+        app.viewer.setDark(dark);
+        const b = document.getElementById('m-theme');
+        b?.setAttribute('aria-pressed', String(dark));
+      }
+    }
+
+    Object.defineProperty(app.view, 'theme', {
+      enumerable: true,
+      configurable: true,
+      get: () => value,
+      set(v) {
+        // Anything else (an old or hand-made session) keeps the current theme.
+        if (!THEMES.includes(v) || v === value) return;
+        value = v;
+        apply();
+      },
+    });
+    query?.addEventListener?.('change', () => value === 'auto' && apply());
+    // The chrome at once (no light flash before the view starts); the canvas once bound.
+    apply();
+
+    /** Shows the other theme than the one shown now (an explicit choice, undoable like every view setting). */
+    function toggle() {
+      app.setView('theme', isDark() ? 'light' : 'dark');
+    }
+
+    function onKey(e) {
+      const t = e.target;
+      const onView = !t || t === app.canvas || t === document.body || t === document.documentElement;
+      if (!onView || e.ctrlKey || e.metaKey || e.altKey || e.shiftKey) return;
+      if (e.key !== 'd' && e.key !== 'D') return;
+      toggle();
+      e.preventDefault();
+    }
+
+    return {
+      isDark,
+      toggle,
+      bind() {
+        bound = true;
+        apply();
+        document.getElementById('m-theme').addEventListener('click', toggle);
+        window.addEventListener('keydown', onKey);
+      },
+    };
+  },
+};

@@ -1,0 +1,151 @@
+// Where the 3-D view looks from and how it fills the screen: the named camera views (front, top,
+// side, iso: view/camera.js CAMERA_PRESETS), the orthographic projection, fullscreen, and the
+// toolbar's View menu that holds them with the theme toggle (editor/theme.js) and the picture
+// exports (editor/media.js, which binds its entries after this part). Keys, with the
+// view focused: Shift+F / Shift+T / Shift+S / Shift+I the named views, O orthographic
+// (lower-case f and i stay the 4-point scheme and insert, editor/input.js).
+
+/** Shift + key → named camera view. */
+const PRESET_KEYS = { F: 'front', T: 'top', S: 'side', I: 'iso' };
+
+/**
+ * Makes `panel` a popover of toolbar `button`: the button opens and closes it (aria-expanded),
+ * Esc or a press outside closes it and gives the focus back to the button. Returns
+ * { open, close, toggle, isOpen }.
+ */
+export function menu(button, panel) {
+  button.setAttribute('aria-expanded', 'false');
+  button.setAttribute('aria-controls', panel.id);
+
+  function place() {
+    const r = button.getBoundingClientRect();
+    const w = panel.offsetWidth;
+    const h = panel.offsetHeight;
+    const W = window.innerWidth;
+    const H = window.innerHeight;
+    const clamp = (v, lo, hi) => Math.max(lo, Math.min(hi, v));
+    // Beside a toolbar on the left, else above the button (the phone's bottom toolbar).
+    if (r.right + 8 + w <= W && r.left < W / 3 && r.top > 60 && r.bottom < H - 60) {
+      panel.style.left = `${r.right + 8}px`;
+      panel.style.top = `${clamp(r.top - 8, 8, H - h - 8)}px`;
+    } else {
+      panel.style.left = `${clamp(r.left + r.width / 2 - w / 2, 8, W - w - 8)}px`;
+      panel.style.top = `${clamp(r.top - h - 8, 8, H - h - 8)}px`;
+    }
+  }
+
+  function onDown(e) {
+    if (!panel.contains(e.target) && !button.contains(e.target)) close(false);
+  }
+
+  function open() {
+    panel.hidden = false;
+    button.setAttribute('aria-expanded', 'true');
+    button.classList.add('on');
+    place();
+    panel.querySelector('button, input, select')?.focus();
+    document.addEventListener('pointerdown', onDown, true);
+  }
+
+  function close(refocus = true) {
+    if (panel.hidden) return;
+    panel.hidden = true;
+    button.setAttribute('aria-expanded', 'false');
+    button.classList.remove('on');
+    document.removeEventListener('pointerdown', onDown, true);
+    if (refocus) button.focus();
+  }
+
+  button.addEventListener('click', () => (panel.hidden ? open() : close()));
+  panel.addEventListener('keydown', (e) => {
+    if (e.key === 'Escape') {
+      close();
+      e.preventDefault();
+      e.stopPropagation();
+    }
+  });
+  window.addEventListener('resize', () => panel.hidden || place());
+  return { open, close, toggle: () => (panel.hidden ? open() : close()), isOpen: () => !panel.hidden };
+}
+
+export default {
+  id: 'viewpoint',
+  create(app) {
+    const $ = (id) => document.getElementById(id);
+
+    /** After the camera changed: redraw, the pose numbers to their handles again (ui refresh), save. */
+    function moved() {
+      app.viewer.cameraMoved();
+      app.ui?.refresh();
+      refresh();
+      app.autosave();
+    }
+
+    /** Turns the camera to the named view ('front', 'top', 'side', 'iso'); false when unknown. */
+    function preset(name) {
+      if (!app.camera.preset(name)) return false;
+      moved();
+      return true;
+    }
+
+    /** Orthographic (true) or perspective projection; the camera's setting is saved with the session. */
+    function setOrtho(on) {
+      app.camera.ortho = !!on;
+      moved();
+    }
+
+    /** The element shown fullscreen: the page (the view and its controls stay usable). */
+    const stage = () => document.documentElement;
+
+    /** Enters or leaves fullscreen (Esc leaves too); a refusal shows a message. */
+    async function toggleFullscreen() {
+      try {
+        if (document.fullscreenElement) await document.exitFullscreen();
+        else if (stage().requestFullscreen) await stage().requestFullscreen({ navigationUI: 'hide' });
+        else throw new Error('this browser has no fullscreen mode');
+      } catch (e) {
+        app.showError(`Fullscreen is not available: ${e.message}`, 'warn');
+      }
+    }
+
+    function refresh() {
+      $('m-ortho')?.setAttribute('aria-pressed', String(!!app.camera?.ortho));
+      $('m-fullscreen')?.setAttribute('aria-pressed', String(!!document.fullscreenElement));
+    }
+
+    function onKey(e) {
+      const t = e.target;
+      const onView = !t || t === app.canvas || t === document.body || t === document.documentElement;
+      if (!onView || e.ctrlKey || e.metaKey || e.altKey) return;
+      const name = e.shiftKey ? PRESET_KEYS[e.key] : null;
+      if (name) preset(name);
+      else if (e.key === 'o' || e.key === 'O') setOrtho(!app.camera.ortho);
+      else return;
+      e.preventDefault();
+    }
+
+    return {
+      preset,
+      setOrtho,
+      toggleFullscreen,
+      refresh,
+      /** The View menu's popover ({ open, close, toggle, isOpen }), once bound. */
+      menu: null,
+      bind() {
+        this.menu = menu($('t-view'), $('view-menu'));
+        for (const b of $('view-menu').querySelectorAll('[data-camera]')) {
+          b.addEventListener('click', () => preset(b.dataset.camera));
+        }
+        $('m-ortho').addEventListener('click', () => setOrtho(!app.camera.ortho));
+        $('m-fullscreen').addEventListener('click', () => toggleFullscreen());
+        document.addEventListener('fullscreenchange', () => {
+          // The view changed size: the resize observer redraws; the framing stays.
+          app.viewer.invalidateSize();
+          refresh();
+        });
+        window.addEventListener('keydown', onKey);
+        refresh();
+      },
+    };
+  },
+};
