@@ -1,4 +1,5 @@
-// Node entry of the `screwbender` package (the "node" export condition).
+// Node entry of the `screwbender` package (the "node" export condition); scripts/build-pkg.sh
+// also copies it to full/node.js, the Node entry of `screwbender/full`.
 //
 // It instantiates the same WebAssembly file as the browser entry, synchronously from disk, so
 // `import { Motion } from 'screwbender'` is ready at once in Node. Calling the default export

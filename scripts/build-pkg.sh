@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Build the npm package `screwbender` into pkg/, then pack it into a tarball: the math-only
-# WebAssembly module (the main entry, no renderer) and the `screwbender/viewer` entry (the
-# <screw-bender> element: www/js/element, www/js/view and the renderer's modules in pkg/viewer/).
+# WebAssembly module (the main entry, no renderer), the `screwbender/full` entry (the math plus
+# files, comparison methods, three.js tracks and the teaching functions, in pkg/full/) and the `screwbender/viewer` entry
+# (the <screw-bender> element: www/js/element, www/js/view and the renderer's modules in
+# pkg/viewer/).
 #
 #   ./scripts/build-pkg.sh               # pkg/ and artifacts/npm/screwbender-<version>.tgz
 #   PACK=0 ./scripts/build-pkg.sh        # pkg/ only
@@ -31,40 +33,13 @@ PACK_DIR=${PACK_DIR:-$REPO_ROOT/artifacts/npm}
 TARGET_DIR=${CARGO_TARGET_DIR:-$REPO_ROOT/target}
 WASM_OPT=$REPO_ROOT/node_modules/.bin/wasm-opt
 
-want=$(locked_wasm_bindgen_version)
-have=$(wasm-bindgen --version 2>/dev/null | awk '{print $2}') || true
-[[ $have == "$want" ]] || die "wasm-bindgen $want needed (Cargo.lock), found '${have:-none}': run scripts/setup.sh"
-[[ -x $WASM_OPT ]] || die "$WASM_OPT missing: run npm ci at the repo root (scripts/setup.sh)"
-
-header "cargo build (wasm32, wasm-release, no features)"
-timed "cargo build" cargo build -p screwbender-web --lib --profile wasm-release --target "$WASM_TARGET"
-
-# Skip wasm-bindgen and wasm-opt (~20 s) when neither the module nor the packaging changed.
-input=$TARGET_DIR/$WASM_TARGET/wasm-release/screwbender_web.wasm
-stamp=$(cat "$input" npm/* scripts/build-pkg.sh Cargo.lock | sha256sum | cut -d' ' -f1)
-if [[ -f $PKG_DIR/.build-stamp && $(cat "$PKG_DIR/.build-stamp") == "$stamp" &&
-  -f $PKG_DIR/screwbender_bg.wasm ]]; then
-  log "pkg/ is up to date with the wasm module and npm/: not regenerating"
-else
-  header "wasm-bindgen --target web"
-  rm -rf "$PKG_DIR"
-  mkdir -p "$PKG_DIR"
-  timed "wasm-bindgen" wasm-bindgen --target web --out-dir "$PKG_DIR" --out-name screwbender "$input"
-
-  header "wasm-opt -Os"
-  # The features rustc enables by default for wasm32 (wasm-opt must accept what the module uses).
-  timed "wasm-opt" "$WASM_OPT" -Os \
-    --enable-bulk-memory --enable-reference-types --enable-nontrapping-float-to-int \
-    --enable-sign-ext --enable-mutable-globals --enable-multivalue --enable-simd \
-    "$PKG_DIR/screwbender_bg.wasm" -o "$PKG_DIR/screwbender_bg.opt.wasm"
-  mv "$PKG_DIR/screwbender_bg.opt.wasm" "$PKG_DIR/screwbender_bg.wasm"
-
-  header "types without the DOM lib"
-  # wasm-bindgen's init types name DOM types (RequestInfo, Response, BufferSource) and the
-  # WebAssembly namespace, which a Node-only TypeScript project (lib es2022, types node, no
-  # skipLibCheck) does not have. Replace them by structural types declared in the file itself:
-  # URL, Request, Response, ArrayBuffer and WebAssembly.Module values still match them.
-  node - "$PKG_DIR/screwbender.d.ts" "$PKG_DIR/screwbender_bg.wasm.d.ts" <<'JS'
+# node_types DIR: wasm-bindgen's init types name DOM types (RequestInfo, Response, BufferSource)
+# and the WebAssembly namespace, which a Node-only TypeScript project (lib es2022, types node, no
+# skipLibCheck) does not have. Replace them by structural types declared in the file itself:
+# URL, Request, Response, ArrayBuffer and WebAssembly.Module values still match them.
+node_types() {
+  header "types without the DOM lib ($(basename "$1"))"
+  node - "$1/screwbender.d.ts" "$1/screwbender_bg.wasm.d.ts" <<'JS'
 const fs = require('fs');
 const decls = `
 /** A URL (a \`URL\` object or anything with its \`href\`); declared here so that these types need no DOM lib. */
@@ -104,10 +79,74 @@ for (const [i, file] of process.argv.slice(2).entries()) {
   fs.writeFileSync(file, text);
 }
 JS
+}
+
+want=$(locked_wasm_bindgen_version)
+have=$(wasm-bindgen --version 2>/dev/null | awk '{print $2}') || true
+[[ $have == "$want" ]] || die "wasm-bindgen $want needed (Cargo.lock), found '${have:-none}': run scripts/setup.sh"
+[[ -x $WASM_OPT ]] || die "$WASM_OPT missing: run npm ci at the repo root (scripts/setup.sh)"
+
+header "cargo build (wasm32, wasm-release, no features)"
+timed "cargo build" cargo build -p screwbender-web --lib --profile wasm-release --target "$WASM_TARGET"
+
+# Skip wasm-bindgen and wasm-opt (~20 s) when neither the module nor the packaging changed.
+input=$TARGET_DIR/$WASM_TARGET/wasm-release/screwbender_web.wasm
+stamp=$(cat "$input" npm/* scripts/build-pkg.sh Cargo.lock | sha256sum | cut -d' ' -f1)
+if [[ -f $PKG_DIR/.build-stamp && $(cat "$PKG_DIR/.build-stamp") == "$stamp" &&
+  -f $PKG_DIR/screwbender_bg.wasm ]]; then
+  log "pkg/ is up to date with the wasm module and npm/: not regenerating"
+else
+  header "wasm-bindgen --target web"
+  rm -rf "$PKG_DIR"
+  mkdir -p "$PKG_DIR"
+  timed "wasm-bindgen" wasm-bindgen --target web --out-dir "$PKG_DIR" --out-name screwbender "$input"
+
+  header "wasm-opt -Os"
+  # The features rustc enables by default for wasm32 (wasm-opt must accept what the module uses).
+  timed "wasm-opt" "$WASM_OPT" -Os \
+    --enable-bulk-memory --enable-reference-types --enable-nontrapping-float-to-int \
+    --enable-sign-ext --enable-mutable-globals --enable-multivalue --enable-simd \
+    "$PKG_DIR/screwbender_bg.wasm" -o "$PKG_DIR/screwbender_bg.opt.wasm"
+  mv "$PKG_DIR/screwbender_bg.opt.wasm" "$PKG_DIR/screwbender_bg.wasm"
+
+  node_types "$PKG_DIR"
 fi
 
 WASM_OPT_FEATURES=(--enable-bulk-memory --enable-reference-types --enable-nontrapping-float-to-int
   --enable-sign-ext --enable-mutable-globals --enable-multivalue --enable-simd)
+
+# The `screwbender/full` entry (full/): the math module plus file export and import (glTF, CSV),
+# the comparison methods, the three.js keyframe tracks and the teaching views' functions (cargo
+# features files,methods,tracks,teaching; no renderer), for developers who want those without the playground. A module of its own, so that
+# the main entry stays light; -Os like the main module (speed matters more than a few KB here).
+# Node loads it through full/node.js, the same synchronous entry as the main one.
+full_module() {
+  local features=files,methods,tracks,teaching out=$PKG_DIR/full stamp stamp_file
+  header "full: cargo build (wasm32, wasm-release, features $features)"
+  timed "cargo build" cargo build -p screwbender-web --lib --profile wasm-release --target "$WASM_TARGET" \
+    --features "$features"
+  stamp=$( (cat "$input" npm/node.js scripts/build-pkg.sh Cargo.lock; echo "$features") | sha256sum | cut -d' ' -f1)
+  stamp_file=$PKG_DIR/.full-stamp
+  if [[ -f $stamp_file && $(cat "$stamp_file") == "$stamp" && -f $out/screwbender_bg.wasm ]]; then
+    log "$out is up to date with the wasm module: not regenerating"
+    return
+  fi
+  rm -rf "$out"
+  mkdir -p "$out"
+  timed "wasm-bindgen" wasm-bindgen --target web --remove-name-section --remove-producers-section \
+    --out-dir "$out" --out-name screwbender "$input"
+  timed "wasm-opt -Os" "$WASM_OPT" -Os --strip-debug --strip-producers "${WASM_OPT_FEATURES[@]}" \
+    "$out/screwbender_bg.wasm" -o "$out/screwbender_bg.opt.wasm"
+  mv "$out/screwbender_bg.opt.wasm" "$out/screwbender_bg.wasm"
+  rm -f "$out/package.json" "$out/.gitignore"
+  node_types "$out"
+  cp npm/node.js "$out/node.js"
+  echo "$stamp" >"$stamp_file"
+  log "full: $(wc -c <"$out/screwbender_bg.wasm") bytes wasm, $(gzip -9c "$out/screwbender_bg.wasm" | wc -c) bytes gzip"
+}
+if [[ ${FULL:-1} == 1 ]]; then
+  full_module
+fi
 
 # viewer_module FEATURES OUT_DIR: one renderer module of the viewer (cargo, wasm-bindgen, wasm-opt;
 # the last two, ~1-3 min, are skipped when the cargo output and this script did not change).

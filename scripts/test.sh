@@ -61,8 +61,9 @@ stage "clippy $WASM_TARGET (web lib, features render)" \
   cargo clippy -p screwbender-web --lib --target "$WASM_TARGET" --features render -- -D warnings
 stage "native tests (all targets)" cargo test --workspace --all-targets
 stage "doc tests" cargo test --workspace --doc
+# The web crate's tests with its `teaching` functions (feature-gated out of the light npm module).
 stage "wasm tests (node + headless Chromium)" \
-  cargo test --target "$WASM_TARGET" -p screwbender -p screwbender-web --tests --lib
+  cargo test --target "$WASM_TARGET" -p screwbender -p screwbender-web --features screwbender-web/teaching --tests --lib
 
 # Extra stages from other parts of the project (JS package, node tests, Playwright e2e).
 if [[ -d scripts/test.d ]]; then

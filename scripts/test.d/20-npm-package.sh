@@ -17,14 +17,11 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../lib.sh"
 cd "$REPO_ROOT"
 
-# The math module's budget. The issues asked for 150 000; the module is about 162 500 bytes since
-# the workspace split (generic subdivision code the web crate calls is now compiled a second time
-# in that crate: release builds do not share generic instantiations across crates, about 5 KB)
-# and this release's new API (key velocities, key times in documents, subdivision warnings,
-# batched span screws, about 7.5 KB). opt-level "z" for both crates would bring it to 147 700
-# but halves the module's speed, so the budget is 165 000 until the generic code is compiled
-# once in the core (see the README's Speed section).
-WASM_GZIP_BUDGET=${WASM_GZIP_BUDGET:-165000}
+# The math module's budget (the main entry): 150 000 bytes gzip. It holds the motion API only;
+# file export/import, the comparison methods, the three.js keyframe tracks and the teaching
+# views' functions are in the `screwbender/full` entry (its own module, reported, not budgeted:
+# who imports it asked for those), the renderer in `screwbender/viewer` (scripts/viewer-size.sh).
+WASM_GZIP_BUDGET=${WASM_GZIP_BUDGET:-150000}
 VITE_VERSION=7.3.8
 TYPESCRIPT_VERSION=5.9.3
 TYPES_NODE_VERSION=20.19.43
@@ -37,6 +34,11 @@ tarball=$REPO_ROOT/artifacts/npm/screwbender-$version.tgz
 
 header "package contents and size"
 expected="package/README.md
+package/full/node.js
+package/full/screwbender.d.ts
+package/full/screwbender.js
+package/full/screwbender_bg.wasm
+package/full/screwbender_bg.wasm.d.ts
 package/node.js
 package/package.json
 package/screwbender.d.ts
@@ -59,7 +61,9 @@ wasm_raw=$(wc -c <pkg/screwbender_bg.wasm)
 wasm_gz=$(gzip -9c pkg/screwbender_bg.wasm | wc -c)
 log "wasm: $wasm_raw bytes, $wasm_gz bytes gzip (budget $WASM_GZIP_BUDGET); tarball: $(wc -c <"$tarball") bytes"
 ((wasm_gz <= WASM_GZIP_BUDGET)) || die "the .wasm is $wasm_gz bytes gzip, over the budget of $WASM_GZIP_BUDGET"
-if grep -q -E 'wgpu|webgpu' pkg/screwbender.js; then
+full_gz=$(gzip -9c pkg/full/screwbender_bg.wasm | wc -c)
+log "screwbender/full: $(wc -c <pkg/full/screwbender_bg.wasm) bytes wasm, $full_gz bytes gzip"
+if grep -q -E 'wgpu|webgpu' pkg/screwbender.js pkg/full/screwbender.js; then
   die "the math-only package mentions wgpu/WebGPU: was it built with the render feature?"
 fi
 
@@ -85,8 +89,8 @@ mkdir "$work/node"
 app_package_json sb-node-smoke >"$work/node/package.json"
 (cd "$work/node" && timed "npm install (tarball)" "${NPM_INSTALL[@]}" "$tarball")
 smoke_files "$work/node"
-cp tests/js/install/node-smoke.mjs "$work/node/"
-(cd "$work/node" && node node-smoke.mjs)
+cp tests/js/install/node-smoke.mjs tests/js/install/node-full.mjs "$work/node/"
+(cd "$work/node" && node node-smoke.mjs && node node-full.mjs)
 
 header "plain ES-module page (no bundler)"
 mkdir "$work/plain"

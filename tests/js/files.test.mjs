@@ -1,14 +1,10 @@
-// Motion.exportFile and importMotionFile (cargo feature `files`, in the playground's build
-// www/pkg/, not in the math-only npm module): glTF / CSV export, round trips through every
-// import format, and bad settings and files (clear Error, motion unchanged).
+// Motion.exportFile and importMotionFile (cargo feature `files`: the npm package's
+// `screwbender/full` entry, not its light main module): glTF / CSV export, round trips through
+// every import format, and bad settings and files (clear Error, motion unchanged).
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
 import { describe, it } from 'node:test';
+import { sb } from './full-package.mjs';
 
-const PKG = new URL('../../www/pkg/', import.meta.url);
-const sb = await import(new URL('screwbender.js', PKG).href);
-// The web build's init takes the module bytes (no fetch in Node).
-await sb.default({ module_or_path: readFileSync(new URL('screwbender_bg.wasm', PKG)) });
 const { Motion, importMotionFile } = sb;
 
 function samePoses(a, b, tol) {

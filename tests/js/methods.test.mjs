@@ -1,13 +1,10 @@
-// The comparison methods through JavaScript (cargo feature `methods`, in the playground's build
-// www/pkg/): every method on every preset, the metrics table, Ramamoorthi–Barr's report, and
+// The comparison methods through JavaScript (cargo feature `methods`: the npm package's
+// `screwbender/full` entry): every method on every preset, the metrics table, Ramamoorthi–Barr's report, and
 // bad input (clear Error, motion unchanged).
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
 import { describe, it } from 'node:test';
+import { sb } from './full-package.mjs';
 
-const PKG = new URL('../../www/pkg/', import.meta.url);
-const sb = await import(new URL('screwbender.js', PKG).href);
-await sb.default({ module_or_path: readFileSync(new URL('screwbender_bg.wasm', PKG)) });
 const { Motion, methods, scenes } = sb;
 
 describe('comparison methods', () => {

@@ -1,15 +1,12 @@
 // Playback in seconds on Motion (docs/math/timing.md §3): timeDomain, parameterAt(t) and its
 // inverse timeAt(u) follow the motion's own key times and velocities; uniform timing is the
-// identity exactly; bad input throws naming the argument and changes nothing. Uses the
-// playground's build (www/pkg/), like timing-files.test.mjs.
+// identity exactly; bad input throws naming the argument and changes nothing. Uses the npm
+// package's `screwbender/full` entry, like timing-files.test.mjs.
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
 import { describe, it } from 'node:test';
 import { prng } from './prng.mjs';
+import { sb } from './full-package.mjs';
 
-const PKG = new URL('../../www/pkg/', import.meta.url);
-const sb = await import(new URL('screwbender.js', PKG).href);
-await sb.default({ module_or_path: readFileSync(new URL('screwbender_bg.wasm', PKG)) });
 const { Motion } = sb;
 
 /** A preset motion, opened (`closed: false`) or as it is (a cycle). */

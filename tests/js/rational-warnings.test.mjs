@@ -2,16 +2,14 @@
 // compareMethods and Motion.rational) and the Chaudhry–Cameron motion through JavaScript
 // (Motion.rational, Motion.rationalFromTriangles: end conditions (18)/(19), the rational Bézier
 // control points, raw triangle input), checked against the CLI's `screwbender rational` — the
-// Rust library's numbers. Loads the playground's build www/pkg/ (feature `methods`).
+// Rust library's numbers. Loads the npm package's `screwbender/full` entry (feature `methods`).
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { existsSync, readFileSync } from 'node:fs';
 import { describe, it } from 'node:test';
+import { sb } from './full-package.mjs';
 
 const ROOT = new URL('../../', import.meta.url);
-const PKG = new URL('www/pkg/', ROOT);
-const sb = await import(new URL('screwbender.js', PKG).href);
-await sb.default({ module_or_path: readFileSync(new URL('screwbender_bg.wasm', PKG)) });
 const { Motion } = sb;
 
 /** The `screwbender` binary (built once if missing), run with `args` and `input`. */

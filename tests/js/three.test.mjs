@@ -1,5 +1,5 @@
-// Motion.keyframeTracks (cargo feature `tracks`, in the playground's build www/pkg/, not yet in
-// the math-only npm module) played by the real three.js (the npm package `three`, a devDependency):
+// Motion.keyframeTracks (cargo feature `tracks`: the npm package's `screwbender/full` entry,
+// not its light main module) played by the real three.js (the npm package `three`, a devDependency):
 // the tracks go into a VectorKeyframeTrack and a QuaternionKeyframeTrack, an AnimationClip and
 // an AnimationMixer on an Object3D; at many times the object's matrix, applied to points of the
 // object, is compared with the motion itself (motion.posesAt at u = p(t), the motion's own
@@ -8,15 +8,11 @@
 import assert from 'node:assert/strict';
 import { describe, it } from 'node:test';
 
-import { readFileSync } from 'node:fs';
 import * as THREE from 'three';
 
 import { prng } from './prng.mjs';
+import { sb } from './full-package.mjs';
 
-const PKG = new URL('../../www/pkg/', import.meta.url);
-const sb = await import(new URL('screwbender.js', PKG).href);
-// The web build's init takes the module bytes (no fetch in Node).
-await sb.default({ module_or_path: readFileSync(new URL('screwbender_bg.wasm', PKG)) });
 const { Motion, timingMap } = sb;
 
 /**

@@ -1,13 +1,10 @@
 // Key times and velocities on Motion (docs/math/timing.md §3), honest export file names, the
-// reduction of dense imports and a dropped glTF's title and mesh. Uses the playground's build
-// (www/pkg/, cargo feature `files`), like files.test.mjs.
+// reduction of dense imports and a dropped glTF's title and mesh. Uses the npm package's
+// `screwbender/full` entry (cargo feature `files`), like files.test.mjs.
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
 import { describe, it } from 'node:test';
+import { sb } from './full-package.mjs';
 
-const PKG = new URL('../../www/pkg/', import.meta.url);
-const sb = await import(new URL('screwbender.js', PKG).href);
-await sb.default({ module_or_path: readFileSync(new URL('screwbender_bg.wasm', PKG)) });
 const { Motion, importMotionFile, reducePoses, importedMesh, timingMap } = sb;
 
 describe('Motion key times and velocities', () => {

@@ -6,7 +6,8 @@
 //!   `scenes`, `limits`, `version`, `importMotionFile` (feature `files`; so is
 //!   `Motion.exportFile`), `methods` (feature `methods`: the comparison methods; see `Motion.methodSample`,
 //!   `compareMethods`, `quaternionSpline`); `Motion.keyframeTracks` (three.js keyframe arrays,
-//!   feature `tracks`).
+//!   feature `tracks`); the teaching views' `subdividePolygon`, `polygonScenes`, `spanScrewsOf`,
+//!   `splitTweakStep`, `subdivideDecoupled`, `compareFrames` (feature `teaching`).
 //!
 //! Bulk results are typed arrays with fixed layouts (see [`convert`]): 7 `f64` per pose
 //! (origin `x, y, z`, quaternion `w, x, y, z`), 16 `f32` per column-major 4×4 matrix, 16 `f64`
@@ -30,6 +31,7 @@ mod motion;
 pub mod options;
 mod scenes;
 mod screw;
+#[cfg(feature = "teaching")]
 mod teaching;
 #[cfg(feature = "tracks")]
 mod tracks;
@@ -43,6 +45,7 @@ pub use methods::methods;
 pub use motion::MotionHandle;
 pub use scenes::scenes;
 pub use screw::{poses_to_matrices_js, screw, screw_info, screw_pairs, screw_poses};
+#[cfg(feature = "teaching")]
 pub use teaching::{
     compare_frames_js, polygon_scenes, span_screws_of, split_tweak_step_js, subdivide_decoupled_js,
     subdivide_polygon,

@@ -3,10 +3,10 @@
 //! `motion.exportFile` samples the glTF animation (the core's [`screwbender::keyframe_tracks`]:
 //! the keys of `sample_document`, which the export calls, for adaptive sampling).
 //!
-//! Feature `tracks`: in the playground's build. It is kept small for the math-only npm module,
-//! which leaves it out while that module's size budget has no room: adaptive sampling only (a
-//! fixed frame rate is `exportFile`'s), options read without serde, and the object's extent
-//! given as a radius or its points (no named meshes).
+//! Feature `tracks`: in the playground's build and the npm package's `screwbender/full` entry
+//! (the light main module leaves it out for its size budget). Kept small all the same: adaptive
+//! sampling only (a fixed frame rate is `exportFile`'s), options read without serde, and the
+//! object's extent given as a radius or its points (no named meshes).
 
 use js_sys::{Float32Array, Object, Reflect};
 use wasm_bindgen::prelude::*;

@@ -2,8 +2,8 @@
 //! headless Chromium: layouts, the L-polygon vectors of docs/math/point-rules.md §5, the split/tweak step of a known
 //! motion, frame (in)dependence, and bad input that must throw an error naming the element.
 //!
-//! `cargo test --target wasm32-unknown-unknown --test teaching`.
-#![cfg(target_arch = "wasm32")]
+//! `cargo test --target wasm32-unknown-unknown -p screwbender-web --features teaching --test teaching_api`.
+#![cfg(all(target_arch = "wasm32", feature = "teaching"))]
 
 mod support;
 
