@@ -38,7 +38,7 @@ export interface ViewerOptions {
   controls?: 'none' | 'minimal' | 'full';
   /** `iso`, `front`, `side`, `top` or `"yaw pitch [distance]"` (degrees, scene units). */
   camera?: string;
-  /** The figure's chrome and frame (the 3-D background stays light). */
+  /** The figure's chrome, frame and 3-D view (background and line colours). */
   theme?: 'light' | 'dark';
   /** A localStorage key: the figure saves its edits there and restores them (never without it). */
   persist?: string;
