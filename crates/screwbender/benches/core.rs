@@ -8,6 +8,17 @@
 use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
+
+/// `rounds` under `cargo bench`, one round otherwise: `cargo test --all-targets` runs this file
+/// once as a smoke test in a debug build, where the full interleaved reports took minutes
+/// (cargo passes `--bench` only to a benchmark run).
+fn rounds(rounds: usize) -> usize {
+    if std::env::args().any(|a| a == "--bench") {
+        rounds
+    } else {
+        1
+    }
+}
 use glam::{DQuat, DVec3};
 use nalgebra::{Isometry3, Quaternion, Translation3, UnitDualQuaternion, UnitQuaternion};
 use screwbender::{
@@ -117,7 +128,7 @@ fn report_interleaved(data: &[(Pose, Pose, Pose)]) {
     let dqs: Vec<_> = data.iter().map(|(a, b, _)| (to_dq(a), to_dq(b))).collect();
     let mut out = Vec::with_capacity(PAIRS);
     let mut times = [Vec::new(), Vec::new(), Vec::new()];
-    for _ in 0..400 {
+    for _ in 0..rounds(400) {
         let t0 = Instant::now();
         for (a, b, _) in data {
             black_box(screw(black_box(a), black_box(0.3), black_box(b)));
@@ -216,7 +227,7 @@ fn report_motion_overhead() {
         let s = Subdivision::new(scheme, Rules::Direct, 6);
         let (mut ratios, mut apply, mut new) = (Vec::new(), Vec::new(), Vec::new());
         let (mut ratios_spans, mut new_spans) = (Vec::new(), Vec::new());
-        for _ in 0..300 {
+        for _ in 0..rounds(300) {
             let t0 = std::time::Instant::now();
             for _ in 0..4 {
                 black_box(s.apply(black_box(&poses), true).unwrap());
@@ -246,7 +257,7 @@ fn report_motion_overhead() {
         // in batches (as `ScrewBender::new` builds them), alternating.
         let refined = s.apply(&poses, true).unwrap();
         let mut spans = (Vec::new(), Vec::new());
-        for _ in 0..300 {
+        for _ in 0..rounds(300) {
             let t0 = std::time::Instant::now();
             let one: Vec<Screw> = (0..refined.len())
                 .map(|i| Screw::between(&refined[i], &refined[(i + 1) % refined.len()]))
@@ -286,7 +297,12 @@ fn report_large_subdivisions() {
     let poses = cycle(&mut Rng(11), 8);
     let (small, large) = (
         Subdivision::new(Scheme::FourPoint, Rules::Direct, 9),
-        Subdivision::new(Scheme::FourPoint, Rules::Direct, 17),
+        // 2^20 poses; 2^13 in a smoke test (a debug build would take minutes).
+        Subdivision::new(
+            Scheme::FourPoint,
+            Rules::Direct,
+            if rounds(2) > 1 { 17 } else { 10 },
+        ),
     );
     let mut out = Vec::new();
     let mut buffers = SubdivisionBuffers::new();
@@ -295,7 +311,7 @@ fn report_large_subdivisions() {
         .apply_into(&poses, true, &mut out, &mut buffers)
         .unwrap();
     let mut times: [Vec<f64>; 4] = Default::default();
-    for _ in 0..12 {
+    for _ in 0..rounds(12) {
         let runs: [(&Subdivision, bool); 4] = [
             (&small, true),
             (&large, true),
@@ -322,13 +338,14 @@ fn report_large_subdivisions() {
     let show = |v: [f64; 3]| format!("{:.1} / {:.1} / {:.1}", v[0], v[1], v[2]);
     println!(
         "ns per refined pose, 4-point direct, 8-pose cycle (min / median / max): apply_into 2^12 {}, \
-         2^20 {} (median ratio {:.2}); apply 2^12 {}, 2^20 {} (median ratio {:.2})",
+         2^{big} {} (median ratio {:.2}); apply 2^12 {}, 2^{big} {} (median ratio {:.2})",
         show(small_into),
         show(large_into),
         large_into[1] / small_into[1],
         show(small_apply),
         show(large_apply),
-        large_apply[1] / small_apply[1]
+        large_apply[1] / small_apply[1],
+        big = large.levels + 3,
     );
 }
 
