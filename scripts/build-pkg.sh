@@ -115,18 +115,17 @@ fi
 WASM_OPT_FEATURES=(--enable-bulk-memory --enable-reference-types --enable-nontrapping-float-to-int
   --enable-sign-ext --enable-mutable-globals --enable-multivalue --enable-simd)
 
-# The `screwbender/full` entry (full/): the math module plus file export and import (glTF, CSV),
-# the comparison methods, the three.js keyframe tracks and the teaching views' functions (cargo
-# features files,methods,tracks,teaching; no renderer), for developers who want those without the playground. A module of its own, so that
-# the main entry stays light; -Os like the main module (speed matters more than a few KB here).
-# Node loads it through full/node.js, the same synchronous entry as the main one.
-full_module() {
-  local features=files,methods,tracks,teaching out=$PKG_DIR/full stamp stamp_file
-  header "full: cargo build (wasm32, wasm-release, features $features)"
+# wasm_module FEATURES OUT_DIR OPT [node]: the web crate built with FEATURES into OUT_DIR
+# (cargo, wasm-bindgen, wasm-opt at OPT; the last two, ~1-3 min, are skipped when the cargo output
+# and this script did not change). With `node`, a module that Node and a Node-only TypeScript
+# project use directly: types without the DOM lib and the synchronous Node entry node.js.
+wasm_module() {
+  local features=$1 out=$2 opt=$3 node=${4:-} stamp stamp_file
+  header "$(basename "$out"): cargo build (wasm32, wasm-release, features $features)"
   timed "cargo build" cargo build -p screwbender-web --lib --profile wasm-release --target "$WASM_TARGET" \
     --features "$features"
-  stamp=$( (cat "$input" npm/node.js scripts/build-pkg.sh Cargo.lock; echo "$features") | sha256sum | cut -d' ' -f1)
-  stamp_file=$PKG_DIR/.full-stamp
+  stamp=$( (cat "$input" npm/node.js scripts/build-pkg.sh Cargo.lock; echo "$features $opt $node") | sha256sum | cut -d' ' -f1)
+  stamp_file=$PKG_DIR/.stamp-$(basename "$out")
   if [[ -f $stamp_file && $(cat "$stamp_file") == "$stamp" && -f $out/screwbender_bg.wasm ]]; then
     log "$out is up to date with the wasm module: not regenerating"
     return
@@ -135,48 +134,31 @@ full_module() {
   mkdir -p "$out"
   timed "wasm-bindgen" wasm-bindgen --target web --remove-name-section --remove-producers-section \
     --out-dir "$out" --out-name screwbender "$input"
-  timed "wasm-opt -Os" "$WASM_OPT" -Os --strip-debug --strip-producers "${WASM_OPT_FEATURES[@]}" \
+  timed "wasm-opt $opt" "$WASM_OPT" "$opt" --strip-debug --strip-producers "${WASM_OPT_FEATURES[@]}" \
     "$out/screwbender_bg.wasm" -o "$out/screwbender_bg.opt.wasm"
   mv "$out/screwbender_bg.opt.wasm" "$out/screwbender_bg.wasm"
   rm -f "$out/package.json" "$out/.gitignore"
-  node_types "$out"
-  cp npm/node.js "$out/node.js"
+  if [[ $node == node ]]; then
+    node_types "$out"
+    cp npm/node.js "$out/node.js"
+  fi
   echo "$stamp" >"$stamp_file"
-  log "full: $(wc -c <"$out/screwbender_bg.wasm") bytes wasm, $(gzip -9c "$out/screwbender_bg.wasm" | wc -c) bytes gzip"
+  log "$(basename "$out"): $(wc -c <"$out/screwbender_bg.wasm") bytes wasm, $(gzip -9c "$out/screwbender_bg.wasm" | wc -c) bytes gzip"
 }
-if [[ ${FULL:-1} == 1 ]]; then
-  full_module
-fi
 
-# viewer_module FEATURES OUT_DIR: one renderer module of the viewer (cargo, wasm-bindgen, wasm-opt;
-# the last two, ~1-3 min, are skipped when the cargo output and this script did not change).
-viewer_module() {
-  local features=$1 out=$2 stamp stamp_file
-  header "viewer: cargo build (wasm32, wasm-release, features $features)"
-  timed "cargo build" cargo build -p screwbender-web --lib --profile wasm-release --target "$WASM_TARGET" \
-    --features "$features"
-  stamp=$( (cat "$input" scripts/build-pkg.sh Cargo.lock; echo "$features") | sha256sum | cut -d' ' -f1)
-  stamp_file=$PKG_DIR/.viewer-stamp-$(basename "$out")
-  if [[ -f $stamp_file && $(cat "$stamp_file") == "$stamp" && -f $out/screwbender_bg.wasm ]]; then
-    log "$out is up to date with the wasm module: not regenerating"
-    return
-  fi
-  rm -rf "$out"
-  mkdir -p "$out"
-  timed "wasm-bindgen" wasm-bindgen --target web --remove-name-section --remove-producers-section \
-    --out-dir "$out" --out-name screwbender "$input"
-  timed "wasm-opt -Oz" "$WASM_OPT" -Oz --strip-debug --strip-producers "${WASM_OPT_FEATURES[@]}" \
-    "$out/screwbender_bg.wasm" -o "$out/screwbender_bg.opt.wasm"
-  mv "$out/screwbender_bg.opt.wasm" "$out/screwbender_bg.wasm"
-  rm -f "$out/package.json" "$out/.gitignore"
-  echo "$stamp" >"$stamp_file"
-}
+# The `screwbender/full` entry (full/): the math module plus file export and import (glTF, CSV),
+# the comparison methods, the three.js keyframe tracks and the teaching views' functions (no
+# renderer), for developers who want those without the playground. A module of its own, so that
+# the main entry stays light; -Os like the main module (speed matters more than a few KB here).
+if [[ ${FULL:-1} == 1 ]]; then
+  wasm_module files,methods,tracks,teaching "$PKG_DIR/full" -Os node
+fi
 
 if [[ ${VIEWER:-1} == 1 ]]; then
   viewer=$PKG_DIR/viewer
   rm -rf "$viewer/js" "$viewer/css"
-  viewer_module webgpu,files "$viewer/pkg"
-  viewer_module webgl,files "$viewer/pkg-gl"
+  wasm_module webgpu,files "$viewer/pkg" -Oz
+  wasm_module webgl,files "$viewer/pkg-gl" -Oz
   header "viewer: sources"
   mkdir -p "$viewer/js/element" "$viewer/js/view" "$viewer/js/editor" "$viewer/css"
   # The element's files; modules.js is replaced below.
