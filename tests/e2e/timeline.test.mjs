@@ -169,6 +169,131 @@ test(`${BACKEND}: a marker dragged or moved by keys past its neighbour is refuse
   assert.deepEqual(problems, []);
 });
 
+test(`${BACKEND}: a run of arrow presses on one marker is one undo step; idle, blur, another marker or an undo start a new one`, async () => {
+  await timed();
+  const undoLength = () => sb(() => window.screwbender.app.history.undoStack.length);
+  // The time stamp of every arrow keydown on a marker (the page merges by the same stamps).
+  await sb(() => {
+    window.__markerKeys = [];
+    document.getElementById('keys').addEventListener('keydown', (e) => e.key.startsWith('Arrow') && window.__markerKeys.push({ key: e.target.dataset.key, at: e.timeStamp }), true);
+  });
+  /**
+   * The undo steps the presses recorded since `from` should make: a new step at a run's first
+   * press and after a gap of a second or more (MERGE_IDLE_MS).
+   */
+  const expectedSteps = async (from) => {
+    const keys = await sb(() => window.__markerKeys);
+    let steps = 0;
+    for (let k = from; k < keys.length; k++) {
+      if (k === from || keys[k].key !== keys[k - 1].key || keys[k].at - keys[k - 1].at >= 1000) steps++;
+    }
+    return { steps, count: keys.length };
+  };
+  const m3 = page.locator('#keys .key-marker[data-key="3"]');
+  await m3.focus();
+  let u0 = await undoLength();
+  for (const k of ['ArrowRight', 'ArrowRight', 'ArrowRight', 'Shift+ArrowRight', 'Shift+ArrowRight']) await page.keyboard.press(k);
+  assert.ok(Math.abs((await times())[3] - 4.32) < 1e-9, `${(await times())[3]}`);
+  let want = await expectedSteps(0);
+  assert.equal(want.count, 5);
+  assert.equal((await undoLength()) - u0, want.steps, 'a quick run of presses on one marker: one undo step (unless the machine stalled a second)');
+  for (let k = 0; k < want.steps; k++) await sb(() => window.screwbender.app.undo());
+  assert.deepEqual(await times(), TIMES, 'undoing the run gives the times before it');
+  await sb(() => window.screwbender.app.redo());
+  // Another marker (Tab: the next one) starts a step; so does coming back (Shift+Tab).
+  await sb(() => (window.__markerKeys = []));
+  await m3.focus();
+  u0 = await undoLength();
+  await page.keyboard.press('ArrowRight');
+  await page.keyboard.press('Tab');
+  assert.equal(await sb(() => document.activeElement.dataset.key), '4');
+  await page.keyboard.press('ArrowLeft');
+  await page.keyboard.press('Shift+Tab');
+  await page.keyboard.press('ArrowRight');
+  want = await expectedSteps(0);
+  assert.ok(want.steps === 3, `three runs (${JSON.stringify(await sb(() => window.__markerKeys))})`);
+  assert.equal((await undoLength()) - u0, 3, 'marker 3, marker 4, marker 3 again: three undo steps');
+  // A second idle starts a new step.
+  u0 = await undoLength();
+  await page.waitForTimeout(1100);
+  await page.keyboard.press('ArrowRight');
+  assert.equal((await undoLength()) - u0, 1, 'a press after a second idle: a new step');
+  // A blur ends the run.
+  u0 = await undoLength();
+  await sb(() => document.activeElement.blur());
+  await m3.focus();
+  await page.keyboard.press('ArrowRight');
+  assert.equal((await undoLength()) - u0, 1, 'a press after a blur: a new step');
+  // An undo in the middle of a run: the next press is a new step (never folded into a step
+  // that is no longer on the stack), and the redo stack is dropped.
+  await sb(() => window.screwbender.app.undo());
+  const undone = await times();
+  u0 = await undoLength();
+  await page.keyboard.press('ArrowRight');
+  assert.equal((await undoLength()) - u0, 1, 'a press after an undo: a new step');
+  assert.equal(await sb(() => window.screwbender.app.history.canRedo), false);
+  await sb(() => window.screwbender.app.undo());
+  assert.deepEqual(await times(), undone);
+  assert.deepEqual(problems, []);
+});
+
+test(`${BACKEND}: phone (390×844, touch): close markers split their 44 px hit areas; a tap or drag goes to the nearest marker`, async () => {
+  const ctx = await play.browser.newContext({ viewport: { width: 390, height: 844 }, hasTouch: true, isMobile: true, deviceScaleFactor: 2 });
+  try {
+    const { page: phone, problems: phoneProblems } = await openPage(ctx, play.url, BACKEND);
+    const ev = (f, arg) => phone.evaluate(f, arg);
+    await ev(() => {
+      const { app } = window.screwbender;
+      app.loadPreset('l_cycle_rotated');
+      app.openView('');
+      document.getElementById('banner').hidden = true;
+    });
+    assert.equal(await ev((t) => window.screwbender.app.setTimes(t), TIMES), null);
+    await waitFrames(phone, 1);
+    const box = (k) =>
+      ev((i) => document.querySelector(`#keys .key-marker[data-key="${i}"]`).getBoundingClientRect().toJSON(), k);
+    // Keys 2 and 3 brought close: their centres about 30 px apart (the visible marks, 10 px
+    // wide, 20 px apart), less than the 44 px boxes, so the boxes overlap.
+    const b0 = await box(0);
+    const b6 = await box(6);
+    const perSecond = (b6.x - b0.x) / 9;
+    const close = [0, 1, 3, Number((3 + 30 / perSecond).toFixed(2)), 6, 7, 9];
+    assert.equal(await ev((t) => window.screwbender.app.setTimes(t), close), null);
+    await waitFrames(phone, 1);
+    const [l, r] = [await box(2), await box(3)];
+    assert.ok(l.width >= 44 - 0.5 && l.height >= 44 - 0.5, `marker ${l.width}×${l.height}`);
+    const lc = l.x + l.width / 2;
+    const rc = r.x + r.width / 2;
+    const y = l.y + l.height / 2;
+    assert.ok(rc - lc > 24 && rc - lc < 36, `centres ${rc - lc} px apart`);
+    assert.ok(r.x < lc + 12 && l.right > rc - 12, 'the boxes overlap where the taps land');
+    // The right marker is drawn on top over the overlap: without the split it takes both taps.
+    assert.equal(await ev(([x, yy]) => document.elementFromPoint(x, yy).dataset.key, [lc + 12, y]), '3');
+    await phone.touchscreen.tap(lc + 12, y);
+    assert.equal(await ev(() => document.activeElement.dataset.key), '2', 'a tap 12 px right of the left marker selects the left one');
+    await phone.touchscreen.tap(rc - 12, y);
+    assert.equal(await ev(() => document.activeElement.dataset.key), '3', 'a tap 12 px left of the right marker selects the right one');
+    // A touch drag from 12 px right of the left marker moves the left key by the finger's
+    // travel (10 px leftwards; the key does not jump under the finger).
+    const cdp = await ctx.newCDPSession(phone);
+    const at = (x) => [{ x, y, id: 0 }];
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: at(lc + 12) });
+    for (let k = 1; k <= 5; k++) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: at(lc + 12 - 2 * k) });
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+    await waitFrames(phone, 1);
+    const after = await ev(() => window.screwbender.app.times());
+    const tol = 1.5 / perSecond + 0.01;
+    assert.ok(Math.abs(after[2] - (3 - 10 / perSecond)) <= tol, `left key at ${after[2]} s, want ${3 - 10 / perSecond} ± ${tol}`);
+    assert.deepEqual(after.filter((_, i) => i !== 2), close.filter((_, i) => i !== 2), 'only the left key moved');
+    // The visible marks stay small: the mark (the ::after triangle) is 10 px wide.
+    const mark = await ev(() => getComputedStyle(document.querySelector('#keys .key-marker'), '::after').borderLeftWidth);
+    assert.equal(mark, '5px');
+    assert.deepEqual(phoneProblems, []);
+  } finally {
+    await ctx.close();
+  }
+});
+
 test(`${BACKEND}: a key velocity edited in the Timing view holds in the playback; bad velocities are refused`, async () => {
   await timed();
   await sb(() => window.screwbender.app.openView('timing'));

@@ -395,10 +395,11 @@ export class App {
 
   /**
    * Sets the key times (null: uniform) as one undoable edit. Returns null when applied, else the
-   * Motion's reason (nothing changed); the caller shows it.
+   * Motion's reason (nothing changed); the caller shows it. `merge` ({key, at}: a coalesce key
+   * and the event's time stamp) folds a run of edits into one undo step (session.record).
    */
-  setTimes(times) {
-    return this.retimeEdit(() => this.motion.setTimes(times));
+  setTimes(times, merge = null) {
+    return this.retimeEdit(() => this.motion.setTimes(times), merge);
   }
 
   /** Sets the key velocities (null: all free) as one undoable edit; see setTimes. */
@@ -407,14 +408,14 @@ export class App {
   }
 
   /** Runs a Motion timing change as one undoable edit: null when done, else the error's message. */
-  retimeEdit(f) {
+  retimeEdit(f, merge = null) {
     const before = this.snapshot();
     try {
       f();
     } catch (e) {
       return e.message;
     }
-    this.history.push(before);
+    this.parts.session.record(before, merge?.key ?? null, merge?.at);
     this.changed();
     return null;
   }

@@ -18,6 +18,8 @@ export class History {
   constructor() {
     this.undoStack = [];
     this.redoStack = [];
+    /** Counts the changes of the stacks (push, undo, redo): an edit merges into the last step only if none came between. */
+    this.version = 0;
   }
   /** Records `snapshot` (the state *before* an edit). */
   push(snapshot) {
@@ -25,18 +27,21 @@ export class History {
     this.undoStack.push(snapshot);
     if (this.undoStack.length > MAX_UNDO) this.undoStack.shift();
     this.redoStack.length = 0;
+    this.version++;
   }
   /** Returns the snapshot to restore, given the current one, or null. */
   undo(current) {
     const s = this.undoStack.pop();
     if (s === undefined) return null;
     this.redoStack.push(current);
+    this.version++;
     return s;
   }
   redo(current) {
     const s = this.redoStack.pop();
     if (s === undefined) return null;
     this.undoStack.push(current);
+    this.version++;
     return s;
   }
   get canUndo() {
@@ -46,6 +51,9 @@ export class History {
     return this.redoStack.length > 0;
   }
 }
+
+/** Edits with the same coalesce key closer than this (ms) make one undo step. */
+export const MERGE_IDLE_MS = 1000;
 
 /**
  * Longest share-link payload accepted, in base64url characters: 2 000 000, just under
@@ -242,18 +250,28 @@ export default {
       },
 
       /**
+       * Records `before` (the state before an edit just made) as an undo step — unless the edit
+       * continues the last one: the same `coalesce` key, less than MERGE_IDLE_MS after it (at
+       * `now`, ms on performance.now()'s clock), and no other step, undo or redo in between; the
+       * step recorded then already holds the state before the whole run.
+       */
+      record(before, coalesce = null, now = performance.now()) {
+        const merge =
+          coalesce !== null && coalesce === lastEdit?.key && now - lastEdit.time < MERGE_IDLE_MS && lastEdit.version === app.history.version;
+        if (!merge) app.history.push(before);
+        lastEdit = { key: coalesce, time: now, version: app.history.version };
+      },
+
+      /**
        * Runs `f` as one undoable edit; errors go to the banner and leave the state unchanged.
        * Edits with the same `coalesce` key less than a second apart (a slider being dragged)
-       * make one undo step.
+       * make one undo step (see record).
        */
       edit(f, coalesce = null) {
         const before = snapshot();
         try {
           const r = f();
-          const now = performance.now();
-          const merge = coalesce !== null && coalesce === lastEdit?.key && now - lastEdit.time < 1000;
-          if (!merge) app.history.push(before);
-          lastEdit = { key: coalesce, time: now };
+          this.record(before, coalesce);
           app.changed();
           return r;
         } catch (e) {

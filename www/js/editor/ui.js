@@ -292,12 +292,21 @@ const DRAG_SNAP = 0.01;
  * The key markers of the timeline: one per key time (a cycle's last is its return to pose 0),
  * placed on the scrubber's scale. Dragging one (mouse, pen or touch) retimes that key with a
  * live preview and makes one undoable edit on release; arrow keys move a focused marker by 0.1 s
- * (Shift: 0.01 s). Times must keep increasing: a move past a neighbouring key is refused with a
- * message and changes nothing (a drag is then over until the next press).
+ * (Shift: 0.01 s), a run of presses on one marker making one undo step (a new step after a
+ * second idle (session.js MERGE_IDLE_MS), a blur or another marker, as editors merge typing). Times must keep
+ * increasing: a move past a neighbouring key is refused with a message and changes nothing (a
+ * drag is then over until the next press).
+ *
+ * Touch: each marker's hit box is 44 px (style.css), wider than the gap between close keys;
+ * where boxes overlap, a press goes to the marker whose centre is nearest to it (the boxes are
+ * in effect split at the midpoints between neighbours), not to the one drawn on top.
  */
 function buildKeyMarkers(app, root) {
   let markers = [];
   let drag = null;
+  /** The arrow-key run in progress: {i, id} (its presses share one undo step), or null. */
+  let run = null;
+  let runs = 0;
   const round = (t) => Math.round(t / DRAG_SNAP) * DRAG_SNAP;
   const fmt = (t) => `${Number(t.toFixed(3))} s`;
 
@@ -329,8 +338,9 @@ function buildKeyMarkers(app, root) {
         m.tabIndex = 0;
         m.setAttribute('role', 'slider');
         m.dataset.key = String(i);
-        m.addEventListener('pointerdown', (e) => press(e, i));
+        m.addEventListener('pointerdown', (e) => press(e, nearest(e, i)));
         m.addEventListener('keydown', (e) => key(e, i));
+        m.addEventListener('blur', () => run?.i === i && (run = null));
         return m;
       });
       root.replaceChildren(...markers);
@@ -360,14 +370,34 @@ function buildKeyMarkers(app, root) {
     if (why) return refuse(why);
     const next = [...times];
     next[i] = t;
-    const err = app.setTimes(next);
+    if (run?.i !== i) run = { i, id: ++runs };
+    const err = app.setTimes(next, { key: `key-marker ${run.id}`, at: e.timeStamp });
     if (err) refuse(err);
   }
 
-  /** The time under the pointer on the drag's frozen scale. */
+  /**
+   * The marker a press at (e.clientX, e.clientY) on marker `hit` is for: of the markers whose
+   * box holds the point, the one whose centre is nearest (ties: `hit`, the one on top).
+   */
+  function nearest(e, hit) {
+    let best = hit;
+    let bestDist = Infinity;
+    markers.forEach((m, k) => {
+      const r = m.getBoundingClientRect();
+      if (e.clientX < r.left || e.clientX > r.right || e.clientY < r.top || e.clientY > r.bottom) return;
+      const d = Math.abs(e.clientX - (r.left + r.width / 2));
+      if (d < bestDist || (d === bestDist && k === hit)) {
+        best = k;
+        bestDist = d;
+      }
+    });
+    return best;
+  }
+
+  /** The time under the pointer on the drag's frozen scale, less the grab offset. */
   function timeAt(e) {
-    const { left, width, a, b } = drag;
-    return round(a + ((e.clientX - left) / width) * (b - a));
+    const { left, width, a, b, offset } = drag;
+    return round(a + ((e.clientX - offset - left) / width) * (b - a));
   }
 
   function press(e, i) {
@@ -378,11 +408,15 @@ function buildKeyMarkers(app, root) {
     m.setPointerCapture?.(e.pointerId);
     const times = app.keyTimes();
     const r = root.getBoundingClientRect();
+    // Where on the marker it was grabbed: the key follows the pointer's travel, it does not
+    // jump under a finger that pressed beside the mark.
+    const mr = m.getBoundingClientRect();
     // The scale stays fixed while dragging (moving the first or last key would rescale it).
     const inset = parseFloat(getComputedStyle(root).getPropertyValue('--key-inset')) || 0;
     drag = {
       i, pointer: e.pointerId, times, before: app.snapshot(), moved: false, refused: false,
       left: r.left + inset, width: Math.max(1, r.width - 2 * inset), a: times[0], b: times[times.length - 1],
+      offset: e.clientX - (mr.left + mr.width / 2),
       original: app.motion.times ? Array.from(app.motion.times) : null,
     };
     m.classList.add('dragging');
