@@ -5,7 +5,7 @@
 // figure, and figures come and go without errors or growing memory.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { EXPECTED_BACKEND, startPlayground } from './lib.mjs';
+import { EXPECTED_BACKEND, ROOT, startPlayground } from './lib.mjs';
 
 const COURSE = 'examples/course.html';
 const FIGURES = ['fig-screw', 'fig-fourpoint', 'fig-bspline', 'fig-jarek'];
@@ -466,5 +466,96 @@ test('off-screen figures draw no frames', async () => {
     assert.deepEqual(problems, []);
   } finally {
     await page.close();
+  }
+});
+
+test('phones (320 and 390 px, touch): the control bar shows play, scrubber and a steady time label, with 44 px targets, in both themes', async () => {
+  for (const [width, height] of [[390, 844], [320, 640]]) {
+    const ctx = await play.browser.newContext({ viewport: { width, height }, hasTouch: true, isMobile: true, deviceScaleFactor: 2 });
+    try {
+      const page = await ctx.newPage();
+      const problems = [];
+      page.on('console', (m) => m.type() === 'error' && problems.push(`console: ${m.text()}`));
+      page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+      await page.goto(`${play.url}${COURSE}`);
+      await page.waitForFunction(() => customElements.get('screw-bender'));
+      await page.evaluate(() => Promise.all([...document.querySelectorAll('screw-bender')].map((e) => e.ready)));
+      /** The boxes of figure `id`'s bar parts and the time label's text, width and colours. */
+      const parts = (id) =>
+        page.evaluate((i) => {
+          const root = document.getElementById(i).shadowRoot;
+          const box = (s) => root.querySelector(s).getBoundingClientRect().toJSON();
+          const time = root.querySelector('.time');
+          const cs = getComputedStyle(time);
+          return {
+            bar: box('.bar'), play: box('.play'), scrub: box('.scrub'), time: box('.time'),
+            text: time.textContent, numerals: cs.fontVariantNumeric, color: cs.color,
+            barColor: getComputedStyle(root.querySelector('.bar')).backgroundColor,
+          };
+        }, id);
+      const inside = (a, b) => a.left >= b.left - 0.5 && a.right <= b.right + 0.5 && a.top >= b.top - 0.5 && a.bottom <= b.bottom + 0.5;
+      const apart = (a, b) => a.right <= b.left + 0.5 || b.right <= a.left + 0.5 || a.bottom <= b.top + 0.5 || b.bottom <= a.top + 0.5;
+      for (const id of FIGURES) {
+        await page.evaluate((i) => document.getElementById(i).scrollIntoView({ block: 'center' }), id);
+        const p = await parts(id);
+        const where = `${id} at ${width} px`;
+        assert.ok(p.time.width > 20 && p.time.height > 8, `${where}: time label shown (${p.time.width}×${p.time.height})`);
+        assert.ok(inside(p.time, p.bar) && inside(p.play, p.bar) && inside(p.scrub, p.bar), `${where}: parts inside the bar`);
+        assert.ok(apart(p.time, p.scrub) && apart(p.play, p.scrub) && apart(p.time, p.play), `${where}: parts do not overlap`);
+        // One row: the label beside the scrubber (its middle within the scrubber's height).
+        const mid = (b) => b.top + b.height / 2;
+        assert.ok(Math.abs(mid(p.time) - mid(p.scrub)) < 2 && Math.abs(mid(p.play) - mid(p.scrub)) < 2, `${where}: one row`);
+        assert.ok(p.play.width >= 44 - 0.5 && p.play.height >= 44 - 0.5, `${where}: play ${p.play.width}×${p.play.height}`);
+        assert.ok(p.scrub.height >= 44 - 0.5, `${where}: scrubber ${p.scrub.height} px high`);
+        // The scrubber takes the rest of the row: play, label and gaps (8 px each) and padding.
+        const rest = p.bar.width - 16 - p.play.width - p.time.width - 16;
+        assert.ok(Math.abs(p.scrub.width - rest) < 2, `${where}: scrubber ${p.scrub.width} px of ${rest} left`);
+        assert.equal(p.numerals, 'tabular-nums');
+      }
+      // The label keeps its width while the time runs (a cycle: its end is its start again).
+      const id = 'fig-fourpoint';
+      await page.evaluate((i) => document.getElementById(i).scrollIntoView({ block: 'center' }), id);
+      const seen = [];
+      for (const f of [0, 0.37, 0.81, 0.99]) {
+        await page.evaluate(([i, ff]) => {
+          const e = document.getElementById(i);
+          const [a, b] = e.motion.timeDomain();
+          e.seek(a + ff * (b - a));
+        }, [id, f]);
+        seen.push(await parts(id));
+      }
+      assert.equal(new Set(seen.map((p) => p.text)).size, 4, `the label follows the time: ${seen.map((p) => p.text)}`);
+      for (const p of seen) assert.ok(/^\d+(\.\d+)? s$/.test(p.text) && p.text.replace(/\D/g, '').length <= 4, `compact label ${p.text}`);
+      assert.ok(seen.every((p) => Math.abs(p.time.width - seen[0].time.width) < 0.01 && Math.abs(p.time.left - seen[0].time.left) < 0.01), 'the label does not move');
+      // A real tap on play starts the figure; the scrubber follows the playback.
+      const pl = seen[0].play;
+      await page.touchscreen.tap(pl.x + pl.width / 2, pl.y + pl.height / 2);
+      await page.waitForFunction((i) => document.getElementById(i).shadowRoot.querySelector('.play').getAttribute('aria-label') === 'Pause', id);
+      await page.waitForFunction((i) => Number(document.getElementById(i).shadowRoot.querySelector('.scrub').value) > 0, id);
+      // Dark theme: light label on a dark bar, the same layout.
+      await page.evaluate(() => document.querySelectorAll('screw-bender').forEach((e) => e.setAttribute('theme', 'dark')));
+      const dark = await parts(id);
+      const lum = (rgb) => {
+        const [r, g, b] = rgb.match(/[\d.]+/g).map(Number);
+        return (0.2126 * r + 0.7152 * g + 0.0722 * b) / 255;
+      };
+      assert.ok(lum(dark.color) > 0.55 && lum(dark.barColor) < 0.25, `dark: label ${dark.color} on ${dark.barColor}`);
+      assert.ok(Math.abs(dark.time.width - seen[0].time.width) < 0.01 && apart(dark.time, dark.scrub));
+      await page.evaluate(() => document.querySelectorAll('screw-bender').forEach((e) => e.pause()));
+      if (width === 390) {
+        await page.evaluate(() => document.getElementById('fig-fourpoint').scrollIntoView({ block: 'center' }));
+        await page.screenshot({ path: `${ROOT}/docs/course-390-dark.png` });
+        await page.evaluate(() => document.querySelectorAll('screw-bender').forEach((e) => e.setAttribute('theme', 'light')));
+        await page.evaluate(() => window.scrollTo(0, document.body.scrollHeight));
+        await page.screenshot({ path: `${ROOT}/docs/course-final-390.png` });
+      } else {
+        await page.evaluate(() => document.querySelectorAll('screw-bender').forEach((e) => e.setAttribute('theme', 'light')));
+        await page.evaluate(() => document.getElementById('fig-fourpoint').scrollIntoView({ block: 'center' }));
+        await page.screenshot({ path: `${ROOT}/docs/course-320.png` });
+      }
+      assert.deepEqual(problems, []);
+    } finally {
+      await ctx.close();
+    }
   }
 });

@@ -32,7 +32,7 @@ export function buildChrome(host) {
     node('div', { class: 'bar', part: 'controls' },
       node('button', { class: 'play', type: 'button', 'aria-label': 'Play', text: '▶' }),
       node('input', { class: 'scrub', type: 'range', min: '0', max: '1000', value: '0', 'aria-label': 'Playback time' }),
-      node('span', { class: 'time', text: 'u = 0' }),
+      node('span', { class: 'time', text: formatTime(0) }),
       node('span', { class: 'full' },
         node('select', { class: 'scheme', 'aria-label': 'Scheme' },
           ...schemes.map(([value, label]) => node('option', { value, text: label }))),
@@ -108,9 +108,21 @@ export function refreshChrome(fig) {
   }
 }
 
+/**
+ * The bar's time label: seconds with at most four digits (2 decimals below 10 s, 1 below 100 s,
+ * none above), so the label fits its fixed width: 0.00 s, 12.3 s, 345 s.
+ */
+export function formatTime(t) {
+  if (!Number.isFinite(t)) return '– s';
+  const a = Math.abs(t);
+  const digits = a < 9.995 ? 2 : a < 99.95 ? 1 : 0;
+  return `${t < 0 ? '−' : ''}${a.toFixed(digits)} s`;
+}
+
 /** The playhead moved: {t, u, start, end}, times in seconds (the motion's own timing). */
 export function timeChanged(fig, { t, u, start, end }) {
   fig.el.scrub.value = String(Math.round(((t - start) / Math.max(1e-12, end - start)) * 1000));
-  fig.el.time.textContent = `${t.toFixed(2)} s`;
+  fig.el.time.textContent = formatTime(t);
+  fig.el.scrub.setAttribute('aria-valuetext', `${t.toFixed(2)} seconds`);
   fig.emit('time', { t, u, start, end });
 }
