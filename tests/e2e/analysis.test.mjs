@@ -226,6 +226,86 @@ test(`${BACKEND}: the playhead of every plot follows the time; hovering a plot s
   assert.deepEqual(problems, []);
 });
 
+test(`${BACKEND}: dark theme (D key): the charts switch to light ink live, keeping their zoom, data and playhead`, async () => {
+  await page.setViewportSize({ width: 1280, height: 800 });
+  await sb(() => (window.screwbender.app.view.theme = 'light'));
+  await openPlots();
+  await sb((t) => window.screwbender.app.seekTime(t), 2.5);
+  await page.waitForFunction(() => window.screwbender.app.dock.current.charts.every((c) => c.playheadX !== null && Math.abs(c.playheadX - 2.5) < 1e-9));
+  /**
+   * Chart k's state and ink: its x zoom, data length, playhead, the colour uPlot's options give
+   * the y axis's tick labels, and the mean colour of the inked pixels of the y axis's label
+   * strip (left of the plotting area) read back from the chart's canvas.
+   */
+  const look = (k) =>
+    sb((i) => {
+      const c = window.screwbender.app.dock.current.charts[i];
+      const u = c.plot;
+      const g = u.ctx;
+      const { left, top, height } = u.bbox;
+      const d = g.getImageData(0, top, Math.floor(left), Math.floor(height)).data;
+      let n = 0;
+      const sum = [0, 0, 0];
+      for (let p = 0; p < d.length; p += 4) {
+        if (d[p + 3] < 200) continue; // glyph cores only (the canvas is transparent elsewhere)
+        n++;
+        for (let q = 0; q < 3; q++) sum[q] += d[p + q];
+      }
+      const card = getComputedStyle(c.box).backgroundColor;
+      return {
+        same: window.__chart === u, min: u.scales.x.min, max: u.scales.x.max, points: u.data[0].length,
+        playheadX: c.playheadX, axisInk: u.axes[1].stroke(u, 1), pixels: n, ink: sum.map((v) => v / Math.max(1, n)), card,
+      };
+    }, k);
+  const lum = ([r, g, b]) => (0.2126 * r + 0.7152 * g + 0.0722 * b) / 255;
+  const hexLum = (h) => lum([1, 3, 5].map((k) => parseInt(h.slice(k, k + 2), 16)));
+  // Zoomed in on the speed chart (a chart state the switch must keep).
+  await sb(() => {
+    const c = window.screwbender.app.dock.current.charts[1];
+    window.__chart = c.plot;
+    c.plot.setScale('x', { min: 1, max: 4 });
+  });
+  const light = await look(1);
+  assert.ok(light.pixels > 30, `${light.pixels} label pixels`);
+  assert.ok(lum(light.ink) < 0.25 && hexLum(light.axisInk) < 0.25, `light theme: dark tick labels ${light.ink} (${light.axisInk})`);
+  // D with the 3-D view focused (a real key press).
+  await sb(() => window.screwbender.app.canvas.focus());
+  await page.keyboard.press('d');
+  await page.waitForFunction(() => document.documentElement.dataset.theme === 'dark');
+  const dark = await look(1);
+  assert.ok(dark.pixels > 30, `${dark.pixels} label pixels`);
+  assert.ok(lum(dark.ink) > 0.6 && hexLum(dark.axisInk) > 0.6, `dark theme: light tick labels ${dark.ink} (${dark.axisInk})`);
+  // No light card: the chart sits on the dark dock.
+  assert.ok(/rgba\(0, 0, 0, 0\)|transparent/.test(dark.card), `chart card ${dark.card}`);
+  // The same chart, zoom, data and playhead.
+  assert.equal(dark.same, true, 'the chart was not rebuilt');
+  assert.deepEqual([dark.min, dark.max, dark.points, dark.playheadX], [light.min, light.max, light.points, light.playheadX]);
+  assert.deepEqual([dark.min, dark.max], [1, 4]);
+  // Every chart's labels are light, the near-black series light too (Timing's u).
+  const all = await sb(() => window.screwbender.app.dock.current.charts.map((c) => c.plot.axes[0].stroke(c.plot, 0)));
+  assert.ok(all.every((h) => hexLum(h) > 0.6), `x axes ${all}`);
+  await quiet();
+  await page.screenshot({ path: path.join(DOCS, 'analysis-dark-1280.png') });
+  await sb(() => window.screwbender.openView('timing'));
+  await sb(() => window.screwbender.flushViews());
+  const u = await sb(() => {
+    const c = window.screwbender.app.dock.current.chart.plot;
+    return c.series[1].stroke(c, 1);
+  });
+  assert.ok(hexLum(u) > 0.6, `Timing's u series in the dark theme: ${u}`);
+  // And back (D again): dark ink, zoom still kept.
+  await sb(() => window.screwbender.openView('plots'));
+  await sb(() => window.screwbender.flushViews());
+  await sb(() => window.screwbender.app.canvas.focus());
+  await page.keyboard.press('d');
+  await page.waitForFunction(() => document.documentElement.dataset.theme === 'light');
+  const back = await look(1);
+  assert.ok(lum(back.ink) < 0.25, `light again: ${back.ink}`);
+  assert.deepEqual([back.same, back.min, back.max], [true, 1, 4]);
+  await sb(() => (window.screwbender.app.view.theme = 'light'));
+  assert.deepEqual(problems, []);
+});
+
 test(`${BACKEND}: Metrics and Methods speak in human names, with units and "lower is better"`, async () => {
   await sb(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
   await sb(() => window.screwbender.openView('metrics'));

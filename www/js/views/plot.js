@@ -23,6 +23,55 @@ export function tickLabels(splits, step) {
   return splits.map((v) => (Math.abs(v) < step * 1e-9 ? 0 : v).toFixed(dec));
 }
 
+/**
+ * The charts' ink per theme (the page's <html data-theme>, set by editor/theme.js): tick labels
+ * and axis titles, grid and tick lines, the control-pose marks, and the series colours too dark
+ * to read on the dark card (they take the light ink). Light is uPlot's own default look.
+ */
+export const CHART_INK = {
+  light: { axis: '#000000', grid: 'rgba(0,0,0,0.07)', marks: 'rgba(29,34,48,0.28)', series: null },
+  dark: { axis: '#d5dae3', grid: 'rgba(230,233,239,0.13)', marks: 'rgba(230,233,239,0.32)', series: '#e6e9ef' },
+};
+
+/** The ink of the theme shown now. */
+export function chartInk() {
+  return document.documentElement.dataset.theme === 'dark' ? CHART_INK.dark : CHART_INK.light;
+}
+
+/** Relative luminance (0..1) of a #rrggbb colour; null for other notations. */
+function luminance(color) {
+  const m = /^#([0-9a-f]{6})$/i.exec(color ?? '');
+  if (!m) return null;
+  const n = parseInt(m[1], 16);
+  const lin = (c) => (c <= 0.03928 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4);
+  return 0.2126 * lin(((n >> 16) & 255) / 255) + 0.7152 * lin(((n >> 8) & 255) / 255) + 0.0722 * lin((n & 255) / 255);
+}
+
+/** A series colour as drawn in the theme shown: near-black series take the dark theme's light ink. */
+export function seriesInk(color) {
+  const ink = chartInk();
+  if (!ink.series) return color;
+  const l = luminance(color);
+  return l !== null && l < 0.05 ? ink.series : color;
+}
+
+/** Every live chart (the theme switch redraws them). */
+const allCharts = new Set();
+let themeWatch = null;
+
+/** Redraws every chart in the theme shown when <html data-theme> changes (zoom, data and playhead kept). */
+function watchTheme() {
+  if (themeWatch || typeof MutationObserver === 'undefined') return;
+  let shown = document.documentElement.dataset.theme;
+  themeWatch = new MutationObserver(() => {
+    const now = document.documentElement.dataset.theme;
+    if (now === shown) return;
+    shown = now;
+    for (const c of allCharts) c.restyle();
+  });
+  themeWatch.observe(document.documentElement, { attributes: true, attributeFilter: ['data-theme'] });
+}
+
 /** Where the playhead is: a function () => {t, u} (seconds and motion parameter), or null. */
 let playheadSource = null;
 /** Every live chart with a playhead (see sync()). */
@@ -95,6 +144,12 @@ export function lineChart(parent, { title, x = 'u', y, series, height = 150, log
     labels[axis] = l;
     return l;
   };
+  // Axis, grid and tick colours are read at every draw, so a redraw shows the theme's ink.
+  const inked = {
+    stroke: () => chartInk().axis,
+    grid: { stroke: () => chartInk().grid, width: 1 },
+    ticks: { stroke: () => chartInk().grid, width: 1 },
+  };
   const opts = {
     title,
     width: Math.max(200, parent.clientWidth || 480),
@@ -103,17 +158,18 @@ export function lineChart(parent, { title, x = 'u', y, series, height = 150, log
     legend: { show: legend, live: false },
     cursor: { drag: { x: true, y: false } },
     axes: [
-      { label: x, size: 30, labelSize: 14, gap: 2, space: 36, incrs: NICE_STEPS, values: values(0), font: '11px system-ui', labelFont: '11px system-ui' },
+      { label: x, size: 30, labelSize: 14, gap: 2, space: 36, incrs: NICE_STEPS, values: values(0), font: '11px system-ui', labelFont: '11px system-ui', ...inked },
       {
         label: y, labelSize: y ? 14 : 0, size: 44, gap: 2, space: 12, values: values(1), font: '11px system-ui', labelFont: '11px system-ui',
         ...(log ? {} : { incrs: NICE_STEPS }),
+        ...inked,
       },
     ],
     series: [
       {},
       ...series.map((s) => ({
         label: s.label,
-        stroke: s.color,
+        stroke: () => seriesInk(s.color),
         width: s.width ?? 1.5,
         dash: s.dash,
         points: { show: false },
@@ -124,7 +180,7 @@ export function lineChart(parent, { title, x = 'u', y, series, height = 150, log
         (u) => {
           const ctx = u.ctx;
           ctx.save();
-          ctx.strokeStyle = 'rgba(29,34,48,0.28)';
+          ctx.strokeStyle = chartInk().marks;
           ctx.lineWidth = 1;
           ctx.setLineDash([3, 3]);
           for (const m of marks) {
@@ -175,7 +231,15 @@ export function lineChart(parent, { title, x = 'u', y, series, height = 150, log
     playheadX: null,
     set(xs, ys, newMarks = marks) {
       marks = newMarks;
+      // A zoom in x survives new data over the same x range (an edit, a view setting, the
+      // theme): the y axis fits the new data in the zoomed window.
+      const old = plot.data?.[0];
+      const { min, max } = plot.scales.x;
+      const n = xs.length;
+      const sameX = old && old.length === n && n > 0 && old[0] === xs[0] && old[n - 1] === xs[n - 1];
+      const zoomed = sameX && Number.isFinite(min) && Number.isFinite(max) && (min > old[0] || max < old[n - 1]);
       plot.setData([Array.from(xs), ...ys.map((v) => Array.from(v))]);
+      if (zoomed) plot.setScale('x', { min, max });
     },
     setTitle(text) {
       const t = plot.root.querySelector('.u-title');
@@ -200,13 +264,26 @@ export function lineChart(parent, { title, x = 'u', y, series, height = 150, log
       at = next ? { t: next.t, u: next.u } : null;
       place();
     },
+    /** Redraws in the theme shown now (the theme changed): the same data, zoom and playhead. */
+    restyle() {
+      // uPlot colours its legend's markers once, when it builds the legend.
+      plot.root.querySelectorAll('.u-legend .u-series').forEach((row, i) => {
+        const marker = row.querySelector('.u-marker');
+        const s = series[i - 1];
+        if (marker && s) marker.style.borderColor = seriesInk(s.color);
+      });
+      plot.redraw(true, false);
+    },
     destroy() {
+      allCharts.delete(chart);
       charts.delete(chart);
       plot.destroy();
       box.remove();
     },
   };
   ready = true;
+  allCharts.add(chart);
+  watchTheme();
   if (playhead) {
     charts.add(chart);
     startPolling();
