@@ -7,7 +7,8 @@ use std::path::{Path, PathBuf};
 use glam::DVec3;
 use screwbender::mesh::Mesh;
 use screwbender::{
-    export_motion, scenes, ExportFormat, ExportSettings, SamplingMode, DEFAULT_TOLERANCE,
+    export_motion, scenes, ExportFormat, ExportSamples, ExportSettings, SamplingMode,
+    DEFAULT_TOLERANCE,
 };
 
 use crate::args::{number, numbers, velocities, ArgReader, SubdivisionArgs};
@@ -122,48 +123,60 @@ pub fn export(args: &[String]) -> Result<Output, Failure> {
         Some(fps) => SamplingMode::FixedRate(fps),
         None => SamplingMode::Adaptive(o.tolerance.unwrap_or(DEFAULT_TOLERANCE)),
     };
-    let exported = export_motion(
-        &doc,
-        sub,
-        &ExportSettings {
-            format,
-            sampling,
-            times: None,
-            radius: o.radius,
-            point: o.point,
-            control_nodes: o.control_nodes,
-            mesh: mesh.as_ref(),
-            bin_name: &bin_name,
-        },
-    )?;
-    let mut stdout = Vec::new();
-    let written = match (format, out) {
-        (ExportFormat::Gltf, _) => {
+    let settings = ExportSettings {
+        format,
+        sampling,
+        times: None,
+        radius: o.radius,
+        point: o.point,
+        control_nodes: o.control_nodes,
+        mesh: mesh.as_ref(),
+        bin_name: &bin_name,
+    };
+    // A CSV is written row by row from the samples (to `-o` or standard output), never as
+    // one string; a glTF asset is built whole (its binary buffer's length heads the file).
+    let (output, written, summary) = if format == ExportFormat::Csv {
+        let export = ExportSamples::new(&doc, sub, &settings)?;
+        let summary = (
+            export.sampled.samples.len(),
+            export.radius,
+            export.sampled.motion_name.clone(),
+        );
+        let output = Output::writer(move |w| export.write_csv(w));
+        match out {
+            Some(out) => {
+                output.write_file(out)?;
+                (Output::text(String::new()), out.to_string(), summary)
+            }
+            None => (output, "standard output".into(), summary),
+        }
+    } else {
+        let exported = export_motion(&doc, sub, &settings)?;
+        let written = if format == ExportFormat::Gltf {
             write(&gltf_path, &exported.data)?;
             write(&bin_path, exported.bin.as_deref().unwrap_or_default())?;
             format!("{} + {}", gltf_path.display(), bin_path.display())
-        }
-        (_, Some(out)) => {
+        } else {
+            let out = out.expect("checked above: glTF needs -o");
             write(Path::new(out), &exported.data)?;
             out.to_string()
-        }
-        (_, None) => {
-            stdout = exported.data;
-            "standard output".into()
-        }
+        };
+        let summary = (exported.sample_count, exported.radius, exported.motion_name);
+        (Output::text(String::new()), written, summary)
     };
+    let (sample_count, radius, motion_name) = summary;
     if o.verbose {
         let sampling = match sampling {
             SamplingMode::FixedRate(fps) => format!("{fps} fps"),
-            SamplingMode::Adaptive(t) => match exported.radius {
+            SamplingMode::Adaptive(t) => match radius {
                 Some(r) if o.point.is_none() => format!("tolerance {t:e} at radius {r:.4}"),
                 _ => format!("tolerance {t:e}"),
             },
         };
         eprintln!(
             "screwbender: export: {} samples ({sampling}, {}) -> {written}",
-            exported.sample_count, exported.motion_name
+            sample_count, motion_name
         );
     }
-    Ok(Output::writer(move |w| w.write_all(&stdout)))
+    Ok(output)
 }

@@ -189,6 +189,10 @@ fn csv_export_poses_trajectory_fps_and_times() {
         &doc,
     );
     assert_eq!(out.code, 0, "{}", out.stderr);
+    // The file is written row by row, the standard output too: the same bytes either way.
+    let streamed = run(&["export", "--format", "csv", "--tolerance", "1e-2"], &doc);
+    assert_eq!(streamed.code, 0, "{}", streamed.stderr);
+    assert_eq!(std::fs::read_to_string(&csv).unwrap(), streamed.stdout);
     let back = run(&["import", &csv], "");
     assert_eq!(back.code, 0, "{}", back.stderr);
     let imported = MotionDocument::from_json(&back.stdout).unwrap();

@@ -134,8 +134,8 @@ pub use formats::gltf::{
 pub use formats::gltf::{is_glb, split_glb};
 #[cfg(feature = "gltf")]
 pub use formats::interop::{
-    export_motion, import_motion_file, mesh_radius, ExportFormat, ExportSettings, ExportedMotion,
-    ImportKind,
+    export_motion, import_motion_file, mesh_radius, ExportFormat, ExportSamples, ExportSettings,
+    ExportedMotion, ImportKind,
 };
 pub use formats::keyframes::REPEAT_TOLERANCE;
 pub use formats::reduce::{reduce_poses, Reduction, MANY_POSES};

@@ -213,3 +213,52 @@ fn a_failing_writer_is_an_error_not_a_panic() {
     // With room for all of it, nothing fails.
     doc.write_json(&mut Full { room: full }).unwrap();
 }
+
+/// `ExportSamples::write_csv`, the CLI's row-by-row export, writes the bytes of the
+/// whole-file export (`export_motion`) and of the String writers on the same samples, for poses
+/// and for a body-point trajectory, adaptive and fixed-rate.
+#[cfg(feature = "gltf")]
+#[test]
+fn row_by_row_export_is_the_whole_file_export() {
+    use screwbender::{export_motion, ExportFormat, ExportSamples, ExportSettings, SamplingMode};
+    let mut doc = MotionDocument::new(Rng::new(19).cycle(6, 1.5), true);
+    doc.set_timing(Some(vec![0.0, 0.5, 1.5, 2.0, 3.5, 4.0, 5.0]), None)
+        .unwrap();
+    let sub = Subdivision::new(Scheme::Jarek, Rules::Direct, 3);
+    let point = DVec3::new(0.2, 0.7, -0.4);
+    for sampling in [SamplingMode::Adaptive(1e-3), SamplingMode::FixedRate(24.0)] {
+        for point in [None, Some(point)] {
+            let settings = ExportSettings {
+                format: ExportFormat::Csv,
+                sampling,
+                point,
+                ..ExportSettings::default()
+            };
+            let export = ExportSamples::new(&doc, sub, &settings).unwrap();
+            let samples = &export.sampled.samples;
+            assert!(samples.len() > 100, "{} samples", samples.len());
+            let whole = export_motion(&doc, sub, &settings).unwrap();
+            assert_eq!(whole.sample_count, samples.len());
+            assert_eq!(whole.radius, export.radius);
+            let text = match point {
+                Some(p) => trajectory_csv(samples, p),
+                None => poses_csv(samples),
+            };
+            assert_eq!(whole.data, text.as_bytes(), "{sampling:?} {point:?}");
+            assert_eq!(trickled(11, |w| export.write_csv(w)), text.as_bytes());
+        }
+    }
+    // A trajectory asked of a glTF export is refused before any sampling.
+    let refused = ExportSamples::new(
+        &doc,
+        sub,
+        &ExportSettings {
+            point: Some(point),
+            ..ExportSettings::default()
+        },
+    );
+    assert!(refused
+        .unwrap_err()
+        .to_string()
+        .contains("needs --format csv"));
+}

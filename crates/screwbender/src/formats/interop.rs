@@ -3,10 +3,14 @@
 //! The command line (`screwbender export` / `import`) and the JavaScript API (the page's export
 //! buttons and drag-and-drop import) both call these, so the two give byte-identical results.
 
+use std::io::{self, Write};
+
 use glam::DVec3;
 
 use crate::error::{Error, ErrorKind};
-use crate::formats::csv::{parse_csv_poses, poses_csv, trajectory_csv};
+use crate::formats::csv::{parse_csv_poses, write_poses_csv, write_trajectory_csv};
+#[cfg(doc)]
+use crate::formats::csv::{poses_csv, trajectory_csv};
 use crate::formats::document::MotionDocument;
 use crate::formats::gltf::export::PLACEHOLDER_HALF_EXTENTS;
 use crate::formats::gltf::export::{GltfAsset, GltfMotion};
@@ -102,6 +106,76 @@ pub struct ExportedMotion {
     pub motion_name: String,
 }
 
+/// A motion sampled for export, before it is written: the first half of [`export_motion`].
+///
+/// The command line writes a CSV from it row by row ([`ExportSamples::write_csv`]) instead of
+/// building the whole text first: an export of a million samples then never holds its text in
+/// memory beside the samples.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExportSamples {
+    /// The samples, their timing and the motion's name.
+    pub sampled: DocumentSamples,
+    /// The radius the adaptive tolerance was met at (`0` for a CSV trajectory, whose point is
+    /// bounded; `None` for fixed-rate sampling).
+    pub radius: Option<f64>,
+    /// The body point of a CSV trajectory (`None`: the poses).
+    pub point: Option<DVec3>,
+}
+
+impl ExportSamples {
+    /// Samples the motion of `doc` (subdivided by `sub`; level 0 is the plain polyscrew) as
+    /// `settings` say. Errors: those of [`export_motion`].
+    pub fn new(
+        doc: &MotionDocument,
+        sub: Subdivision,
+        settings: &ExportSettings,
+    ) -> Result<ExportSamples, Error> {
+        if settings.point.is_some() && settings.format != ExportFormat::Csv {
+            return Err(Error::new(
+                "point",
+                ErrorKind::Unsupported {
+                    reason: "a body-point trajectory needs --format csv".into(),
+                },
+            ));
+        }
+        let radius = match settings.point {
+            Some(_) => 0.0,
+            None => settings.radius.unwrap_or_else(|| match settings.mesh {
+                Some(mesh) => mesh_radius(mesh),
+                None => DVec3::from_array(PLACEHOLDER_HALF_EXTENTS).length(),
+            }),
+        };
+        let deviation = match settings.point {
+            Some(p) => Deviation::Point(p),
+            None => Deviation::Body { radius },
+        };
+        let sampled = sample_document(
+            doc,
+            sub,
+            settings.sampling,
+            settings.times.as_deref(),
+            deviation,
+        )?;
+        Ok(ExportSamples {
+            sampled,
+            radius: match settings.sampling {
+                SamplingMode::Adaptive(_) => Some(radius),
+                SamplingMode::FixedRate(_) => None,
+            },
+            point: settings.point,
+        })
+    }
+
+    /// Writes the CSV file ([`poses_csv`], or [`trajectory_csv`] of the point) to `w` row by
+    /// row. Errors: only those of `w`.
+    pub fn write_csv<W: Write + ?Sized>(&self, w: &mut W) -> io::Result<()> {
+        match self.point {
+            Some(p) => write_trajectory_csv(w, &self.sampled.samples, p),
+            None => write_poses_csv(w, &self.sampled.samples),
+        }
+    }
+}
+
 /// Samples the motion of `doc` (subdivided by `sub`; level 0 is the plain polyscrew) and writes
 /// it in `settings.format`.
 ///
@@ -112,55 +186,28 @@ pub fn export_motion(
     sub: Subdivision,
     settings: &ExportSettings,
 ) -> Result<ExportedMotion, Error> {
-    if settings.point.is_some() && settings.format != ExportFormat::Csv {
-        return Err(Error::new(
-            "point",
-            ErrorKind::Unsupported {
-                reason: "a body-point trajectory needs --format csv".into(),
-            },
-        ));
-    }
-    let radius = match settings.point {
-        Some(_) => 0.0,
-        None => settings.radius.unwrap_or_else(|| match settings.mesh {
-            Some(mesh) => mesh_radius(mesh),
-            None => DVec3::from_array(PLACEHOLDER_HALF_EXTENTS).length(),
-        }),
-    };
-    let deviation = match settings.point {
-        Some(p) => Deviation::Point(p),
-        None => Deviation::Body { radius },
-    };
+    let export = ExportSamples::new(doc, sub, settings)?;
     let DocumentSamples {
-        samples,
-        timing,
-        motion_name,
-    } = sample_document(
-        doc,
-        sub,
-        settings.sampling,
-        settings.times.as_deref(),
-        deviation,
-    )?;
-    let closed = doc.closed;
+        samples, timing, ..
+    } = &export.sampled;
     let (data, bin) = match settings.format {
         ExportFormat::Csv => {
-            let text = match settings.point {
-                Some(p) => trajectory_csv(&samples, p),
-                None => poses_csv(&samples),
-            };
-            (text.into_bytes(), None)
+            let mut data = Vec::new();
+            export
+                .write_csv(&mut data)
+                .expect("writing to memory cannot fail");
+            (data, None)
         }
         ExportFormat::Glb | ExportFormat::Gltf => {
             let asset = GltfAsset::new(&GltfMotion {
                 name: doc.name.as_deref(),
-                samples: &samples,
+                samples,
                 control: &doc.poses,
                 control_times: timing.knots(),
                 // Free keys only: nothing to record.
                 control_velocities: Some(timing.velocities())
                     .filter(|v| v.iter().any(Option::is_some)),
-                closed,
+                closed: doc.closed,
                 mesh: settings.mesh,
                 tolerance: match settings.sampling {
                     SamplingMode::Adaptive(t) => Some(t),
@@ -182,11 +229,8 @@ pub fn export_motion(
         data,
         bin,
         sample_count: samples.len(),
-        radius: match settings.sampling {
-            SamplingMode::Adaptive(_) => Some(radius),
-            SamplingMode::FixedRate(_) => None,
-        },
-        motion_name,
+        radius: export.radius,
+        motion_name: export.sampled.motion_name,
     })
 }
 
