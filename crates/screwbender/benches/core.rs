@@ -128,6 +128,7 @@ fn report_interleaved(data: &[(Pose, Pose, Pose)]) {
     let dqs: Vec<_> = data.iter().map(|(a, b, _)| (to_dq(a), to_dq(b))).collect();
     let mut out = Vec::with_capacity(PAIRS);
     let mut times = [Vec::new(), Vec::new(), Vec::new()];
+    let mut ratios = [Vec::new(), Vec::new()];
     for _ in 0..rounds(400) {
         let t0 = Instant::now();
         for (a, b, _) in data {
@@ -143,11 +144,17 @@ fn report_interleaved(data: &[(Pose, Pose, Pose)]) {
         for (k, (from, to)) in [(t0, t1), (t1, t2), (t2, t3)].into_iter().enumerate() {
             times[k].push((to - from).as_secs_f64() * 1e9 / PAIRS as f64);
         }
+        // Each burst against its neighbouring sclerp burst: the per-round ratios.
+        let sclerp = (t3 - t2).as_secs_f64();
+        ratios[0].push(sclerp / (t1 - t0).as_secs_f64());
+        ratios[1].push(sclerp / (t2 - t1).as_secs_f64());
     }
     let [single, batch, sclerp] = times.map(|mut v| {
         v.sort_by(f64::total_cmp);
         v[v.len() / 2]
     });
+    let spreads = ratios.map(spread);
+    let show = |[lo, mid, hi]: [f64; 3]| format!("{lo:.2} / {mid:.2} / {hi:.2}");
     println!(
         "interleaved medians per screw: screw(a, t, b) {single:.1} ns ({:.2} M/s), batch {batch:.1} ns \
          ({:.2} M/s), nalgebra sclerp {sclerp:.1} ns ({:.2} M/s); ratios vs sclerp: {:.2}x single, \
@@ -158,6 +165,97 @@ fn report_interleaved(data: &[(Pose, Pose, Pose)]) {
         sclerp / single,
         sclerp / batch
     );
+    println!(
+        "  per-round ratios vs sclerp (min / median / max): single {}, batch {}",
+        show(spreads[0]),
+        show(spreads[1])
+    );
+}
+
+/// Nanoseconds per step of the dependent chain `x ← step(x)` (`steps` steps from `x`): min /
+/// median / max over `runs` runs.
+fn chain_ns<T: Copy>(runs: usize, steps: usize, x: T, step: impl Fn(T) -> T) -> [f64; 3] {
+    let times = (0..runs)
+        .map(|_| {
+            let mut y = black_box(x);
+            let t0 = std::time::Instant::now();
+            for _ in 0..steps {
+                y = step(y);
+            }
+            black_box(y);
+            t0.elapsed().as_secs_f64() * 1e9 / steps as f64
+        })
+        .collect();
+    spread(times)
+}
+
+/// The latency of the one-call screw and of nalgebra's `sclerp`, and of the steps their chains
+/// are made of, each as a dependent chain (the next call's input waits for this call's result;
+/// the `0 ·` joins cost one multiply and one add): the evidence of docs/speed/one-call-screw.md.
+/// Cycles assume a 3-cycle `f64` add (Zen 4, as every x86-64 core since Haswell has 3 or 4).
+fn report_latencies(data: &[(Pose, Pose, Pose)]) {
+    let (runs, steps) = (rounds(30), if rounds(2) > 1 { 100_000 } else { 100 });
+    let add = chain_ns(runs, steps, 1.0, |x| x + 1e-300)[0];
+    let cycles = |ns: f64| 3.0 * ns / add;
+    let mut rows: Vec<(&str, [f64; 3])> = vec![
+        ("f64 add", chain_ns(runs, steps, 1.0, |x| x + 1e-300)),
+        ("f64 mul", chain_ns(runs, steps, 1.0, |x| x * 0.999_999_999)),
+        ("f64 div", chain_ns(runs, steps, 1.5, |x| 1.000_000_1 / x)),
+        (
+            "f64 sqrt + add",
+            chain_ns(runs, steps, 2.0, |x: f64| x.sqrt() + 1.0),
+        ),
+        (
+            "std acos + mul",
+            chain_ns(runs, steps, 0.5, |x: f64| x.acos() * 0.3),
+        ),
+        ("std sin", chain_ns(runs, steps, 0.5, f64::sin)),
+        (
+            "std cos + mul",
+            chain_ns(runs, steps, 0.5, |x: f64| x.cos() * 0.9),
+        ),
+        (
+            "std atan2",
+            chain_ns(runs, steps, 0.5, |x: f64| x.atan2(1.0)),
+        ),
+    ];
+    let (a, b, _) = data[0];
+    let join = |p: &Pose, r: f64| {
+        let q = p.rotation;
+        Pose::new(p.origin, DQuat::from_xyzw(q.x, q.y, q.z, q.w + 0.0 * r))
+    };
+    // Screw::between chained through b's rotation (relative rotation, sqrt, atan2,
+    // coefficients); Screw::at chained through t (sin/cos and the evaluation).
+    rows.push((
+        "Screw::between",
+        chain_ns(runs, steps, b, |b| join(&b, Screw::between(&a, &b).angle())),
+    ));
+    let span = Screw::between(&a, &b);
+    rows.push((
+        "Screw::at",
+        chain_ns(runs, steps, 0.3, |t| 0.3 + 0.0 * span.at(t).rotation.w),
+    ));
+    rows.push((
+        "screw(a, t, b)",
+        chain_ns(runs, steps, b, |b| join(&b, screw(&a, 0.3, &b).rotation.w)),
+    ));
+    let (da, db) = (to_dq(&a), to_dq(&b));
+    rows.push((
+        "nalgebra sclerp",
+        chain_ns(runs, steps, db, |b| {
+            let r = da.sclerp(&b, 0.3);
+            let mut d = *b.as_ref();
+            d.real.w += 0.0 * r.as_ref().real.w;
+            UnitDualQuaternion::new_unchecked(d)
+        }),
+    ));
+    println!("dependent-chain latency per step, ns (min / median / max) and cycles at the min:");
+    for (name, [lo, mid, hi]) in rows {
+        println!(
+            "  {name:<16} {lo:6.2} / {mid:6.2} / {hi:6.2} ns  {:6.1} cycles",
+            cycles(lo)
+        );
+    }
 }
 
 fn screws(c: &mut Criterion) {
@@ -165,6 +263,11 @@ fn screws(c: &mut Criterion) {
     let data = pairs(&mut rng);
     report_accuracy(&data);
     report_interleaved(&data);
+    report_latencies(&data);
+    if std::env::var_os("SCREWBENDER_BENCH_SCREWS_ONLY").is_some() {
+        // The two reports above only (for quick A/B runs of the screw kernel).
+        std::process::exit(0);
+    }
     let mut g = c.benchmark_group("screw");
     g.throughput(Throughput::Elements(PAIRS as u64));
     g.bench_function("full screw(a, t, b)", |bench| {

@@ -32,14 +32,17 @@ fn load<L: Width<N>, const N: usize>(proto: L, p: [&Pose; N]) -> (V3<L>, Q<L>) {
 /// Appends the `N` poses held in the lanes to `out`.
 #[inline(always)]
 fn push<L: Width<N>, const N: usize>(out: &mut Vec<Pose>, (o, q): (V3<L>, Q<L>)) {
-    // One `push` per lane: `extend` went through an iterator `fold` that was not inlined, so
-    // it ran outside the code compiled for the detected features.
-    for k in 0..N {
-        out.push(Pose::new(
+    // The poses built in an array, then one copy: one capacity check and one length update
+    // per group instead of per pose (a `push` per lane stored and reloaded the length each
+    // time, a chain through memory; `extend` over an iterator went through a `fold` that was
+    // not inlined, so it ran outside the code compiled for the detected features).
+    let poses: [Pose; N] = std::array::from_fn(|k| {
+        Pose::new(
             glam::DVec3::new(o.x.lane(k), o.y.lane(k), o.z.lane(k)),
             glam::DQuat::from_xyzw(q.x.lane(k), q.y.lane(k), q.z.lane(k), q.w.lane(k)),
-        ));
-    }
+        )
+    });
+    out.extend_from_slice(&poses);
 }
 
 /// `N` items from `item(i)`, `i = first..first + N`, written in place.
