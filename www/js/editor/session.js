@@ -135,6 +135,19 @@ export default {
   create(app) {
     let lastEdit = null;
 
+    /**
+     * Records `before` (the state before an edit just made) as an undo step — unless the edit
+     * continues the last one: the same `coalesce` key, less than MERGE_IDLE_MS after it (at
+     * `now`, ms on performance.now()'s clock, e.g. an event's timeStamp), and no other step, undo
+     * or redo in between; the step recorded then already holds the state before the whole run.
+     */
+    function record(before, coalesce = null, now = performance.now()) {
+      const merge =
+        coalesce !== null && coalesce === lastEdit?.key && now - lastEdit.time < MERGE_IDLE_MS && lastEdit.version === app.history.version;
+      if (!merge) app.history.push(before);
+      lastEdit = { key: coalesce, time: now, version: app.history.version };
+    }
+
     /** The serializable session (what autosave, share links and undo store). */
     function session(withCamera = true) {
       const s = {
@@ -249,18 +262,7 @@ export default {
         app.history.push(snapshot());
       },
 
-      /**
-       * Records `before` (the state before an edit just made) as an undo step — unless the edit
-       * continues the last one: the same `coalesce` key, less than MERGE_IDLE_MS after it (at
-       * `now`, ms on performance.now()'s clock), and no other step, undo or redo in between; the
-       * step recorded then already holds the state before the whole run.
-       */
-      record(before, coalesce = null, now = performance.now()) {
-        const merge =
-          coalesce !== null && coalesce === lastEdit?.key && now - lastEdit.time < MERGE_IDLE_MS && lastEdit.version === app.history.version;
-        if (!merge) app.history.push(before);
-        lastEdit = { key: coalesce, time: now, version: app.history.version };
-      },
+      record,
 
       /**
        * Runs `f` as one undoable edit; errors go to the banner and leave the state unchanged.
@@ -271,7 +273,7 @@ export default {
         const before = snapshot();
         try {
           const r = f();
-          this.record(before, coalesce);
+          record(before, coalesce);
           app.changed();
           return r;
         } catch (e) {
