@@ -184,6 +184,34 @@ test(`${BACKEND}: plots have units on the y axes and at least 3 labelled ticks o
   assert.deepEqual(problems, []);
 });
 
+test(`${BACKEND}: |α| of screw spans (zero up to rounding) reads as 0 on a 0..1 axis; real values get their own axis`, async () => {
+  await page.setViewportSize({ width: 1280, height: 800 });
+  await openPlots();
+  const alpha = () =>
+    sb(() => {
+      const c = window.screwbender.app.dock.current.charts.find((k) => k.id === 'alpha');
+      const ys = c.plot.data.slice(1).flat();
+      return { flat: c.flat, title: c.plot.root.querySelector('.u-title').textContent, ticks: c.ticks().y, max: Math.max(...ys.map(Math.abs)), yMax: c.plot.scales.y.max };
+    });
+  // Uniform timing, analytic derivatives: each refined span is a screw, ω is constant on it.
+  const flat = await alpha();
+  assert.ok(flat.max > 0 && flat.max < 1e-9, `|α| of screw spans should be rounding noise, max ${flat.max}`);
+  assert.equal(flat.flat, true);
+  assert.match(flat.title, /= 0 \(to rounding\)$/);
+  assert.equal(flat.yMax, 1);
+  assert.ok(flat.ticks.every((l) => !/e-/.test(l)), `no noise-sized ticks: ${flat.ticks}`);
+  // The limit motion's derivatives (differences of refined poses) are real: their own axis.
+  await page.locator('#dock .view-plots select[aria-label=derivatives]').selectOption('limit');
+  await sb(() => window.screwbender.flushViews());
+  const real = await alpha();
+  assert.ok(real.max > 1e-3, `limit |α| ${real.max}`);
+  assert.equal(real.flat, false);
+  assert.doesNotMatch(real.title, /= 0/);
+  assert.ok(real.yMax >= real.max && real.yMax < 2 * real.max, `y axis ${real.yMax} for data up to ${real.max}`);
+  await page.locator('#dock .view-plots select[aria-label=derivatives]').selectOption('analytic');
+  assert.deepEqual(problems, []);
+});
+
 test(`${BACKEND}: the playhead of every plot follows the time; hovering a plot shows that pose in 3-D, leaving restores it`, async () => {
   await openPlots();
   const heads = () => sb(() => window.screwbender.app.dock.current.charts.map((c) => c.playheadX));

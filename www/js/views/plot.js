@@ -127,14 +127,19 @@ function readPlayhead() {
  * vertical lines; `legend: false` leaves the legend to the caller (one legend for several
  * charts). `playhead`: which playback coordinate the x axis is in ('t' seconds, 'u' the motion
  * parameter, false: none). `onHover(x | null)`: the pointer is over the plot at x (null: left).
+ * `zeroBelow`: data whose every |y| is at most this is zero up to rounding (e.g. the angular
+ * acceleration of a polyscrew, 1e-15 rad/s² of noise): the y axis then spans 0..1 instead of
+ * magnifying the noise into spikes, and `chart.flat` is true (the data and hover are unchanged).
  * Returns {set(x, ys, marks?), setTitle(text), setYLabel(text), resize(width, height?), ticks(), playheadAt({t, u}),
  * playheadX, destroy(), plot, box}.
  */
-export function lineChart(parent, { title, x = 'u', y, series, height = 150, log = false, legend = true, playhead = 't', onHover } = {}) {
+export function lineChart(parent, { title, x = 'u', y, series, height = 150, log = false, legend = true, playhead = 't', onHover, zeroBelow = null } = {}) {
   const box = document.createElement('div');
   box.className = 'chart';
   parent.append(box);
   let marks = [];
+  /** Every |y| of the data is at most `zeroBelow`. */
+  let flat = false;
   let h = height;
   let ready = false;
   /** The tick labels last drawn, per axis (0: x, 1: y). */
@@ -154,7 +159,11 @@ export function lineChart(parent, { title, x = 'u', y, series, height = 150, log
     title,
     width: Math.max(200, parent.clientWidth || 480),
     height,
-    scales: { x: { time: false }, y: log ? { distr: 3 } : {} },
+    scales: {
+      x: { time: false },
+      // uPlot's own y range (10 % padding, 0 kept in view) unless the data is rounding noise.
+      y: log ? { distr: 3 } : { range: (_u, min, max) => (flat ? [0, 1] : min == null ? [null, null] : uPlot.rangeNum(min, max, 0.1, true)) },
+    },
     legend: { show: legend, live: false },
     cursor: { drag: { x: true, y: false } },
     axes: [
@@ -229,6 +238,10 @@ export function lineChart(parent, { title, x = 'u', y, series, height = 150, log
     box,
     /** The x value the playhead shows (null: none or outside the plot). */
     playheadX: null,
+    /** Every |y| of the data is at most `zeroBelow` (see above). */
+    get flat() {
+      return flat;
+    },
     set(xs, ys, newMarks = marks) {
       marks = newMarks;
       // A zoom in x survives new data over the same x range (an edit, a view setting, the
@@ -238,6 +251,7 @@ export function lineChart(parent, { title, x = 'u', y, series, height = 150, log
       const n = xs.length;
       const sameX = old && old.length === n && n > 0 && old[0] === xs[0] && old[n - 1] === xs[n - 1];
       const zoomed = sameX && Number.isFinite(min) && Number.isFinite(max) && (min > old[0] || max < old[n - 1]);
+      flat = zeroBelow !== null && n > 0 && ys.every((v) => Array.prototype.every.call(v, (y) => !(Math.abs(y) > zeroBelow)));
       plot.setData([Array.from(xs), ...ys.map((v) => Array.from(v))]);
       if (zoomed) plot.setScale('x', { min, max });
     },

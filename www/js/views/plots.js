@@ -28,6 +28,13 @@ const CHARTS = [
   ['omega', () => 'angular velocity |ω|', () => '|ω| (rad/s)', (d, k) => norm(d, k, 10)],
   ['alpha', () => 'angular acceleration |α|', () => '|α| (rad/s²)', (d, k) => norm(d, k, 13)],
 ];
+/**
+ * Kinematic values at most this large are zero up to rounding: the charts draw them on a 0..1
+ * axis and say "= 0". Each span of a polyscrew is a screw with a constant angular velocity, so
+ * its |α| at uniform timing is 0, computed as ~1e-15 rad/s²; scenes are a few units across, so
+ * a real value of 1e-9 is far below what a chart of them could show anyway.
+ */
+const ZERO_BELOW = 1e-9;
 /** Height of a chart's title line (CSS px, style.css `.plot-grid .u-title`). */
 const TITLE_PX = 16;
 /** Gap between charts of the grid (CSS px, style.css `.plot-grid`). */
@@ -176,7 +183,7 @@ class PlotsView {
     if (on && !this.charts) {
       this.charts = CHARTS.map(([id, title, y]) => {
         const c = lineChart(this.grid, {
-          title: title(this.axis), x: 't (s)', y: y(this.axis), series: SCHEME_SERIES, height: 140, legend: false,
+          title: title(this.axis), x: 't (s)', y: y(this.axis), series: SCHEME_SERIES, height: 140, legend: false, zeroBelow: ZERO_BELOW,
           onHover: (t) => this.app.dock.preview(t),
         });
         c.id = id;
@@ -220,6 +227,8 @@ class PlotsView {
       chart.setYLabel(y(this.axis));
       const ys = SCHEME_SERIES.map((s) => Array.from({ length: SAMPLES }, (_, k) => value(data[s.id], k, this.axis)));
       chart.set(ts, ys, times);
+      // Say so rather than show a flat line without a reason (e.g. |α| of screw spans at uniform timing).
+      if (chart.flat) chart.setTitle(`${title(this.axis)} = 0 (to rounding)`);
     });
   }
 }
