@@ -119,16 +119,17 @@ fn batch_screws(data: &[(Pose, Pose, Pose)], out: &mut Vec<Pose>) {
     black_box(out);
 }
 
-/// Times the three full-screw routes in alternating bursts of `PAIRS` screws and prints the
-/// median time per screw of each and their ratios. On a shared machine whose speed drifts from
+/// Times the three full-screw routes (and the one-call screw at a second fraction) in
+/// alternating bursts of `PAIRS` screws and prints the median time per screw of each and their
+/// ratios. On a shared machine whose speed drifts from
 /// one second to the next, back-to-back bursts compare like with like where criterion's
 /// sequential groups (seconds apart) may not.
 fn report_interleaved(data: &[(Pose, Pose, Pose)]) {
     use std::time::Instant;
     let dqs: Vec<_> = data.iter().map(|(a, b, _)| (to_dq(a), to_dq(b))).collect();
     let mut out = Vec::with_capacity(PAIRS);
-    let mut times = [Vec::new(), Vec::new(), Vec::new()];
-    let mut ratios = [Vec::new(), Vec::new()];
+    let mut times = [Vec::new(), Vec::new(), Vec::new(), Vec::new()];
+    let mut ratios = [Vec::new(), Vec::new(), Vec::new()];
     for _ in 0..rounds(400) {
         let t0 = Instant::now();
         for (a, b, _) in data {
@@ -141,15 +142,23 @@ fn report_interleaved(data: &[(Pose, Pose, Pose)]) {
             black_box(black_box(a).sclerp(black_box(b), black_box(0.3)));
         }
         let t3 = Instant::now();
-        for (k, (from, to)) in [(t0, t1), (t1, t2), (t2, t3)].into_iter().enumerate() {
+        // t = 0.9: tθ/2 beyond the one-call sine's unreduced branch (0.78) for the 45% of
+        // the pairs whose angle exceeds 1.73 rad, in random order (its worst case).
+        for (a, b, _) in data {
+            black_box(screw(black_box(a), black_box(0.9), black_box(b)));
+        }
+        let t4 = Instant::now();
+        let bursts = [(t0, t1), (t1, t2), (t2, t3), (t3, t4)];
+        for (k, (from, to)) in bursts.into_iter().enumerate() {
             times[k].push((to - from).as_secs_f64() * 1e9 / PAIRS as f64);
         }
         // Each burst against its neighbouring sclerp burst: the per-round ratios.
         let sclerp = (t3 - t2).as_secs_f64();
         ratios[0].push(sclerp / (t1 - t0).as_secs_f64());
         ratios[1].push(sclerp / (t2 - t1).as_secs_f64());
+        ratios[2].push(sclerp / (t4 - t3).as_secs_f64());
     }
-    let [single, batch, sclerp] = times.map(|mut v| {
+    let [single, batch, sclerp, late] = times.map(|mut v| {
         v.sort_by(f64::total_cmp);
         v[v.len() / 2]
     });
@@ -166,9 +175,12 @@ fn report_interleaved(data: &[(Pose, Pose, Pose)]) {
         sclerp / batch
     );
     println!(
-        "  per-round ratios vs sclerp (min / median / max): single {}, batch {}",
+        "  per-round ratios vs sclerp (min / median / max): single {}, batch {}; \
+         screw(a, 0.9, b) {late:.1} ns, {:.2}x sclerp (per round {})",
         show(spreads[0]),
-        show(spreads[1])
+        show(spreads[1]),
+        sclerp / late,
+        show(spreads[2])
     );
 }
 

@@ -122,6 +122,17 @@ pub(crate) fn regular_at<R: Real>(span: &RegularSpan<R>, t: R) -> Option<(V3<R>,
     Some(evaluate(span.oa, span.qa, &span.coefficients, t, sa, ca))
 }
 
+/// [`regular_at`] on one `f64`, bit for bit, through [`trig::sin_cos_kernel_one`] (a
+/// predictable branch around the sine's argument reduction).
+#[inline(always)]
+pub(crate) fn regular_at_one(span: &RegularSpan<f64>, t: f64) -> Option<(V3<f64>, Q<f64>)> {
+    if !regular_at_fits(span, t) {
+        return None;
+    }
+    let (sa, ca) = trig::sin_cos_kernel_one(t * span.half_angle);
+    Some(evaluate(span.oa, span.qa, &span.coefficients, t, sa, ca))
+}
+
 /// Whether [`regular_at`] evaluates the span at `t` (`t·θ/2` in the fast sine range in every
 /// lane), so that callers can check all their fractions before producing any result.
 #[inline(always)]

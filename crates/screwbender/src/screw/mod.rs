@@ -75,7 +75,7 @@ fn screw_scalar(a: &Pose, t: f64, b: &Pose) -> Pose {
     // below, without a `Screw` in memory between them); the rare cases decide in `Screw`.
     let (oa, qa) = (a.origin.into(), a.rotation.into());
     let regular = kernel::regular_span(oa, qa, b.origin.into(), b.rotation.into())
-        .and_then(|span| kernel::regular_at(&span, t));
+        .and_then(|span| kernel::regular_at_one(&span, t));
     match regular {
         Some((origin, rotation)) => Pose::new(origin.into(), rotation.into()),
         None => Screw::between(a, b).at(t),
