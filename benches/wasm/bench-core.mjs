@@ -96,6 +96,16 @@ export function runBench(sb, now = () => performance.now(), log = () => {}) {
     const name = typeof scheme === 'string' ? scheme : `j(${scheme.j})`;
     results.subdivision.push({ scheme: name, rules, poses: 32, levels: 6, refined: motion.refinedCount, ...t });
     log(`subdivide 32 poses × 6 levels, ${name} ${rules}: ${fmt(t)} (${motion.refinedCount} poses)`);
+    if (rules === 'direct' && typeof motion.subdivideInto === 'function') {
+      // The same into a kept array: no fresh memory per call.
+      const out = new Float64Array(7 * motion.refinedCount);
+      const into = timeIt(now, () => {
+        motion.setLevels(6);
+        motion.subdivideInto(out);
+      });
+      results.subdivision.push({ scheme: name, rules, into: true, poses: 32, levels: 6, refined: motion.refinedCount, ...into });
+      log(`subdivideInto(out) 32 poses × 6 levels, ${name} ${rules}: ${fmt(into)}`);
+    }
     motion.free();
   }
   return results;

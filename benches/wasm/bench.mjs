@@ -5,7 +5,8 @@
 //   node benches/wasm/bench.mjs --json       # machine-readable output
 //
 // Figures: screwPoses (one screw at 2^16 fractions per call: exp only), screwPairs (2^16 full
-// screws per call: log + exp), and the subdivision of 32 random poses by 6 levels per scheme and rule set.
+// screws per call: log + exp), and the subdivision of 32 random poses by 6 levels per scheme and rule set
+// (with the direct rules also `subdivideInto` a kept array, where the build has it).
 // Timings include the copies across the JS/wasm boundary. Not part of the test command.
 import fs from 'node:fs';
 import http from 'node:http';
@@ -13,24 +14,14 @@ import path from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { runBench } from './bench-core.mjs';
 
-const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
-const browser = process.argv.includes('--browser');
-const json = process.argv.includes('--json');
-const pkgDir = path.join(repo, 'pkg');
-if (!fs.existsSync(path.join(pkgDir, 'screwbender_bg.wasm'))) {
-  console.error('pkg/ is missing: run ./scripts/build-pkg.sh first');
-  process.exit(1);
-}
-const log = json ? () => {} : (line) => console.log(line);
+export const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 
-let results;
-if (!browser) {
-  const sb = await import(pathToFileURL(path.join(pkgDir, 'node.js')).href);
-  log(`node ${process.version}, screwbender ${sb.version()}`);
-  results = { runtime: `node ${process.version}`, ...runBench(sb, () => performance.now(), log) };
-} else {
+/**
+ * Serves the repo root (so that a page can import /pkg/ and /benches/wasm/), opens a blank page
+ * in headless Chromium (playwright-core), runs `fn(page, userAgentVersion)` and closes both.
+ */
+export async function withBrowserPage(fn, log = () => {}) {
   const { chromium } = await import('playwright-core');
-  // Serve the repo root so the page can import /pkg/ and /benches/wasm/.
   const types = { '.js': 'text/javascript', '.mjs': 'text/javascript', '.wasm': 'application/wasm', '.html': 'text/html' };
   const server = http.createServer((req, res) => {
     const url = new URL(req.url, 'http://localhost');
@@ -52,17 +43,39 @@ if (!browser) {
     page.on('console', (m) => log(`  [page] ${m.text()}`));
     await page.goto(`http://127.0.0.1:${server.address().port}/`);
     const version = await page.evaluate(() => navigator.userAgent.match(/Chrome\/[\d.]+/)?.[0] ?? navigator.userAgent);
-    log(`headless ${version}`);
-    results = await page.evaluate(async () => {
-      const sb = await import('/pkg/screwbender.js');
-      await sb.default();
-      const { runBench } = await import('/benches/wasm/bench-core.mjs');
-      return runBench(sb, () => performance.now(), (line) => console.log(line));
-    });
-    results = { runtime: `headless ${version}`, ...results };
+    return await fn(page, version);
   } finally {
     await b.close();
     server.close();
   }
 }
-if (json) console.log(JSON.stringify(results, null, 2));
+
+// Run as a script (compare.mjs imports `withBrowserPage` only).
+if (import.meta.url === pathToFileURL(process.argv[1] ?? '').href) {
+  const browser = process.argv.includes('--browser');
+  const json = process.argv.includes('--json');
+  const pkgDir = path.join(repo, 'pkg');
+  if (!fs.existsSync(path.join(pkgDir, 'screwbender_bg.wasm'))) {
+    console.error('pkg/ is missing: run ./scripts/build-pkg.sh first');
+    process.exit(1);
+  }
+  const log = json ? () => {} : (line) => console.log(line);
+  let results;
+  if (!browser) {
+    const sb = await import(pathToFileURL(path.join(pkgDir, 'node.js')).href);
+    log(`node ${process.version}, screwbender ${sb.version()}`);
+    results = { runtime: `node ${process.version}`, ...runBench(sb, () => performance.now(), log) };
+  } else {
+    results = await withBrowserPage(async (page, version) => {
+      log(`headless ${version}`);
+      const r = await page.evaluate(async () => {
+        const sb = await import('/pkg/screwbender.js');
+        await sb.default();
+        const { runBench } = await import('/benches/wasm/bench-core.mjs');
+        return runBench(sb, () => performance.now(), (line) => console.log(line));
+      });
+      return { runtime: `headless ${version}`, ...r };
+    }, log);
+  }
+  if (json) console.log(JSON.stringify(results, null, 2));
+}

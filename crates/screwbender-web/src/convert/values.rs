@@ -180,6 +180,12 @@ extern "C" {
     pub(crate) fn set_from_typed_array(target: &mut [f64], source: &JsValue)
         -> Result<(), JsValue>;
 
+    /// `Float64Array.prototype.set` called on `target` with `source` (a view of wasm memory):
+    /// copies wasm memory into a typed array, with a thrown exception returned as `Err`.
+    #[wasm_bindgen(catch, js_namespace = ["Float64Array", "prototype", "set"], js_name = call)]
+    pub(crate) fn set_typed_array_from(target: &Float64View, source: &[f64])
+        -> Result<(), JsValue>;
+
     /// A `Float64Array` made here as a view of part of another one's buffer.
     #[wasm_bindgen(js_name = Float64Array)]
     pub(crate) type Float64View;
