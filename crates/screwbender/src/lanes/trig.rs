@@ -67,7 +67,7 @@ const NO_REDUCTION_LIMIT: f64 = 0.78;
 /// [`sin_cos_kernel`] on one `f64`, bit for bit, with a branch around the reduction where it is
 /// the identity (`|x| ≤ 0.78`, about π/4): the series start without waiting for the reduction's
 /// six dependent operations (18 cycles of a one-at-a-time screw's chain). Unlike the quadrant,
-/// this branch is predictable: `tθ/2` stays below 0.78 for spans up to 90° at `t ∈ [0, 1]`, and
+/// this branch is predictable: `tθ/2` stays below 0.78 for spans up to 89° at `t ∈ [0, 1]`, and
 /// for most evaluations of larger ones.
 #[inline(always)]
 pub(crate) fn sin_cos_kernel_one(x: f64) -> (f64, f64) {
