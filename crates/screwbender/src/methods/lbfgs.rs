@@ -5,6 +5,87 @@
 //! most a few hundred variables, needs nothing but `Vec<f64>`, and must run unchanged (and
 //! deterministically, without a clock) in the browser.
 
+/// Two `f64` side by side: one wasm SIMD register where the target has it, else a pair. Every
+/// operation is lane by lane, so results are the same bits either way. Used here for the dot
+/// products and by the quaternion spline's objective.
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+pub(super) mod pair {
+    use core::arch::wasm32::{
+        f64x2, f64x2_add, f64x2_extract_lane, f64x2_mul, f64x2_splat, f64x2_sub, v128,
+    };
+
+    /// `[a, b]`.
+    #[derive(Clone, Copy)]
+    pub(in crate::methods) struct P(v128);
+
+    impl P {
+        #[inline(always)]
+        pub(in crate::methods) fn new(a: f64, b: f64) -> P {
+            P(f64x2(a, b))
+        }
+        #[inline(always)]
+        pub(in crate::methods) fn splat(a: f64) -> P {
+            P(f64x2_splat(a))
+        }
+        #[inline(always)]
+        pub(in crate::methods) fn lanes(self) -> [f64; 2] {
+            [
+                f64x2_extract_lane::<0>(self.0),
+                f64x2_extract_lane::<1>(self.0),
+            ]
+        }
+        #[inline(always)]
+        pub(in crate::methods) fn add(self, o: P) -> P {
+            P(f64x2_add(self.0, o.0))
+        }
+        #[inline(always)]
+        pub(in crate::methods) fn sub(self, o: P) -> P {
+            P(f64x2_sub(self.0, o.0))
+        }
+        #[inline(always)]
+        pub(in crate::methods) fn mul(self, o: P) -> P {
+            P(f64x2_mul(self.0, o.0))
+        }
+    }
+}
+
+/// Two `f64` side by side (see the wasm version above).
+#[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
+pub(super) mod pair {
+    /// `[a, b]`.
+    #[derive(Clone, Copy)]
+    pub(in crate::methods) struct P([f64; 2]);
+
+    impl P {
+        #[inline(always)]
+        pub(in crate::methods) fn new(a: f64, b: f64) -> P {
+            P([a, b])
+        }
+        #[inline(always)]
+        pub(in crate::methods) fn splat(a: f64) -> P {
+            P([a, a])
+        }
+        #[inline(always)]
+        pub(in crate::methods) fn lanes(self) -> [f64; 2] {
+            self.0
+        }
+        #[inline(always)]
+        pub(in crate::methods) fn add(self, o: P) -> P {
+            P([self.0[0] + o.0[0], self.0[1] + o.0[1]])
+        }
+        #[inline(always)]
+        pub(in crate::methods) fn sub(self, o: P) -> P {
+            P([self.0[0] - o.0[0], self.0[1] - o.0[1]])
+        }
+        #[inline(always)]
+        pub(in crate::methods) fn mul(self, o: P) -> P {
+            P([self.0[0] * o.0[0], self.0[1] * o.0[1]])
+        }
+    }
+}
+
+use pair::P;
+
 /// Options of [`minimize`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LbfgsOptions {
@@ -79,12 +160,110 @@ pub struct LbfgsReport {
     pub stop: LbfgsStop,
 }
 
+/// `aᵀb` over the common length, with four partial sums (elements `4i + r` go to sum `r`, then
+/// `(s₀ + s₁) + (s₂ + s₃)`, then the remaining elements in order): four independent chains of
+/// additions instead of one, which is what bounds the two-loop recursion's time (its dot
+/// products depend on each other and are as long as the variables).
 fn dot(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| x * y).sum()
+    let n = a.len().min(b.len());
+    let (a, b) = (&a[..n], &b[..n]);
+    // Partial sums 0, 1 in `lo`, 2, 3 in `hi`.
+    let (mut lo, mut hi) = (P::splat(0.0), P::splat(0.0));
+    let (a4, b4) = (a.chunks_exact(4), b.chunks_exact(4));
+    let (ra, rb) = (a4.remainder(), b4.remainder());
+    for (x, y) in a4.zip(b4) {
+        lo = lo.add(P::new(x[0], x[1]).mul(P::new(y[0], y[1])));
+        hi = hi.add(P::new(x[2], x[3]).mul(P::new(y[2], y[3])));
+    }
+    let ([s0, s1], [s2, s3]) = (lo.lanes(), hi.lanes());
+    let mut total = (s0 + s1) + (s2 + s3);
+    for (x, y) in ra.iter().zip(rb) {
+        total += x * y;
+    }
+    total
 }
 
+/// `d ← d + c u`, then `vᵀd` summed exactly as [`dot`] does (0 without `v`), in one pass over `d`
+/// (all three of the same length).
+#[inline(always)]
+fn axpy_then_dot(d: &mut [f64], c: f64, u: &[f64], v: Option<&[f64]>) -> f64 {
+    let n = d.len().min(u.len());
+    let (d, u) = (&mut d[..n], &u[..n]);
+    let Some(v) = v else {
+        for (di, ui) in d.iter_mut().zip(u) {
+            *di += c * ui;
+        }
+        return 0.0;
+    };
+    let v = &v[..n];
+    let (mut lo, mut hi) = (P::splat(0.0), P::splat(0.0));
+    let cc = P::splat(c);
+    let mut d4 = d.chunks_exact_mut(4);
+    let (u4, v4) = (u.chunks_exact(4), v.chunks_exact(4));
+    let (ru, rv) = (u4.remainder(), v4.remainder());
+    for ((dc, uc), vc) in (&mut d4).zip(u4).zip(v4) {
+        let d0 = P::new(dc[0], dc[1]).add(cc.mul(P::new(uc[0], uc[1])));
+        let d1 = P::new(dc[2], dc[3]).add(cc.mul(P::new(uc[2], uc[3])));
+        lo = lo.add(P::new(vc[0], vc[1]).mul(d0));
+        hi = hi.add(P::new(vc[2], vc[3]).mul(d1));
+        let ([a, b], [e, f]) = (d0.lanes(), d1.lanes());
+        dc.copy_from_slice(&[a, b, e, f]);
+    }
+    let ([s0, s1], [s2, s3]) = (lo.lanes(), hi.lanes());
+    let mut total = (s0 + s1) + (s2 + s3);
+    for ((di, ui), vi) in d4.into_remainder().iter_mut().zip(ru).zip(rv) {
+        *di += c * ui;
+        total += vi * *di;
+    }
+    total
+}
+
+/// `max |aᵢ|` (0 for none; NaN entries are skipped, as `f64::max` does). A comparison rather than
+/// `f64::max`, which is a call to `fmax` on wasm.
 fn inf_norm(a: &[f64]) -> f64 {
-    a.iter().fold(0.0f64, |m, v| m.max(v.abs()))
+    a.iter()
+        .fold(0.0f64, |m, v| if v.abs() > m { v.abs() } else { m })
+}
+
+/// The stored correction pairs `(s, y)` and `ρ = 1/sᵀy` of [`minimize`]: a ring of `m` rows of
+/// `n` numbers, pair `j` (0 = oldest) in row `(first + j) mod m`.
+struct History {
+    n: usize,
+    s: Vec<f64>,
+    y: Vec<f64>,
+    rho: Vec<f64>,
+    first: usize,
+    len: usize,
+}
+
+impl History {
+    /// Pair `j` (0 = oldest): `(s, y, ρ)`.
+    fn pair(&self, j: usize) -> (&[f64], &[f64], f64) {
+        let row = (self.first + j) % self.rho.len();
+        let r = row * self.n..(row + 1) * self.n;
+        (&self.s[r.clone()], &self.y[r], self.rho[row])
+    }
+
+    /// Appends a pair, dropping the oldest when all `m` rows are in use.
+    fn push(&mut self, s: &[f64], y: &[f64], rho: f64) {
+        let m = self.rho.len();
+        let row = (self.first + self.len) % m;
+        if self.len == m {
+            self.first = (self.first + 1) % m;
+        } else {
+            self.len += 1;
+        }
+        let r = row * self.n..(row + 1) * self.n;
+        self.s[r.clone()].copy_from_slice(s);
+        self.y[r].copy_from_slice(y);
+        self.rho[row] = rho;
+    }
+
+    /// Forgets every pair.
+    fn clear(&mut self) {
+        self.first = 0;
+        self.len = 0;
+    }
 }
 
 /// Minimises `f` from `x` (overwritten with the result). `f(x, g)` returns the value and writes
@@ -111,39 +290,57 @@ where
         return report(fx, &g, 0, evaluations, LbfgsStop::NonFinite);
     }
     let m = options.memory.max(1);
-    let mut s_hist: Vec<Vec<f64>> = Vec::with_capacity(m);
-    let mut y_hist: Vec<Vec<f64>> = Vec::with_capacity(m);
-    let mut rho_hist: Vec<f64> = Vec::with_capacity(m);
+    // The last `m` correction pairs, oldest first from row `first` of a ring of `m` rows of `n`
+    // (allocated once: nothing is allocated per iteration).
+    let mut history = History {
+        n,
+        s: vec![0.0; m * n],
+        y: vec![0.0; m * n],
+        rho: vec![0.0; m],
+        first: 0,
+        len: 0,
+    };
     let mut d = vec![0.0; n];
     let mut alpha_buf = vec![0.0; m];
     let mut x_new = vec![0.0; n];
     let mut g_new = vec![0.0; n];
+    let mut s = vec![0.0; n];
+    let mut y = vec![0.0; n];
     for iter in 0..options.max_iterations {
         if inf_norm(&g) <= options.gradient_tolerance * fx.abs().max(1.0) {
             return report(fx, &g, iter, evaluations, LbfgsStop::Gradient);
         }
-        // Two-loop recursion: d = −H g.
+        // Two-loop recursion: d = −H g. Each update of d is one pass with the dot product that
+        // the next step needs (`axpy_then_dot`: the same sums as `dot` after the update).
         d.copy_from_slice(&g);
-        let k = s_hist.len();
-        for j in (0..k).rev() {
-            let a = rho_hist[j] * dot(&s_hist[j], &d);
-            alpha_buf[j] = a;
-            for (di, yi) in d.iter_mut().zip(&y_hist[j]) {
-                *di -= a * yi;
+        let k = history.len;
+        if k > 0 {
+            let mut sd = dot(history.pair(k - 1).0, &d);
+            for j in (0..k).rev() {
+                let (_, yj, rho) = history.pair(j);
+                let a = rho * sd;
+                alpha_buf[j] = a;
+                // d − a y, as d + (−a) y (the same bits).
+                let next = (j > 0).then(|| history.pair(j - 1).0);
+                sd = axpy_then_dot(&mut d, -a, yj, next);
             }
         }
         let gamma = if k > 0 {
-            dot(&s_hist[k - 1], &y_hist[k - 1]) / dot(&y_hist[k - 1], &y_hist[k - 1])
+            let (sk, yk, _) = history.pair(k - 1);
+            dot(sk, yk) / dot(yk, yk)
         } else {
             1.0 / dot(&g, &g).sqrt().max(TINY)
         };
         for di in d.iter_mut() {
             *di *= gamma;
         }
-        for j in 0..k {
-            let b = rho_hist[j] * dot(&y_hist[j], &d);
-            for (di, si) in d.iter_mut().zip(&s_hist[j]) {
-                *di += si * (alpha_buf[j] - b);
+        if k > 0 {
+            let mut yd = dot(history.pair(0).1, &d);
+            for (j, &aj) in alpha_buf.iter().enumerate().take(k) {
+                let (sj, _, rho) = history.pair(j);
+                let b = rho * yd;
+                let next = (j + 1 < k).then(|| history.pair(j + 1).1);
+                yd = axpy_then_dot(&mut d, aj - b, sj, next);
             }
         }
         for di in d.iter_mut() {
@@ -152,9 +349,7 @@ where
         let mut dg = dot(&d, &g);
         if dg.is_nan() || dg >= 0.0 {
             // Not a descent direction (lost curvature information): restart along −g.
-            s_hist.clear();
-            y_hist.clear();
-            rho_hist.clear();
+            history.clear();
             let scale = 1.0 / dot(&g, &g).sqrt().max(TINY);
             for (di, gi) in d.iter_mut().zip(&g) {
                 *di = -gi * scale;
@@ -172,17 +367,19 @@ where
             &mut evaluations,
         );
         let Some(f_new) = step else {
-            if s_hist.is_empty() {
+            if history.len == 0 {
                 return report(fx, &g, iter, evaluations, LbfgsStop::LineSearch);
             }
             // Retry once from steepest descent.
-            s_hist.clear();
-            y_hist.clear();
-            rho_hist.clear();
+            history.clear();
             continue;
         };
-        let s: Vec<f64> = x_new.iter().zip(x.iter()).map(|(a, b)| a - b).collect();
-        let y: Vec<f64> = g_new.iter().zip(&g).map(|(a, b)| a - b).collect();
+        for ((si, a), b) in s.iter_mut().zip(&x_new).zip(x.iter()) {
+            *si = a - b;
+        }
+        for ((yi, a), b) in y.iter_mut().zip(&g_new).zip(&g) {
+            *yi = a - b;
+        }
         let sy = dot(&s, &y);
         let decrease = fx - f_new;
         x.copy_from_slice(&x_new);
@@ -190,14 +387,7 @@ where
         let f_old = fx;
         fx = f_new;
         if sy > TINY {
-            if s_hist.len() == m {
-                s_hist.remove(0);
-                y_hist.remove(0);
-                rho_hist.remove(0);
-            }
-            s_hist.push(s);
-            y_hist.push(y);
-            rho_hist.push(1.0 / sy);
+            history.push(&s, &y, 1.0 / sy);
         }
         if decrease <= options.value_tolerance * f_old.abs().max(fx.abs()).max(1.0) {
             return report(fx, &g, iter + 1, evaluations, LbfgsStop::Value);
