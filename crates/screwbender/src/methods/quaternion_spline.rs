@@ -54,9 +54,9 @@ pub fn integrand(q: DQuat, q2: DQuat, alpha: f64) -> (f64, DQuat, DQuat) {
     (f, dq, dq2)
 }
 
-/// A point of R⁴ as the pairs `[x, y]` and `[z, w]`, for the objective's inner loop: the same
-/// operations as on [`DQuat`] (component by component; the dot product summed in glam's order
-/// `((xx + yy) + zz) + ww`), so the same bits, in half the instructions on wasm SIMD.
+/// A point of R⁴ as the pairs `[x, y]` and `[z, w]`, for the objective's inner loop: the
+/// operations of [`DQuat`] component by component (the same bits on every target), in half the
+/// instructions on wasm SIMD; the dot product is summed as `(xx' + zz') + (yy' + ww')`.
 #[derive(Clone, Copy)]
 struct Q4 {
     lo: P,
@@ -112,11 +112,11 @@ impl Q4 {
         }
     }
 
+    /// `(xx' + zz') + (yy' + ww')`: one SIMD addition, then one across the lanes.
     #[inline(always)]
     fn dot(self, o: Q4) -> f64 {
-        let [x, y] = self.lo.mul(o.lo).lanes();
-        let [z, w] = self.hi.mul(o.hi).lanes();
-        x + y + z + w
+        let [a, b] = self.lo.mul(o.lo).add(self.hi.mul(o.hi)).lanes();
+        a + b
     }
 }
 
