@@ -55,7 +55,8 @@ fn group<T: Copy, const N: usize>(first: usize, empty: T, item: impl Fn(usize) -
     group
 }
 
-/// The spans `a[k] → b[k]` in the regular case (see [`kernel::regular_span`]).
+/// The spans `a[k] → b[k]` in the regular case (see [`kernel::regular_span_with`]; `angle`:
+/// whether the half angle is needed, not for midpoints).
 ///
 /// Inlined natively (the lanes then stay in registers across the calls, and the code is
 /// compiled for the features [`run_widest`] detected); out of line on wasm32 with SIMD, where
@@ -67,10 +68,11 @@ fn span_lanes<L: Width<N>, const N: usize>(
     proto: L,
     a: [&Pose; N],
     b: [&Pose; N],
+    angle: bool,
 ) -> Option<RegularSpan<L>> {
     let (oa, qa) = load(proto, a);
     let (ob, qb) = load(proto, b);
-    kernel::regular_span(oa, qa, ob, qb)
+    kernel::regular_span_with(oa, qa, ob, qb, angle)
 }
 
 /// The poses at `t` of regular spans (see [`kernel::regular_at`]). Inlined or not as
@@ -93,7 +95,7 @@ fn screw_group<L: Width<N>, const N: usize>(
     b: [&Pose; N],
     out: &mut Vec<Pose>,
 ) {
-    match span_lanes(proto, a, b).and_then(|span| at_lanes(&span, proto.gather(|k| t[k]))) {
+    match span_lanes(proto, a, b, true).and_then(|span| at_lanes(&span, proto.gather(|k| t[k]))) {
         Some(lanes) => push(out, lanes),
         None => (0..N).for_each(|k| out.push(scalar_screw(a[k], t[k], b[k]))),
     }
@@ -108,7 +110,7 @@ fn midpoint_group<L: Width<N>, const N: usize>(
     b: [&Pose; N],
     out: &mut Vec<Pose>,
 ) {
-    match span_lanes(proto, a, b) {
+    match span_lanes(proto, a, b, false) {
         Some(span) => push(out, kernel::regular_midpoint(&span)),
         None => (0..N).for_each(|k| out.push(scalar_midpoint(a[k], b[k]))),
     }
@@ -211,7 +213,7 @@ pub(crate) fn sample_cycle(p: &[Pose], ts: &[f64], out: &mut [Vec<Pose>]) {
                 let b = std::array::from_fn(|k| &p[next(i + k)]);
                 // Every fraction is checked before any pose is written, so that a rare case
                 // sends the whole group to the scalar route.
-                let span = span_lanes(proto, a, b).filter(|span| {
+                let span = span_lanes(proto, a, b, true).filter(|span| {
                     ts.iter()
                         .all(|&t| kernel::regular_at_fits(span, span.s.constant(t)))
                 });
@@ -315,7 +317,7 @@ pub(crate) fn span_screws(p: &[Pose], closed: bool, out: &mut Vec<Screw>) {
             while i + N <= count {
                 let a: [&Pose; N] = std::array::from_fn(|k| &p[i + k]);
                 let b = std::array::from_fn(|k| &p[next(i + k)]);
-                match span_lanes(proto, a, b) {
+                match span_lanes(proto, a, b, true) {
                     Some(span) => push_screws(&span, &p[i..i + N], out),
                     None => (0..N).for_each(|k| out.push(scalar_span(a[k], b[k]))),
                 }

@@ -90,6 +90,21 @@ pub(crate) fn regular_span<R: Real>(
     ob: V3<R>,
     qb: Q<R>,
 ) -> Option<RegularSpan<R>> {
+    regular_span_with(oa, qa, ob, qb, true)
+}
+
+/// [`regular_span`], its `half_angle` left 0 unless `angle`: a midpoint needs only `sin(θ/2)`
+/// and `cos(θ/2)` ([`regular_midpoint`]), and the arctangent is the longest step of the chain.
+/// (Inlined natively, a constant `angle` removes the arctangent or the test; in wasm's one
+/// out-of-line copy of the batch's span it is a predictable branch.)
+#[inline(always)]
+pub(crate) fn regular_span_with<R: Real>(
+    oa: V3<R>,
+    qa: Q<R>,
+    ob: V3<R>,
+    qb: Q<R>,
+    angle: bool,
+) -> Option<RegularSpan<R>> {
     let rel = relative(oa, qa, ob, qb);
     let regular = rel.s.all(|s| s > MIN_ROTATION_SINE)
         && rel.w.all(|w| w > HALF_TURN_EPSILON)
@@ -104,7 +119,11 @@ pub(crate) fn regular_span<R: Real>(
     Some(RegularSpan {
         oa,
         qa,
-        half_angle: trig::atan2_kernel(rel.s, rel.w),
+        half_angle: if angle {
+            trig::atan2_kernel(rel.s, rel.w)
+        } else {
+            rel.s.constant(0.0)
+        },
         s: rel.s,
         w: rel.w,
         coefficients: coefficients(oa, qa, axis, slide, rel.w * inv_s, rel.translation),
