@@ -26,7 +26,11 @@
 // (crates/screwbender/examples/subdivide_timing.rs), and so on (ROUNDS=…, default 15). Prints
 // the min / median / max ms per call of each over all bursts, and the min / median / max over
 // rounds of wasm / native (each round's median bursts). The native side uses the widest lanes
-// the processor has (8 with AVX-512, 4 with AVX2); wasm SIMD has 2 per instruction.
+// the processor has (8 with AVX-512, 4 with AVX2); wasm SIMD has 2 per instruction. To compare
+// at the same width, build the example with the measuring feature and cap its lanes:
+//
+//   cargo build --release -p screwbender --example subdivide_timing --features lane-cap
+//   SCREWBENDER_MAX_LANES=2 node benches/wasm/compare.mjs --native pkg [--browser]
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
@@ -207,7 +211,7 @@ if (!native) {
           nat.push(...n);
           for (const kind of kinds) ratios[kind].push(stats(w[kind])[1] / stats(n)[1]);
         }
-        console.log(`${scheme} direct, 32 × 6 (same bits): native ${triple(nat)} ms`);
+        console.log(`${scheme} direct, 32 × 6 (same bits): native (lanes: ${process.env.SCREWBENDER_MAX_LANES || 'the widest'}) ${triple(nat)} ms`);
         for (const kind of kinds) {
           console.log(
             `  wasm ${kind === 'into' ? 'subdivideInto(out)' : 'subdivide()'} ${triple(wasm[kind])} ms; ` +

@@ -13,6 +13,9 @@
 //! rules, 6 levels). Prints one line per burst: the mean ms per call over `REPS` calls. With
 //! `OUT_FILE`, first writes the refined poses there (7 numbers per line, shortest round-trip
 //! decimals), so that the caller can check that both sides computed the same numbers.
+//!
+//! Built with `--features lane-cap`, `SCREWBENDER_MAX_LANES=2` (or 4, 8) caps the batches' lanes,
+//! so that native code is timed at wasm SIMD's width.
 
 use std::hint::black_box;
 use std::time::Instant;
@@ -20,6 +23,11 @@ use std::time::Instant;
 use screwbender::{Pose, Rules, Scheme, ScrewBender, Subdivision, SubdivisionBuffers};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
+    // The lane cap is read by the library only in a build with the feature: without it the
+    // variable would be ignored and the widest lanes timed instead of the width asked for.
+    if cfg!(not(feature = "lane-cap")) && std::env::var_os("SCREWBENDER_MAX_LANES").is_some() {
+        return Err("SCREWBENDER_MAX_LANES needs a build with --features lane-cap".into());
+    }
     let args: Vec<String> = std::env::args().skip(1).collect();
     let (file, scheme, reps, bursts, out_file) = match &args[..] {
         [file, scheme, reps, bursts] => (file, scheme, reps, bursts, None),

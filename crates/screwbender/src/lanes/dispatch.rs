@@ -43,14 +43,32 @@ pub(crate) fn run_widest<Op: LanesOp>(op: Op) -> Op::Output {
 }
 
 /// The widest lanes the batches may use: all of them, except inside tests' `with_max_width`, so
-/// that the narrower routes are covered on machines with wider ones.
+/// that the narrower routes are covered on machines with wider ones, and in a build with the
+/// feature `lane-cap`, where `SCREWBENDER_MAX_LANES` says (see [`lane_cap`]).
 #[cfg(lanes)]
 #[inline(always)]
 fn max_width() -> usize {
     #[cfg(test)]
     return tests::max_width();
-    #[cfg(not(test))]
+    #[cfg(all(not(test), feature = "lane-cap"))]
+    return lane_cap();
+    #[cfg(not(any(test, feature = "lane-cap")))]
     usize::MAX
+}
+
+/// The cap that `SCREWBENDER_MAX_LANES` sets (`8`, `4` or `2`; unset or empty: none), read once. A
+/// measuring build's switch, so a value it cannot honour stops the program with a message
+/// rather than measuring something else than asked.
+#[cfg(all(lanes, not(test), feature = "lane-cap"))]
+fn lane_cap() -> usize {
+    static CAP: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
+    *CAP.get_or_init(|| match std::env::var("SCREWBENDER_MAX_LANES") {
+        Err(std::env::VarError::NotPresent) => usize::MAX,
+        Ok(v) if v.is_empty() => usize::MAX,
+        Ok(v) if matches!(v.as_str(), "8" | "4" | "2") => v.parse().expect("checked digits"),
+        Ok(v) => panic!("SCREWBENDER_MAX_LANES={v:?}: expected 8, 4 or 2"),
+        Err(e) => panic!("SCREWBENDER_MAX_LANES: {e}"),
+    })
 }
 
 /// The cap on the lanes' width that tests set, so that they cover the narrower routes on
