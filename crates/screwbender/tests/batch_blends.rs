@@ -6,50 +6,17 @@
 
 use glam::{DQuat, DVec3};
 use screwbender::{screw, Blend, Pose};
-use testkit::Rng;
-
-fn bits(p: &Pose) -> [u64; 7] {
-    let (o, q) = (p.origin, p.rotation);
-    [o.x, o.y, o.z, q.x, q.y, q.z, q.w].map(f64::to_bits)
-}
-
-/// A pose pair: mostly regular, one in `rare` a rare case of the kind `kind`.
-fn pair(rng: &mut Rng, kind: u64) -> (Pose, Pose) {
-    let a = Pose::new(
-        DVec3::new(
-            rng.range(-5.0, 5.0),
-            rng.range(-5.0, 5.0),
-            rng.range(-5.0, 5.0),
-        ),
-        rng.rotation(),
-    );
-    let shift = DVec3::new(
-        rng.range(-3.0, 3.0),
-        rng.range(-3.0, 3.0),
-        rng.range(-3.0, 3.0),
-    );
-    let b = match kind {
-        0 => Pose::new(a.origin + shift, a.rotation),
-        1 => Pose::new(a.origin + shift, -a.rotation),
-        2 => Pose::new(
-            a.origin + shift,
-            DQuat::from_axis_angle(rng.direction(), std::f64::consts::PI) * a.rotation,
-        ),
-        3 => a,
-        _ => Pose::new(a.origin + shift, rng.rotation()),
-    };
-    (a, b)
-}
+use testkit::{pose_bits as bits, Rng};
 
 #[test]
 fn batched_screws_are_the_one_at_a_time_screws_bit_for_bit() {
     let mut rng = Rng::new(0x05EE_D0B1_E4D5);
     for n in (0..=40).chain([255, 1000]) {
-        // One rare pair in about twelve (so most groups are regular and some are not).
+        // One rare pair in about ten (so most groups are regular and some are not).
         let pairs: Vec<(Pose, Pose)> = (0..n)
             .map(|_| {
                 let kind = rng.next_u64() % 48;
-                pair(&mut rng, kind)
+                rng.screw_pair(kind)
             })
             .collect();
         let ts: Vec<f64> = (0..n)

@@ -8,6 +8,13 @@ pub use rng::Rng;
 use glam::{DQuat, DVec2, DVec3};
 use screwbender::{Pose, Scheme};
 
+/// The bits of a pose's seven numbers (origin, then quaternion `x, y, z, w`): for comparisons
+/// that must be exact (`==` would pass `0.0` for `-0.0` and fail on equal NaNs).
+pub fn pose_bits(p: &Pose) -> [u64; 7] {
+    let (o, q) = (p.origin, p.rotation);
+    [o.x, o.y, o.z, q.x, q.y, q.z, q.w].map(f64::to_bits)
+}
+
 /// A pose from an origin and a `[w, x, y, z]` quaternion that may be rounded (normalised here).
 pub fn pose(o: [f64; 3], q: [f64; 4]) -> Pose {
     Pose::new(

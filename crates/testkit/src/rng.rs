@@ -70,6 +70,34 @@ impl Rng {
         );
         Pose::new(o, self.rotation())
     }
+    /// A pair of poses for a screw between them: a random start (origin in `[-5, 5]³`), the end
+    /// shifted by up to 3 per axis and rotated by the case `kind` names, the rare cases of the
+    /// screw kernel first: `0` no rotation, `1` the same rotation with the opposite sign, `2` a
+    /// half turn, `3` the same pose, `4` a rotation of 1e-9 rad; any other `kind` a random
+    /// rotation.
+    pub fn screw_pair(&mut self, kind: u64) -> (Pose, Pose) {
+        let a = self.pose(5.0);
+        let shift = DVec3::new(
+            self.range(-3.0, 3.0),
+            self.range(-3.0, 3.0),
+            self.range(-3.0, 3.0),
+        );
+        let b = match kind {
+            0 => Pose::new(a.origin + shift, a.rotation),
+            1 => Pose::new(a.origin + shift, -a.rotation),
+            2 => Pose::new(
+                a.origin + shift,
+                DQuat::from_axis_angle(self.direction(), std::f64::consts::PI) * a.rotation,
+            ),
+            3 => a,
+            4 => Pose::new(
+                a.origin + shift,
+                DQuat::from_axis_angle(self.direction(), 1e-9) * a.rotation,
+            ),
+            _ => Pose::new(a.origin + shift, self.rotation()),
+        };
+        (a, b)
+    }
     /// A pose displaced from `p` by a random screw of angle at most `max_angle`.
     pub fn pose_near(&mut self, p: &Pose, max_angle: f64, step: f64) -> Pose {
         let rot = DQuat::from_axis_angle(self.direction(), self.range(0.0, max_angle));
