@@ -49,6 +49,15 @@ pub fn bezier<T: Vector, const K: usize>(c: &[T; K], t: f64) -> T {
     bezier_d2(c, t).0
 }
 
+/// The cubic Hermite basis in power form: `HERMITE_POWER[k] = [c₀, c₁, c₂, c₃]` with
+/// `H_k(s) = c₀ + c₁ s + c₂ s² + c₃ s³` (the polynomials of [`hermite_basis`]).
+pub(crate) const HERMITE_POWER: [[f64; 4]; 4] = [
+    [1.0, 0.0, -3.0, 2.0],
+    [0.0, 1.0, -2.0, 1.0],
+    [0.0, 0.0, 3.0, -2.0],
+    [0.0, 0.0, -1.0, 1.0],
+];
+
 /// The cubic Hermite basis `[H0, H1, H2, H3]` at `s ∈ [0, 1]` and its first three derivatives
 /// (docs/math/quaternion-splines.md §3):
 ///
@@ -122,6 +131,23 @@ mod tests {
         assert_eq!((v, d1, d2), (2.75, 3.0, 0.0));
         let (v, d1, d2) = bezier_d2(&[1.0, 0.0, 1.0], 0.5);
         assert_eq!((v, d1, d2), (0.5, 0.0, 4.0));
+    }
+
+    #[test]
+    fn hermite_power_form_is_the_basis() {
+        // Dyadic fractions: every product and sum below is exact, so the two forms agree bit
+        // for bit, and so do their second derivatives (2c₂ + 6c₃ s).
+        for s in [0.0, 0.125, 0.25, 0.5, 0.625, 0.875, 1.0] {
+            let h = hermite_basis(s);
+            for (k, c) in HERMITE_POWER.iter().enumerate() {
+                assert_eq!(
+                    c[0] + s * (c[1] + s * (c[2] + s * c[3])),
+                    h[0][k],
+                    "H{k}({s})"
+                );
+                assert_eq!(2.0 * c[2] + 6.0 * c[3] * s, h[2][k], "H{k}''({s})");
+            }
+        }
     }
 
     #[test]

@@ -9,6 +9,7 @@ use glam::DQuat;
 
 use super::gauss::gauss_legendre;
 use super::lbfgs::pair::P;
+use super::polynomial::HERMITE_POWER;
 use crate::error::{check_finite, Error, ErrorKind};
 
 /// Largest number of segments per keyframe interval and of samples accepted by
@@ -540,12 +541,8 @@ impl HermiteQuatSpline {
                     .add(mq[3].scale(h[3]));
                 v.add(mq2[0].scale(h2[0]).add(mq2[1].scale(h2[1])).scale(inv2))
             };
-            let g = [
-                combine([1.0, 0.0, -3.0, 2.0], [-6.0, 12.0]),
-                combine([0.0, 1.0, -2.0, 1.0], [-4.0, 6.0]),
-                combine([0.0, 0.0, 3.0, -2.0], [6.0, -12.0]),
-                combine([0.0, 0.0, -1.0, 1.0], [-2.0, 6.0]),
-            ];
+            // H_k'' = 2c₂ + 6c₃ s (small integers: exact).
+            let g = HERMITE_POWER.map(|c| combine(c, [2.0 * c[2], 6.0 * c[3]]));
             let d = p.dt;
             let (fa, fb) = (self.slots[p.f0], self.slots[p.f1]);
             let to = [fa[0], fa[1], fb[0], fb[1]];

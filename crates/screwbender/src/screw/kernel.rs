@@ -134,21 +134,27 @@ pub(crate) fn regular_span_with<R: Real>(
 /// any lane (the result is that of [`crate::Screw::at`] bit for bit).
 #[inline(always)]
 pub(crate) fn regular_at<R: Real>(span: &RegularSpan<R>, t: R) -> Option<(V3<R>, Q<R>)> {
-    if !regular_at_fits(span, t) {
-        return None;
-    }
-    let (sa, ca) = trig::sin_cos_kernel(t * span.half_angle);
-    Some(evaluate(span.oa, span.qa, &span.coefficients, t, sa, ca))
+    regular_at_by(span, t, trig::sin_cos_kernel)
 }
 
 /// [`regular_at`] on one `f64`, bit for bit, through [`trig::sin_cos_kernel_one`] (a
 /// predictable branch around the sine's argument reduction).
 #[inline(always)]
 pub(crate) fn regular_at_one(span: &RegularSpan<f64>, t: f64) -> Option<(V3<f64>, Q<f64>)> {
+    regular_at_by(span, t, trig::sin_cos_kernel_one)
+}
+
+/// [`regular_at`] with `sin_cos` for the sine and cosine of `t·θ/2` (both give the same bits).
+#[inline(always)]
+fn regular_at_by<R: Real>(
+    span: &RegularSpan<R>,
+    t: R,
+    sin_cos: impl FnOnce(R) -> (R, R),
+) -> Option<(V3<R>, Q<R>)> {
     if !regular_at_fits(span, t) {
         return None;
     }
-    let (sa, ca) = trig::sin_cos_kernel_one(t * span.half_angle);
+    let (sa, ca) = sin_cos(t * span.half_angle);
     Some(evaluate(span.oa, span.qa, &span.coefficients, t, sa, ca))
 }
 
