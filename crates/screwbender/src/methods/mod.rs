@@ -51,6 +51,7 @@ mod gauss;
 mod kim_kim_shin;
 mod lbfgs;
 mod metrics;
+mod pair;
 mod polynomial;
 mod positions;
 mod quaternion_spline;

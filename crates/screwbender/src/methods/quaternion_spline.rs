@@ -8,7 +8,7 @@
 use glam::DQuat;
 
 use super::gauss::gauss_legendre;
-use super::lbfgs::pair::P;
+use super::pair::P;
 use super::polynomial::HERMITE_POWER;
 use crate::error::{check_finite, Error, ErrorKind};
 

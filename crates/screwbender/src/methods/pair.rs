@@ -1,0 +1,94 @@
+//! Two `f64` side by side ([`P`]): one wasm SIMD register where the target has it, else a plain
+//! pair. Every operation is lane by lane and IEEE-exact, so results are the same bits either way.
+//! Used by the L-BFGS minimiser's dot products and by the quaternion spline's objective, which
+//! works on the pairs `[x, y]`, `[z, w]` of its points in R⁴.
+//!
+//! Written here rather than taken from the crate's `lanes` module: `lanes` serves the screw kernel
+//! on native SIMD widths and has no two-lane type for wasm32 without SIMD, which the methods also
+//! build for; the methods need only these six operations.
+
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+use core::arch::wasm32::{
+    f64x2, f64x2_add, f64x2_extract_lane, f64x2_mul, f64x2_splat, f64x2_sub, v128,
+};
+
+/// `[a, b]`: one wasm SIMD register.
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+#[derive(Clone, Copy)]
+pub(super) struct P(v128);
+
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+impl P {
+    /// `[a, b]`.
+    #[inline(always)]
+    pub(super) fn new(a: f64, b: f64) -> P {
+        P(f64x2(a, b))
+    }
+    /// `[a, a]`.
+    #[inline(always)]
+    pub(super) fn splat(a: f64) -> P {
+        P(f64x2_splat(a))
+    }
+    /// The two lanes.
+    #[inline(always)]
+    pub(super) fn lanes(self) -> [f64; 2] {
+        [
+            f64x2_extract_lane::<0>(self.0),
+            f64x2_extract_lane::<1>(self.0),
+        ]
+    }
+    /// Lane by lane `self + o`.
+    #[inline(always)]
+    pub(super) fn add(self, o: P) -> P {
+        P(f64x2_add(self.0, o.0))
+    }
+    /// Lane by lane `self − o`.
+    #[inline(always)]
+    pub(super) fn sub(self, o: P) -> P {
+        P(f64x2_sub(self.0, o.0))
+    }
+    /// Lane by lane `self · o`.
+    #[inline(always)]
+    pub(super) fn mul(self, o: P) -> P {
+        P(f64x2_mul(self.0, o.0))
+    }
+}
+
+/// `[a, b]`: a plain pair (the wasm SIMD version's operations on scalars).
+#[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
+#[derive(Clone, Copy)]
+pub(super) struct P([f64; 2]);
+
+#[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
+impl P {
+    /// `[a, b]`.
+    #[inline(always)]
+    pub(super) fn new(a: f64, b: f64) -> P {
+        P([a, b])
+    }
+    /// `[a, a]`.
+    #[inline(always)]
+    pub(super) fn splat(a: f64) -> P {
+        P([a, a])
+    }
+    /// The two lanes.
+    #[inline(always)]
+    pub(super) fn lanes(self) -> [f64; 2] {
+        self.0
+    }
+    /// Lane by lane `self + o`.
+    #[inline(always)]
+    pub(super) fn add(self, o: P) -> P {
+        P([self.0[0] + o.0[0], self.0[1] + o.0[1]])
+    }
+    /// Lane by lane `self − o`.
+    #[inline(always)]
+    pub(super) fn sub(self, o: P) -> P {
+        P([self.0[0] - o.0[0], self.0[1] - o.0[1]])
+    }
+    /// Lane by lane `self · o`.
+    #[inline(always)]
+    pub(super) fn mul(self, o: P) -> P {
+        P([self.0[0] * o.0[0], self.0[1] * o.0[1]])
+    }
+}
