@@ -4,9 +4,12 @@
 // one chart at a time, picked from a list, fills the dock (nothing to scroll); the body point,
 // the derivatives and the note show under an Options button.
 import { Motion } from '../../pkg/screwbender.js';
-import { lineChart, el } from './plot.js';
+import { lineChart, el, inkSwatch } from './plot.js';
 
-/** The paper's colours: B-spline red, 4-point blue, Jarek green; the polyscrew grey. */
+/**
+ * The paper's colours: B-spline red, 4-point blue, Jarek green; the polyscrew grey. Drawn through
+ * seriesInk (plot.js), which lightens or darkens those short of 3:1 on the theme's card.
+ */
 export const SCHEME_SERIES = [
   { id: 'bspline', label: 'B-spline', color: '#d1202f' },
   { id: 'jarek', label: 'Jarek', color: '#2f9e44' },
@@ -97,7 +100,7 @@ class PlotsView {
     this.wide = [axisLabel, axisSel];
     this.narrow = [pickLabel, pickSel, optionsBtn];
     this.options = [pointLabel, ...pointInputs, derivLabel, derivSel, this.about];
-    this.legend = el('div', { class: 'row legend' }, ...SCHEME_SERIES.map((s) => el('span', {}, el('span', { class: 'swatch', style: `background:${s.color}` }), s.label)));
+    this.legend = el('div', { class: 'row legend' }, ...SCHEME_SERIES.map((s) => el('span', {}, inkSwatch(el('span', { class: 'swatch' }), s.color), s.label)));
     this.grid = el('div', { class: 'plot-grid' });
     root.append(this.grid);
     this.root = root;
