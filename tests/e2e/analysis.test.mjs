@@ -334,6 +334,123 @@ test(`${BACKEND}: dark theme (D key): the charts switch to light ink live, keepi
   assert.deepEqual(problems, []);
 });
 
+/** [r, g, b] of a '#rrggbb' or 'rgb(a)(r, g, b[, a])' colour (alpha left out), or null. */
+function rgbOf(c) {
+  const hex = /^#([0-9a-f]{6})$/i.exec(c ?? '');
+  if (hex) return [0, 2, 4].map((k) => parseInt(hex[1].slice(k, k + 2), 16));
+  const m = /^rgba?\(([^)]*)\)$/.exec(c ?? '');
+  return m ? m[1].split(',').slice(0, 3).map(Number) : null;
+}
+
+/** WCAG 2.1 contrast ratio of two [r, g, b] colours (the relative luminance of plot.js). */
+function contrastOf(a, b) {
+  const lum = (rgb) => {
+    const [r, g, bl] = rgb.map((v) => v / 255).map((c) => (c <= 0.03928 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4));
+    return 0.2126 * r + 0.7152 * g + 0.0722 * bl;
+  };
+  const [x, y] = [lum(a), lum(b)].sort((p, q) => q - p);
+  return (x + 0.05) / (y + 0.05);
+}
+
+/**
+ * The dock's background (the charts' card: the charts themselves are transparent) composited
+ * over black and over white: what may show through its translucency is unknown, so a line
+ * must pass on both.
+ */
+async function cardColours() {
+  const bg = await sb(() => getComputedStyle(document.getElementById('dock')).backgroundColor);
+  const m = /^rgba?\(([^)]*)\)$/.exec(bg);
+  const [r, g, b, a = 1] = m[1].split(',').map(Number);
+  return [0, 255].map((under) => [r, g, b].map((v) => Math.round(v * a + under * (1 - a))));
+}
+
+/**
+ * Every series of the analysis charts of the view shown (Plots, Timing, Methods): its stroke as
+ * uPlot's options give it, the colour uPlot stroked with at its last draw, and uPlot's legend
+ * marker; and the swatches of a legend the view builds itself (Plots).
+ */
+const drawnSeries = () =>
+  sb(() => {
+    const v = window.screwbender.app.dock.current;
+    const charts = [v.charts, v.chart, v.ccCharts].flat().filter(Boolean);
+    const series = [];
+    for (const c of charts) {
+      const u = c.plot;
+      // uPlot's legend has a row for x only when it is live (the charts' is not).
+      const rows = u.root.querySelectorAll('.u-legend .u-series');
+      const first = rows.length - u.series.length;
+      for (let i = 1; i < u.series.length; i++) {
+        const marker = rows[i + first]?.querySelector('.u-marker');
+        series.push({ chart: u.root.querySelector('.u-title')?.textContent, label: u.series[i].label, stroke: u.series[i].stroke(u, i), drawn: u.series[i]._stroke, marker: marker ? getComputedStyle(marker).borderTopColor : null });
+      }
+    }
+    const swatches = [...document.querySelectorAll('#dock .view-plots .legend .swatch')].map((e) => ({ label: e.parentElement.textContent, color: getComputedStyle(e).backgroundColor }));
+    return { series, swatches, transparent: charts.every((c) => /rgba\(0, 0, 0, 0\)|transparent/.test(getComputedStyle(c.box).backgroundColor)) };
+  });
+
+test(`${BACKEND}: every series line has at least 3:1 against the dock in both themes (WCAG 1.4.11), switched live; legends show the lines' colours`, async () => {
+  await page.setViewportSize({ width: 1280, height: 800 });
+  await sb(() => (window.screwbender.app.view.theme = 'light'));
+  await openPlots();
+  // Methods with the Chaudhry–Cameron charts (slot 1; C⁰ on this cycle) and Ramamoorthi–Barr's (slot 3).
+  await sb(() => window.screwbender.openView('methods'));
+  await sb(() => window.screwbender.flushViews());
+  await sb(() => window.screwbender.app.dock.current.select(['cc0', '', 'rb']));
+  await sb(() => window.screwbender.flushViews());
+  /** Checks the lines of views Plots, Timing and Methods in the theme shown; returns what it read. */
+  const check = async (theme) => {
+    const cards = await cardColours();
+    const seen = {};
+    for (const view of ['plots', 'timing', 'methods']) {
+      await sb((id) => window.screwbender.openView(id), view);
+      await sb(() => window.screwbender.flushViews());
+      await waitFrames(page, 1);
+      const d = await drawnSeries();
+      assert.equal(d.transparent, true, `${theme} ${view}: the charts are transparent on the dock`);
+      assert.ok(d.series.length >= (view === 'methods' ? 8 : view === 'plots' ? 20 : 2), `${theme} ${view}: ${d.series.length} series`);
+      for (const s of d.series) {
+        const what = `${theme} ${view} ${s.chart} "${s.label}"`;
+        assert.equal(s.drawn, s.stroke, `${what}: drawn ${s.drawn}, options ${s.stroke}`);
+        const rgb = rgbOf(s.stroke);
+        assert.ok(rgb, `${what}: stroke ${s.stroke}`);
+        for (const card of cards) {
+          const r = contrastOf(rgb, card);
+          assert.ok(r >= 3, `${what}: ${s.stroke} has ${r.toFixed(2)}:1 on rgb(${card})`);
+        }
+        if (s.marker) assert.deepEqual(rgbOf(s.marker), rgb, `${what}: legend marker ${s.marker}`);
+      }
+      if (view === 'plots') {
+        assert.equal(d.swatches.length, 4);
+        for (const w of d.swatches) {
+          const line = d.series.find((s) => s.label === w.label);
+          assert.deepEqual(rgbOf(w.color), rgbOf(line.stroke), `${theme}: legend swatch of ${w.label} ${w.color}, line ${line.stroke}`);
+        }
+      }
+      seen[view] = d.series.map((s) => s.stroke);
+    }
+    return seen;
+  };
+  const light = await check('light');
+  // The light theme keeps the paper's colours (they pass): B-spline red, Jarek green, 4-point blue.
+  assert.deepEqual(light.plots.slice(0, 3), ['#d1202f', '#2f9e44', '#1f5fd1']);
+  // D with the 3-D view focused (a real key press): the lines change live, in the same charts.
+  await sb(() => window.screwbender.app.canvas.focus());
+  await page.keyboard.press('d');
+  await page.waitForFunction(() => document.documentElement.dataset.theme === 'dark');
+  const dark = await check('dark');
+  // The paper's red and blue are lightened (2.7–3:1 on the dark dock before), the green passes as it is.
+  assert.notEqual(dark.plots[0], '#d1202f');
+  assert.equal(dark.plots[1], '#2f9e44');
+  assert.notEqual(dark.plots[2], '#1f5fd1');
+  // And back: the light colours again.
+  await sb(() => window.screwbender.app.canvas.focus());
+  await page.keyboard.press('d');
+  await page.waitForFunction(() => document.documentElement.dataset.theme === 'light');
+  assert.deepEqual(await check('light'), light);
+  await sb(() => (window.screwbender.app.view.theme = 'light'));
+  assert.deepEqual(problems, []);
+});
+
 test(`${BACKEND}: Metrics and Methods speak in human names, with units and "lower is better"`, async () => {
   await sb(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
   await sb(() => window.screwbender.openView('metrics'));
