@@ -5,11 +5,12 @@
 //!
 //! Written here rather than taken from the crate's `lanes` module: `lanes` serves the screw kernel
 //! on native SIMD widths and has no two-lane type for wasm32 without SIMD, which the methods also
-//! build for; the methods need only these six operations.
+//! build for; the methods need only these few operations.
 
 #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
 use core::arch::wasm32::{
-    f64x2, f64x2_add, f64x2_extract_lane, f64x2_mul, f64x2_splat, f64x2_sub, v128,
+    f64x2, f64x2_add, f64x2_div, f64x2_extract_lane, f64x2_mul, f64x2_splat, f64x2_sub,
+    i64x2_shuffle, v128,
 };
 
 /// `[a, b]`: one wasm SIMD register.
@@ -52,6 +53,30 @@ impl P {
     pub(super) fn mul(self, o: P) -> P {
         P(f64x2_mul(self.0, o.0))
     }
+    /// Lane by lane `self / o`.
+    #[inline(always)]
+    pub(super) fn div(self, o: P) -> P {
+        P(f64x2_div(self.0, o.0))
+    }
+    /// `[a₀, a₀]` of `self = [a₀, a₁]` (one shuffle).
+    #[inline(always)]
+    pub(super) fn first_twice(self) -> P {
+        P(i64x2_shuffle::<0, 0>(self.0, self.0))
+    }
+    /// `[a₁, a₁]` of `self = [a₀, a₁]` (one shuffle).
+    #[inline(always)]
+    pub(super) fn second_twice(self) -> P {
+        P(i64x2_shuffle::<1, 1>(self.0, self.0))
+    }
+    /// `[a₀ + a₁, b₀ + b₁]` of `self = [a₀, a₁]` and `o = [b₀, b₁]`: each pair's two lanes added
+    /// (two shuffles and one addition).
+    #[inline(always)]
+    pub(super) fn lane_sums(self, o: P) -> P {
+        P(f64x2_add(
+            i64x2_shuffle::<0, 2>(self.0, o.0),
+            i64x2_shuffle::<1, 3>(self.0, o.0),
+        ))
+    }
 }
 
 /// `[a, b]`: a plain pair (the wasm SIMD version's operations on scalars).
@@ -90,5 +115,25 @@ impl P {
     #[inline(always)]
     pub(super) fn mul(self, o: P) -> P {
         P([self.0[0] * o.0[0], self.0[1] * o.0[1]])
+    }
+    /// Lane by lane `self / o`.
+    #[inline(always)]
+    pub(super) fn div(self, o: P) -> P {
+        P([self.0[0] / o.0[0], self.0[1] / o.0[1]])
+    }
+    /// `[a₀, a₀]` of `self = [a₀, a₁]`.
+    #[inline(always)]
+    pub(super) fn first_twice(self) -> P {
+        P([self.0[0]; 2])
+    }
+    /// `[a₁, a₁]` of `self = [a₀, a₁]`.
+    #[inline(always)]
+    pub(super) fn second_twice(self) -> P {
+        P([self.0[1]; 2])
+    }
+    /// `[a₀ + a₁, b₀ + b₁]` of `self = [a₀, a₁]` and `o = [b₀, b₁]`.
+    #[inline(always)]
+    pub(super) fn lane_sums(self, o: P) -> P {
+        P([self.0[0] + self.0[1], o.0[0] + o.0[1]])
     }
 }

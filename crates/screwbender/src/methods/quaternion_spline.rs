@@ -55,9 +55,8 @@ pub fn integrand(q: DQuat, q2: DQuat, alpha: f64) -> (f64, DQuat, DQuat) {
     (f, dq, dq2)
 }
 
-/// A point of R⁴ as the pairs `[x, y]` and `[z, w]`, for the objective's inner loop: the
-/// operations of [`DQuat`] component by component (the same bits on every target), in half the
-/// instructions on wasm SIMD; the dot product is summed as `(xx' + zz') + (yy' + ww')`.
+/// A point of R⁴ as the pairs `[x, y]` and `[z, w]`: a piece's coefficients in power form and
+/// the gradient's moments, combined per piece (half the instructions on wasm SIMD).
 #[derive(Clone, Copy)]
 struct Q4 {
     lo: P,
@@ -65,14 +64,6 @@ struct Q4 {
 }
 
 impl Q4 {
-    #[inline(always)]
-    fn zero() -> Q4 {
-        Q4 {
-            lo: P::splat(0.0),
-            hi: P::splat(0.0),
-        }
-    }
-
     #[inline(always)]
     fn from(q: DQuat) -> Q4 {
         Q4 {
@@ -112,40 +103,142 @@ impl Q4 {
             hi: self.hi.sub(o.hi),
         }
     }
+}
 
-    /// `(xx' + zz') + (yy' + ww')`: one SIMD addition, then one across the lanes.
+/// Two points of R⁴, one per lane: component `i` of both in `c[i]` (`x, y, z, w`). The
+/// objective's inner loop evaluates two quadrature nodes at once in this layout, so that its dot
+/// products and its division are lane by lane too (nothing is added across lanes until a piece
+/// is summed).
+#[derive(Clone, Copy)]
+struct Q4x2 {
+    c: [P; 4],
+}
+
+impl Q4x2 {
     #[inline(always)]
-    fn dot(self, o: Q4) -> f64 {
-        let [a, b] = self.lo.mul(o.lo).add(self.hi.mul(o.hi)).lanes();
-        a + b
+    fn zero() -> Q4x2 {
+        Q4x2 {
+            c: [P::splat(0.0); 4],
+        }
+    }
+
+    /// `q` in both lanes.
+    #[inline(always)]
+    fn splat(q: Q4) -> Q4x2 {
+        Q4x2 {
+            c: [
+                q.lo.first_twice(),
+                q.lo.second_twice(),
+                q.hi.first_twice(),
+                q.hi.second_twice(),
+            ],
+        }
+    }
+
+    /// The two lanes added, as one point.
+    #[inline(always)]
+    fn lane_sum(self) -> Q4 {
+        let [x, y, z, w] = self.c;
+        Q4 {
+            lo: x.lane_sums(y),
+            hi: z.lane_sums(w),
+        }
+    }
+
+    #[inline(always)]
+    fn scale(self, s: P) -> Q4x2 {
+        Q4x2 {
+            c: self.c.map(|c| c.mul(s)),
+        }
+    }
+
+    #[inline(always)]
+    fn add(self, o: Q4x2) -> Q4x2 {
+        let [a, b, c, d] = self.c;
+        let [e, f, g, h] = o.c;
+        Q4x2 {
+            c: [a.add(e), b.add(f), c.add(g), d.add(h)],
+        }
+    }
+
+    #[inline(always)]
+    fn sub(self, o: Q4x2) -> Q4x2 {
+        let [a, b, c, d] = self.c;
+        let [e, f, g, h] = o.c;
+        Q4x2 {
+            c: [a.sub(e), b.sub(f), c.sub(g), d.sub(h)],
+        }
+    }
+
+    /// `(xx' + zz') + (yy' + ww')` in each lane.
+    #[inline(always)]
+    fn dot(self, o: Q4x2) -> P {
+        let [x, y, z, w] = self.c;
+        let [x2, y2, z2, w2] = o.c;
+        x.mul(x2).add(z.mul(z2)).add(y.mul(y2).add(w.mul(w2)))
     }
 }
 
-/// `q` and `q''` at local fraction `s` of a piece in power form: `q = a₀ + s(a₁ + s(a₂ + s a₃))`,
-/// `q'' = b₀ + s b₁` (see [`HermiteQuatSpline::piece_power_form`]).
+/// Two quadrature nodes side by side: their fractions `s` and `w sᵐ` (`m = 0..4`) with their
+/// weights `w`, computed once per spline (see [`node_pairs`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct NodePair {
+    s: [f64; 2],
+    ws: [[f64; 2]; 4],
+}
+
+/// The quadrature nodes two by two; an odd count ends with its last node again at weight 0 (every
+/// term it adds is zero, and it is finite wherever the real node is).
+fn node_pairs(nodes: &[f64], weights: &[f64]) -> Vec<NodePair> {
+    let one = |k: usize, weight: bool| {
+        let (s, w) = (nodes[k], if weight { weights[k] } else { 0.0 });
+        (s, [w, w * s, w * s * s, w * s * s * s])
+    };
+    (0..nodes.len().div_ceil(2))
+        .map(|i| {
+            let (s0, m0) = one(2 * i, true);
+            let k1 = (2 * i + 1).min(nodes.len() - 1);
+            let (s1, m1) = one(k1, k1 == 2 * i + 1);
+            NodePair {
+                s: [s0, s1],
+                ws: [0, 1, 2, 3].map(|m| [m0[m], m1[m]]),
+            }
+        })
+        .collect()
+}
+
+/// `q` and `q''` at local fractions `s` (two nodes) of a piece in power form:
+/// `q = (a₀ + a₁s) + s²(a₂ + a₃s)`, `q'' = b₀ + s b₁` (see
+/// [`HermiteQuatSpline::piece_power_form`]; the coefficients in both lanes). Estrin's scheme
+/// rather than Horner's: two dependent multiply-adds instead of three before the integrand,
+/// whose division waits for `q`.
 #[inline(always)]
-fn values(a: &[Q4; 4], b: &[Q4; 2], s: f64) -> (Q4, Q4) {
-    let q = a[3]
+fn values(a: &[Q4x2; 4], b: &[Q4x2; 2], s: P) -> (Q4x2, Q4x2) {
+    let q = a[1]
         .scale(s)
-        .add(a[2])
-        .scale(s)
-        .add(a[1])
-        .scale(s)
-        .add(a[0]);
+        .add(a[0])
+        .add(a[3].scale(s).add(a[2]).scale(s.mul(s)));
     let q2 = b[1].scale(s).add(b[0]);
     (q, q2)
 }
 
-/// [`integrand`] on [`Q4`], with its two partial derivatives halved (`½∂F/∂q = q(T² + 2α(|q|² −
-/// 1)) − q''T`, `½∂F/∂q'' = q'' − qT`: fewer operations; the gradient is doubled once per
-/// piece).
+/// [`integrand`] at two nodes, with its two partial derivatives halved (`½∂F/∂q = q(T² + 2α(|q|²
+/// − 1)) − q''T`, `½∂F/∂q'' = q'' − qT`: fewer operations; the gradient is doubled once per
+/// piece). `alpha` and `two_alpha` are `α` and `2α` in both lanes.
 #[inline(always)]
-fn integrand_q4(q: Q4, q2: Q4, alpha: f64) -> (f64, Q4, Q4) {
+fn integrand_x2(q: Q4x2, q2: Q4x2, alpha: P, two_alpha: P) -> (P, Q4x2, Q4x2) {
+    let one = P::splat(1.0);
     let a = q.dot(q2);
     let b = q.dot(q);
-    let t = a / b;
-    let f = q2.dot(q2) - a * t + alpha * (1.0 - b) * (1.0 - b);
-    let half_dq = q.scale(t * t + 2.0 * alpha * (b - 1.0)).sub(q2.scale(t));
+    let t = a.div(b);
+    let one_minus_b = one.sub(b);
+    let f = q2
+        .dot(q2)
+        .sub(a.mul(t))
+        .add(alpha.mul(one_minus_b).mul(one_minus_b));
+    let half_dq = q
+        .scale(t.mul(t).add(two_alpha.mul(b.sub(one))))
+        .sub(q2.scale(t));
     let half_dq2 = q2.sub(q.scale(t));
     (f, half_dq, half_dq2)
 }
@@ -231,9 +324,9 @@ pub struct HermiteQuatSpline {
     alpha: f64,
     nodes: Vec<f64>,
     weights: Vec<f64>,
-    /// `w sᵐ` (`m = 0..4`) at each quadrature node `s` with weight `w`, computed once: the
-    /// objective's gradient is summed as these moments of `∂F/∂q` and `∂F/∂q''`.
-    moments: Vec<[f64; 4]>,
+    /// The nodes two by two with `w sᵐ` (`m = 0..4`), computed once: the objective evaluates two
+    /// nodes at once, and its gradient is summed as these moments of `∂F/∂q` and `∂F/∂q''`.
+    node_pairs: Vec<NodePair>,
     /// Per frame, the offsets of its position and velocity in the variables
     /// ([`HermiteQuatSpline::variables`]), [`NO_SLOT`] when not free; kept with the frames.
     slots: Vec<[usize; 2]>,
@@ -333,11 +426,7 @@ impl HermiteQuatSpline {
             ));
         }
         let (nodes, weights) = gauss_legendre(gauss_nodes);
-        let moments = nodes
-            .iter()
-            .zip(&weights)
-            .map(|(&s, &w)| [w, w * s, w * s * s, w * s * s * s])
-            .collect();
+        let node_pairs = node_pairs(&nodes, &weights);
         let slots = variable_slots(&frames);
         let end = if closed {
             end
@@ -352,7 +441,7 @@ impl HermiteQuatSpline {
             alpha,
             nodes,
             weights,
-            moments,
+            node_pairs,
             slots,
         })
     }
@@ -562,7 +651,8 @@ impl HermiteQuatSpline {
 
     /// Over the nodes of one piece in power form (`a`, `b` of
     /// [`HermiteQuatSpline::piece_power_form`]): `Σ w F`, and with `MOMENTS` the moments
-    /// `Σ w sᵐ ½∂F/∂q` (`m = 0..4`) and `Σ w sᵐ ½∂F/∂q''` (`m = 0, 1`).
+    /// `Σ w sᵐ ½∂F/∂q` (`m = 0..4`) and `Σ w sᵐ ½∂F/∂q''` (`m = 0, 1`). Nodes go two at a time
+    /// ([`NodePair`]): each lane sums every other node, and the two lanes are added at the end.
     #[inline(always)]
     fn piece_sums<const MOMENTS: bool>(
         &self,
@@ -570,13 +660,16 @@ impl HermiteQuatSpline {
         b: &[Q4; 2],
         alpha: f64,
     ) -> (f64, [Q4; 4], [Q4; 2]) {
-        let mut sum = 0.0;
-        let mut mq = [Q4::zero(); 4];
-        let mut mq2 = [Q4::zero(); 2];
-        for ((&s, &w), ws) in self.nodes.iter().zip(&self.weights).zip(&self.moments) {
-            let (q, q2) = values(a, b, s);
-            let (f, hdq, hdq2) = integrand_q4(q, q2, alpha);
-            sum += w * f;
+        let (a, b) = (a.map(Q4x2::splat), b.map(Q4x2::splat));
+        let (two_alpha, alpha) = (P::splat(2.0 * alpha), P::splat(alpha));
+        let mut sum = P::splat(0.0);
+        let mut mq = [Q4x2::zero(); 4];
+        let mut mq2 = [Q4x2::zero(); 2];
+        for n in &self.node_pairs {
+            let (q, q2) = values(&a, &b, P::new(n.s[0], n.s[1]));
+            let (f, hdq, hdq2) = integrand_x2(q, q2, alpha, two_alpha);
+            let ws = n.ws.map(|[u, v]| P::new(u, v));
+            sum = sum.add(ws[0].mul(f));
             if MOMENTS {
                 for m in 0..4 {
                     mq[m] = mq[m].add(hdq.scale(ws[m]));
@@ -586,7 +679,8 @@ impl HermiteQuatSpline {
                 }
             }
         }
-        (sum, mq, mq2)
+        let [s0, s1] = sum.lanes();
+        (s0 + s1, mq.map(Q4x2::lane_sum), mq2.map(Q4x2::lane_sum))
     }
 
     /// Piece `j` and its cubic in powers of the local fraction `s`: `q = a₀ + a₁s + a₂s² + a₃s³`
