@@ -6,11 +6,8 @@
 // On phones the Plots view shows one chart at a time, picked from a list, with nothing to scroll.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import fs from 'node:fs';
-import path from 'node:path';
-import { waitFrames, playgroundPage, ROOT, BACKEND } from './lib.mjs';
+import { waitFrames, playgroundPage, shotPath, BACKEND } from './lib.mjs';
 
-const DOCS = path.join(ROOT, 'docs');
 let play;
 let page;
 let problems;
@@ -68,7 +65,7 @@ test(`${BACKEND}: a CSV of 200 poses asks how to import it; Esc changes nothing;
   // The dialog is modal: the focus is inside it.
   assert.ok(await sb(() => document.querySelector('#reduce-dialog').contains(document.activeElement)));
   await quiet();
-  await page.screenshot({ path: path.join(DOCS, 'csv-reduce.png') });
+  await page.screenshot({ path: shotPath('csv-reduce.png') });
   await page.keyboard.press('Escape');
   await page.waitForSelector('#reduce-dialog', { state: 'detached' });
   assert.match(await noticeAbout('dense.csv'), /cancelled, nothing was changed/);
@@ -180,7 +177,7 @@ test(`${BACKEND}: plots have units on the y axes and at least 3 labelled ticks o
   });
   assert.ok(body.scroll <= body.client + 1, `the dock scrolls: ${body.scroll} > ${body.client}`);
   await quiet();
-  await page.screenshot({ path: path.join(DOCS, 'analysis-1280.png') });
+  await page.screenshot({ path: shotPath('analysis-1280.png') });
   assert.deepEqual(problems, []);
 });
 
@@ -313,7 +310,7 @@ test(`${BACKEND}: dark theme (D key): the charts switch to light ink live, keepi
   const all = await sb(() => window.screwbender.app.dock.current.charts.map((c) => c.plot.axes[0].stroke(c.plot, 0)));
   assert.ok(all.every((h) => hexLum(h) > 0.6), `x axes ${all}`);
   await quiet();
-  await page.screenshot({ path: path.join(DOCS, 'analysis-dark-1280.png') });
+  await page.screenshot({ path: shotPath('analysis-dark-1280.png') });
   await sb(() => window.screwbender.openView('timing'));
   await sb(() => window.screwbender.flushViews());
   const u = await sb(() => {
@@ -537,7 +534,7 @@ for (const [w, h] of [[1280, 800], [390, 844], [844, 390]]) {
     }
     if (w === 390) {
       await quiet();
-      await page.screenshot({ path: path.join(DOCS, 'analysis-390.png') });
+      await page.screenshot({ path: shotPath('analysis-390.png') });
     }
     assert.deepEqual(problems, []);
   });
@@ -653,7 +650,7 @@ for (const [w, h, shot] of [[390, 844, 'analysis-390-plots.png'], [844, 390, 'an
     await sb(() => window.screwbender.flushViews());
     await waitFrames(page, 2);
     await quiet();
-    await page.screenshot({ path: path.join(DOCS, shot) });
+    await page.screenshot({ path: shotPath(shot) });
     assert.deepEqual(problems, []);
   });
 }

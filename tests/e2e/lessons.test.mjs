@@ -8,10 +8,10 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { ROOT, BACKEND, startPlayground, openPage, waitFrames } from './lib.mjs';
+import { ROOT, BACKEND, startPlayground, openPage, shotPath, waitFrames } from './lib.mjs';
 
 const LESSONS = JSON.parse(fs.readFileSync(path.join(ROOT, 'www/lessons/index.json'), 'utf8')).lessons;
-const SHOTS = process.env.DOCS_SHOTS === '1' ? path.join(ROOT, 'docs/lessons') : path.join(ROOT, `artifacts/e2e-${BACKEND}/lessons`);
+const SHOTS = path.dirname(shotPath('lessons/index.png'));
 
 let play;
 let page;

@@ -3,11 +3,10 @@
 // and keys (one undo step per drag; a move past a neighbouring key is refused with a message and
 // changes nothing); key velocities edited in the Timing view hold in the playback; bad
 // velocities are refused; times and velocities survive a reload (autosave) and a share link, and
-// older sessions with the page's view.times still load. Screenshots: docs/timeline-*.png.
+// older sessions with the page's view.times still load. Screenshots: timeline-*.png (see shotPath in lib.mjs).
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import path from 'node:path';
-import { waitFrames, openPage, playgroundPage, ROOT, BACKEND } from './lib.mjs';
+import { waitFrames, openPage, playgroundPage, shotPath, BACKEND } from './lib.mjs';
 
 let play;
 let page;
@@ -449,7 +448,7 @@ test(`${BACKEND}: screenshots of the timeline (desktop and phone)`, async () => 
   await sb(() => window.screwbender.flushViews());
   await page.locator('#keys .key-marker[data-key="3"]').focus();
   await waitFrames(page, 2);
-  await page.screenshot({ path: path.join(ROOT, 'docs', 'timeline-desktop.png') });
+  await page.screenshot({ path: shotPath('timeline-desktop.png') });
   const link = await sb(() => window.screwbender.app.shareLink());
   const ctx = await play.browser.newContext({ viewport: { width: 390, height: 844 }, hasTouch: true, isMobile: true, deviceScaleFactor: 2 });
   try {
@@ -463,7 +462,7 @@ test(`${BACKEND}: screenshots of the timeline (desktop and phone)`, async () => 
       assert.ok(b.left >= -0.5 && b.right <= 390.5 && b.top >= -0.5 && b.bottom <= 844.5, `marker off screen: ${JSON.stringify(b)}`);
     }
     await waitFrames(phone, 2);
-    await phone.screenshot({ path: path.join(ROOT, 'docs', 'timeline-phone.png') });
+    await phone.screenshot({ path: shotPath('timeline-phone.png') });
     assert.deepEqual(phoneProblems, []);
   } finally {
     await ctx.close();

@@ -5,7 +5,7 @@
 // figure, and figures come and go without errors or growing memory.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { EXPECTED_BACKEND, ROOT, startPlayground } from './lib.mjs';
+import { EXPECTED_BACKEND, shotPath, startPlayground } from './lib.mjs';
 
 const COURSE = 'examples/course.html';
 const FIGURES = ['fig-screw', 'fig-fourpoint', 'fig-bspline', 'fig-jarek'];
@@ -544,14 +544,14 @@ test('phones (320 and 390 px, touch): the control bar shows play, scrubber and a
       await page.evaluate(() => document.querySelectorAll('screw-bender').forEach((e) => e.pause()));
       if (width === 390) {
         await page.evaluate(() => document.getElementById('fig-fourpoint').scrollIntoView({ block: 'center' }));
-        await page.screenshot({ path: `${ROOT}/docs/course-390-dark.png` });
+        await page.screenshot({ path: shotPath('course-390-dark.png') });
         await page.evaluate(() => document.querySelectorAll('screw-bender').forEach((e) => e.setAttribute('theme', 'light')));
         await page.evaluate(() => window.scrollTo(0, document.body.scrollHeight));
-        await page.screenshot({ path: `${ROOT}/docs/course-final-390.png` });
+        await page.screenshot({ path: shotPath('course-final-390.png') });
       } else {
         await page.evaluate(() => document.querySelectorAll('screw-bender').forEach((e) => e.setAttribute('theme', 'light')));
         await page.evaluate(() => document.getElementById('fig-fourpoint').scrollIntoView({ block: 'center' }));
-        await page.screenshot({ path: `${ROOT}/docs/course-320.png` });
+        await page.screenshot({ path: shotPath('course-320.png') });
       }
       assert.deepEqual(problems, []);
     } finally {
