@@ -83,20 +83,6 @@ fn at_lanes<L: Width<N>, const N: usize>(span: &RegularSpan<L>, t: L) -> Option<
     kernel::regular_at(span, t)
 }
 
-/// Appends the poses at `t` of regular spans to `column` ([`at_lanes`], then [`push`]): one
-/// function, so that on wasm32, where it is out of line, the poses go from the lanes straight
-/// into `column` (returned to the caller, the 28 numbers went through memory and V8 kept them on
-/// the stack across the capacity check: 11% of a Jarek `subdivide()` in Node). The caller has
-/// checked the fractions (`regular_at_fits`); should the kernel still refuse, nothing is written,
-/// as before.
-#[cfg_attr(target_arch = "wasm32", inline(never))]
-#[cfg_attr(not(target_arch = "wasm32"), inline(always))]
-fn at_lanes_into<L: Width<N>, const N: usize>(span: &RegularSpan<L>, t: L, column: &mut Vec<Pose>) {
-    if let Some(lanes) = at_lanes(span, t) {
-        push(column, lanes);
-    }
-}
-
 /// Appends `screw(a[k], t[k], b[k])` for every lane to `out`, through the scalar route when the
 /// group holds a rare case. (Out of line on wasm32, where each batch's closure type would
 /// otherwise get its own copy; inlined natively as [`span_lanes`].)
@@ -234,7 +220,9 @@ pub(crate) fn sample_cycle(p: &[Pose], ts: &[f64], out: &mut [Vec<Pose>]) {
                 match span {
                     Some(span) => {
                         for (column, &t) in out.iter_mut().zip(ts) {
-                            at_lanes_into(&span, span.s.constant(t), column);
+                            if let Some(lanes) = at_lanes(&span, span.s.constant(t)) {
+                                push(column, lanes);
+                            }
                         }
                     }
                     None => (i..i + N).for_each(|i| scalar(i, out)),
