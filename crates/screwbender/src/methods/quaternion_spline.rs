@@ -152,22 +152,24 @@ impl Q4x2 {
         }
     }
 
+    /// `op` component by component.
     #[inline(always)]
-    fn add(self, o: Q4x2) -> Q4x2 {
+    fn zip(self, o: Q4x2, op: impl Fn(P, P) -> P) -> Q4x2 {
         let [a, b, c, d] = self.c;
         let [e, f, g, h] = o.c;
         Q4x2 {
-            c: [a.add(e), b.add(f), c.add(g), d.add(h)],
+            c: [op(a, e), op(b, f), op(c, g), op(d, h)],
         }
     }
 
     #[inline(always)]
+    fn add(self, o: Q4x2) -> Q4x2 {
+        self.zip(o, P::add)
+    }
+
+    #[inline(always)]
     fn sub(self, o: Q4x2) -> Q4x2 {
-        let [a, b, c, d] = self.c;
-        let [e, f, g, h] = o.c;
-        Q4x2 {
-            c: [a.sub(e), b.sub(f), c.sub(g), d.sub(h)],
-        }
+        self.zip(o, P::sub)
     }
 
     /// `(xx' + zz') + (yy' + ww')` in each lane.
