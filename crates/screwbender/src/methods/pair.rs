@@ -101,25 +101,30 @@ impl P {
     pub(super) fn lanes(self) -> [f64; 2] {
         self.0
     }
+    /// `op` lane by lane.
+    #[inline(always)]
+    fn zip(self, o: P, op: impl Fn(f64, f64) -> f64) -> P {
+        P([op(self.0[0], o.0[0]), op(self.0[1], o.0[1])])
+    }
     /// Lane by lane `self + o`.
     #[inline(always)]
     pub(super) fn add(self, o: P) -> P {
-        P([self.0[0] + o.0[0], self.0[1] + o.0[1]])
+        self.zip(o, |a, b| a + b)
     }
     /// Lane by lane `self − o`.
     #[inline(always)]
     pub(super) fn sub(self, o: P) -> P {
-        P([self.0[0] - o.0[0], self.0[1] - o.0[1]])
+        self.zip(o, |a, b| a - b)
     }
     /// Lane by lane `self · o`.
     #[inline(always)]
     pub(super) fn mul(self, o: P) -> P {
-        P([self.0[0] * o.0[0], self.0[1] * o.0[1]])
+        self.zip(o, |a, b| a * b)
     }
     /// Lane by lane `self / o`.
     #[inline(always)]
     pub(super) fn div(self, o: P) -> P {
-        P([self.0[0] / o.0[0], self.0[1] / o.0[1]])
+        self.zip(o, |a, b| a / b)
     }
     /// `[a₀, a₀]` of `self = [a₀, a₁]`.
     #[inline(always)]

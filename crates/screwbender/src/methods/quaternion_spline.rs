@@ -605,7 +605,7 @@ impl HermiteQuatSpline {
         let Some(out) = gradient else {
             let mut total = 0.0;
             for j in 0..self.piece_count() {
-                let (p, a, b) = self.piece_power_form(j);
+                let (p, a, b, _) = self.piece_power_form(j);
                 total += p.dt * self.piece_sums::<false>(&a, &b, alpha).0;
             }
             return total;
@@ -618,12 +618,11 @@ impl HermiteQuatSpline {
         }
         let mut total = 0.0;
         for j in 0..self.piece_count() {
-            let (p, a, b) = self.piece_power_form(j);
+            let (p, a, b, inv2) = self.piece_power_form(j);
             let (sum, mq, mq2) = self.piece_sums::<true>(&a, &b, alpha);
             total += p.dt * sum;
             // ∂/∂c_k = Σ w (∂F/∂q H_k(s) + ∂F/∂q'' H_k''(s)/Δ²) with the Hermite basis H_k
             // (docs/math/quaternion-splines.md §3) expanded in powers of s.
-            let inv2 = 1.0 / (p.dt * p.dt);
             let combine = |h: [f64; 4], h2: [f64; 2]| {
                 let v = mq[0]
                     .scale(h[0])
@@ -699,9 +698,10 @@ impl HermiteQuatSpline {
 
     /// Piece `j` and its cubic in powers of the local fraction `s`: `q = a₀ + a₁s + a₂s² + a₃s³`
     /// from the Hermite form `H₀p₀ + H₁Δm₀ + H₂p₁ + H₃Δm₁` (docs/math/quaternion-splines.md §3),
-    /// and `q''/Δ²`'s coefficients `b₀ = 2a₂/Δ²`, `b₁ = 6a₃/Δ²` (time derivatives).
+    /// `q''/Δ²`'s coefficients `b₀ = 2a₂/Δ²`, `b₁ = 6a₃/Δ²` (time derivatives), and `1/Δ²` itself
+    /// (the gradient scales by it too).
     #[inline(always)]
-    fn piece_power_form(&self, j: usize) -> (Piece, [Q4; 4], [Q4; 2]) {
+    fn piece_power_form(&self, j: usize) -> (Piece, [Q4; 4], [Q4; 2], f64) {
         let p = self.piece(j);
         let [p0, dm0, p1, dm1] = [p.p0, p.m0 * p.dt, p.p1, p.m1 * p.dt].map(Q4::from);
         let a2 = p1.sub(p0).scale(3.0).sub(dm0.scale(2.0)).sub(dm1);
@@ -711,6 +711,7 @@ impl HermiteQuatSpline {
             p,
             [p0, dm0, a2, a3],
             [a2.scale(2.0 * inv2), a3.scale(6.0 * inv2)],
+            inv2,
         )
     }
 
