@@ -4,6 +4,10 @@
 //   node benches/wasm/bench.mjs --browser    # in headless Chromium (playwright-core)
 //   node benches/wasm/bench.mjs --json       # machine-readable output
 //
+// CHROMIUM_ARGS='…' adds flags to Chromium's command line (here and in compare.mjs --browser), for
+// experiments such as '--js-flags=--no-liftoff' (TurboFan from the start: it made no difference
+// to subdivideInto, so the figures are not Liftoff code waiting to tier up).
+//
 // Figures: screwPoses (one screw at 2^16 fractions per call: exp only), screwPairs (2^16 full
 // screws per call: log + exp), and the subdivision of 32 random poses by 6 levels per scheme and rule set
 // (with the direct rules also `subdivideInto` a kept array, where the build has it).
@@ -36,7 +40,11 @@ export async function withBrowserPage(fn, log = () => {}) {
   await new Promise((r) => server.listen(0, '127.0.0.1', r));
   const b = await chromium.launch({
     executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
-    args: ['--headless=new', '--no-sandbox', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run'],
+    args: [
+      '--headless=new', '--no-sandbox', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run',
+      // Extra Chromium flags for an experiment, e.g. CHROMIUM_ARGS='--js-flags=--no-wasm-dynamic-tiering'.
+      ...(process.env.CHROMIUM_ARGS?.split(' ').filter(Boolean) ?? []),
+    ],
   });
   try {
     const page = await b.newPage();

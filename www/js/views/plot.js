@@ -125,7 +125,10 @@ export function seriesInk(color) {
 
 /** Every live chart (the theme switch redraws them). */
 const allCharts = new Set();
-/** Legend swatches of the views' own legends (inkSwatch): the theme switch recolours them. */
+/**
+ * Legend swatches of the views' own legends (inkSwatch): the theme switch recolours them. Held
+ * weakly, so that a view rebuilt many times does not keep its old legends alive here.
+ */
 const swatches = new Set();
 let themeWatch = null;
 
@@ -137,7 +140,7 @@ let themeWatch = null;
 export function inkSwatch(e, color) {
   e.style.background = seriesInk(color);
   e.dataset.seriesColor = color;
-  swatches.add(e);
+  swatches.add(new WeakRef(e));
   watchTheme();
   return e;
 }
@@ -151,7 +154,11 @@ function watchTheme() {
     if (now === shown) return;
     shown = now;
     for (const c of allCharts) c.restyle();
-    for (const e of swatches) e.style.background = seriesInk(e.dataset.seriesColor);
+    for (const ref of swatches) {
+      const e = ref.deref();
+      if (e) e.style.background = seriesInk(e.dataset.seriesColor);
+      else swatches.delete(ref);
+    }
   });
   themeWatch.observe(document.documentElement, { attributes: true, attributeFilter: ['data-theme'] });
 }
