@@ -126,3 +126,29 @@ describe('chart series contrast (seriesInk)', () => {
     assert.equal(CHART_BG.dark, over(dark[1], [255, 255, 255]));
   });
 });
+
+// The point-rules figure (www/js/views/polygon.js) draws on its own white canvas in both themes:
+// its lines, arrows, outlines and label are checked against that white.
+describe('point-rules figure contrast (polygon.js)', () => {
+  const src = read('www/js/views/polygon.js');
+
+  it('paints its canvas white before drawing', () => {
+    assert.match(src, /g\.fillStyle = '#fff';\s*g\.fillRect\(0, 0, w, h\);/);
+  });
+
+  it('every line, mark and label colour has at least 3:1 against the white canvas', () => {
+    const inks = new Set();
+    for (const re of [/color: '(#[0-9a-fA-F]{6})'/g, /const CONTROL = '(#[0-9a-fA-F]{3,6})'/g, /strokeStyle = '(#[0-9a-fA-F]{3,6})'/g]) {
+      for (const m of src.matchAll(re)) inks.add(m[1].toLowerCase());
+    }
+    // The label's fillStyle, set just before its fillText.
+    const label = /fillStyle = '(#[0-9a-fA-F]{3,6})';\s*g\.font/.exec(src);
+    assert.ok(label, 'the level label colour');
+    inks.add(label[1].toLowerCase());
+    const six = (c) => (c.length === 4 ? `#${[...c.slice(1)].map((d) => d + d).join('')}` : c);
+    for (const c of ['#d1202f', '#1f5fd1', '#1f9d3a', '#8a8f9c', '#333', '#444', '#555']) assert.ok(inks.has(c), `${c} in ${[...inks]}`);
+    for (const c of inks) {
+      assert.ok(contrast(six(c), '#ffffff') >= MIN_CONTRAST, `${c}: ${contrast(six(c), '#ffffff').toFixed(2)}:1 on white`);
+    }
+  });
+});
