@@ -134,7 +134,7 @@ pub(crate) fn regular_span_with<R: Real>(
 /// any lane (the result is that of [`crate::Screw::at`] bit for bit).
 #[inline(always)]
 pub(crate) fn regular_at<R: Real>(span: &RegularSpan<R>, t: R) -> Option<(V3<R>, Q<R>)> {
-    regular_at_by(span, t, trig::sin_cos_kernel)
+    regular_at_by(span, t, trig::sin_cos_kernel_lanes)
 }
 
 /// [`regular_at`] on one `f64`, bit for bit, through [`trig::sin_cos_kernel_one`] (a
