@@ -289,18 +289,11 @@ mod tests {
         assert!(atan2_quadrant(0.0, 0.0) == 0.0);
     }
 
-    #[test]
-    fn the_unreduced_branch_is_the_kernel_bit_for_bit() {
-        let same = |x: f64| {
-            let (s, c) = sin_cos_kernel_one(x);
-            let (es, ec) = sin_cos_kernel(x);
-            assert_eq!(
-                (s.to_bits(), c.to_bits()),
-                (es.to_bits(), ec.to_bits()),
-                "{x}"
-            );
-        };
-        // Both sides of the limit, across it into the next quadrant, and the edges.
+    /// `f` gives [`sin_cos_kernel`]'s bits on both sides of [`NO_REDUCTION_LIMIT`], across it
+    /// into the next quadrant, and at the edges.
+    fn same_bits_as_the_kernel(f: impl Fn(f64) -> (f64, f64)) {
+        let bits = |(s, c): (f64, f64)| (s.to_bits(), c.to_bits());
+        let same = |x: f64| assert_eq!(bits(f(x)), bits(sin_cos_kernel(x)), "{x}");
         let mut x = -1.2;
         while x < 1.2 {
             same(x);
@@ -320,37 +313,27 @@ mod tests {
             same(x);
             same(f64::from_bits(x.to_bits() + 1));
         }
+    }
+
+    #[test]
+    fn the_unreduced_branch_is_the_kernel_bit_for_bit() {
+        same_bits_as_the_kernel(sin_cos_kernel_one);
         assert!(sin_cos_kernel_one(f64::NAN).0.is_nan());
         // The branch is taken only where the kernel's quadrant is 0.
+        let limit = NO_REDUCTION_LIMIT;
         assert!(limit * std::f64::consts::FRAC_2_PI < 0.5);
     }
 
     #[test]
     fn the_lanes_shortcut_is_the_kernel_bit_for_bit() {
-        let bits = |(s, c): (f64, f64)| (s.to_bits(), c.to_bits());
-        // One lane: both sides of the limit, across it into the next quadrant, and the edges.
-        let same = |x: f64| {
-            assert_eq!(
-                bits(sin_cos_kernel_lanes(x)),
-                bits(sin_cos_kernel(x)),
-                "{x}"
-            )
-        };
-        let mut x = -1.2;
-        while x < 1.2 {
-            same(x);
-            x += 0.000_137;
-        }
-        let limit = NO_REDUCTION_LIMIT;
-        for x in [0.0, -0.0, 5e-324, -1e-300, limit, -limit, FRAC_PI_2 / 2.0] {
-            same(x);
-            same(f64::from_bits(x.to_bits() + 1));
-        }
+        same_bits_as_the_kernel(sin_cos_kernel_lanes);
         // Two lanes: the shortcut only when both are within the limit; a group with one lane
         // beyond it takes the kernel. Lane by lane the bits are the kernel's either way.
         #[cfg(portable_lanes)]
         {
             use super::super::portable::Lanes;
+            let bits = |(s, c): (f64, f64)| (s.to_bits(), c.to_bits());
+            let limit = NO_REDUCTION_LIMIT;
             let beyond = f64::from_bits(limit.to_bits() + 1);
             for (a, b) in [
                 (0.3, 0.5),
