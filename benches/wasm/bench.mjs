@@ -42,7 +42,7 @@ export async function withBrowserPage(fn, log = () => {}) {
     executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
     args: [
       '--headless=new', '--no-sandbox', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run',
-      // Extra Chromium flags for an experiment, e.g. CHROMIUM_ARGS='--js-flags=--no-wasm-dynamic-tiering'.
+      // Extra Chromium flags for an experiment (CHROMIUM_ARGS, see the top of this file).
       ...(process.env.CHROMIUM_ARGS?.split(' ').filter(Boolean) ?? []),
     ],
   });
