@@ -64,8 +64,8 @@ pub(crate) fn sin_cos(x: f64) -> (f64, f64) {
 /// the quadrant `k = 0`, reduces to exactly `r = x` and leaves the quadrant step unchanged.
 const NO_REDUCTION_LIMIT: f64 = 0.78;
 
-/// [`sin_cos_kernel`] on one `f64`, bit for bit, natively with a branch around the reduction
-/// where it is the identity (`|x| ≤ 0.78`, about π/4): the series start without waiting for the
+/// [`sin_cos_kernel`] on one `f64`, bit for bit, natively [`sin_cos_kernel_lanes`] on its one
+/// lane: a branch around the reduction where it is the identity (`|x| ≤ 0.78`, about π/4): the series start without waiting for the
 /// reduction's six dependent operations (18 cycles of a one-at-a-time screw's chain). Unlike the
 /// quadrant, this branch is predictable: `tθ/2` stays below 0.78 for spans up to 89° at
 /// `t ∈ [0, 1]`, and for most evaluations of larger ones.
@@ -73,10 +73,10 @@ const NO_REDUCTION_LIMIT: f64 = 0.78;
 pub(crate) fn sin_cos_kernel_one(x: f64) -> (f64, f64) {
     // Not on wasm32: the second copy of the series would add about 260 bytes gzip to the math
     // module, whose size is budgeted.
-    if cfg!(not(target_arch = "wasm32")) && x.abs() <= NO_REDUCTION_LIMIT {
-        sin_cos_series(x)
-    } else {
+    if cfg!(target_arch = "wasm32") {
         sin_cos_kernel(x)
+    } else {
+        sin_cos_kernel_lanes(x)
     }
 }
 

@@ -42,13 +42,12 @@ fn push<L: Width<N>, const N: usize>(out: &mut Vec<Pose>, (o, q): (V3<L>, Q<L>))
     // growth path is a call: every number read from the lanes would be live across that call,
     // and V8 keeps such values on the stack (70 of the 197 instructions per group of four of its
     // code for a subdivision's sampling loop, 39 of 123 without the call; the subdivisions run
-    // 0.96–0.98× as long). An abort, not an assertion, in release builds: it is reachable only
-    // by a mistake in this file, and the assertion's message costs the math module 30 bytes.
-    debug_assert!(
-        out.capacity() - out.len() >= N,
-        "room reserved for the lanes"
-    );
+    // 0.96–0.98× as long). An abort, not a panic, in release builds: it is reachable only by a
+    // mistake in this file, and the panic's message costs the math module 30 bytes.
     if out.capacity() - out.len() < N {
+        if cfg!(debug_assertions) {
+            panic!("no room reserved for the lanes");
+        }
         std::process::abort();
     }
     let poses: [Pose; N] = std::array::from_fn(|k| {
