@@ -68,9 +68,10 @@ const NO_REDUCTION_LIMIT: f64 = 0.78;
 /// lane: a branch around the reduction where it is the identity (`|x| ≤ 0.78`, about π/4): the series start without waiting for the
 /// reduction's six dependent operations (18 cycles of a one-at-a-time screw's chain). Unlike the
 /// quadrant, this branch is predictable: `tθ/2` stays below 0.78 for spans up to 89° at
-/// `t ∈ [0, 1]`, and for most evaluations of larger ones.
+/// `t ∈ [0, 1]`, and for most evaluations of larger ones. (Generic over the lanes only so that
+/// the kernel's one body can name it; its callers pass one `f64`.)
 #[inline(always)]
-pub(crate) fn sin_cos_kernel_one(x: f64) -> (f64, f64) {
+pub(crate) fn sin_cos_kernel_one<R: Real>(x: R) -> (R, R) {
     // Not on wasm32: the second copy of the series would add about 260 bytes gzip to the math
     // module, whose size is budgeted.
     if cfg!(target_arch = "wasm32") {

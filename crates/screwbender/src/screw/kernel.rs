@@ -134,27 +134,31 @@ pub(crate) fn regular_span_with<R: Real>(
 /// any lane (the result is that of [`crate::Screw::at`] bit for bit).
 #[inline(always)]
 pub(crate) fn regular_at<R: Real>(span: &RegularSpan<R>, t: R) -> Option<(V3<R>, Q<R>)> {
-    regular_at_by(span, t, trig::sin_cos_kernel_lanes)
+    regular_at_by::<R, false>(span, t)
 }
 
 /// [`regular_at`] on one `f64`, bit for bit, through [`trig::sin_cos_kernel_one`] (a
 /// predictable branch around the sine's argument reduction).
 #[inline(always)]
 pub(crate) fn regular_at_one(span: &RegularSpan<f64>, t: f64) -> Option<(V3<f64>, Q<f64>)> {
-    regular_at_by(span, t, trig::sin_cos_kernel_one)
+    regular_at_by::<f64, true>(span, t)
 }
 
-/// [`regular_at`] with `sin_cos` for the sine and cosine of `t·θ/2` (both give the same bits).
+/// [`regular_at`], the sine and cosine of `t·θ/2` by [`trig::sin_cos_kernel_one`] if `ONE`
+/// (both give the same bits). A constant rather than the function passed as a value: the
+/// function item's `FnOnce` shim is not always inlined, and out of line it runs without the
+/// target features the batches were compiled for.
 #[inline(always)]
-fn regular_at_by<R: Real>(
-    span: &RegularSpan<R>,
-    t: R,
-    sin_cos: impl FnOnce(R) -> (R, R),
-) -> Option<(V3<R>, Q<R>)> {
+fn regular_at_by<R: Real, const ONE: bool>(span: &RegularSpan<R>, t: R) -> Option<(V3<R>, Q<R>)> {
     if !regular_at_fits(span, t) {
         return None;
     }
-    let (sa, ca) = sin_cos(t * span.half_angle);
+    let x = t * span.half_angle;
+    let (sa, ca) = if ONE {
+        trig::sin_cos_kernel_one(x)
+    } else {
+        trig::sin_cos_kernel_lanes(x)
+    };
     Some(evaluate(span.oa, span.qa, &span.coefficients, t, sa, ca))
 }
 
