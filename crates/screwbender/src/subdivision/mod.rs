@@ -9,6 +9,8 @@ pub(crate) mod blend;
 pub(crate) mod decoupled;
 pub(crate) mod scheme;
 pub(crate) mod split_tweak;
+#[cfg(not(target_arch = "wasm32"))]
+mod tiles;
 pub(crate) mod warnings;
 
 use crate::error::{Error, ErrorKind};
@@ -306,16 +308,34 @@ impl Subdivision {
         }
     }
 
-    /// Refines the cycle `current` in place by `levels` steps, working in `buffers`.
+    /// Refines the cycle `current` in place by `levels` steps, working in `buffers` (large
+    /// cycles natively by tiles, `tiles.rs`: the same bits).
     fn refine_cycle<T: Blend>(&self, current: &mut Vec<T>, buffers: &mut SubdivisionBuffers<T>) {
+        #[cfg(not(target_arch = "wasm32"))]
+        if tiles::tiled(self, current.len()) {
+            return tiles::refine_cycle_tiled(self, current, buffers);
+        }
+        self.refine_levels(current, &mut buffers.next, &mut buffers.scratch);
+    }
+
+    /// Refines the cycle `current` in place by `levels` steps, the whole cycle at each level,
+    /// working in `next` and `scratch`.
+    fn refine_levels<T: Blend>(
+        &self,
+        current: &mut Vec<T>,
+        next: &mut Vec<T>,
+        scratch: &mut Scratch<T>,
+    ) {
         // Both buffers at their final size from the start: each level then writes in place
         // instead of growing (and copying) the one it is swapped with.
         let size = current.len() << self.levels;
         current.reserve(size.saturating_sub(current.len()));
-        buffers.reserve(size);
+        next.clear();
+        next.reserve(size);
+        scratch.reserve(size / 2);
         for _ in 0..self.levels {
-            self.step_unchecked(current, &mut buffers.next, &mut buffers.scratch);
-            std::mem::swap(current, &mut buffers.next);
+            self.step_unchecked(current, next, scratch);
+            std::mem::swap(current, next);
         }
     }
 }
@@ -333,6 +353,11 @@ impl Subdivision {
 pub struct SubdivisionBuffers<T> {
     next: Vec<T>,
     scratch: Scratch<T>,
+    /// A tiled subdivision's coarse cycle and the window of its current tile (`tiles.rs`).
+    #[cfg(not(target_arch = "wasm32"))]
+    coarse: Vec<T>,
+    #[cfg(not(target_arch = "wasm32"))]
+    window: Vec<T>,
 }
 
 impl<T> Default for SubdivisionBuffers<T> {
@@ -355,19 +380,21 @@ impl<T> SubdivisionBuffers<T> {
         SubdivisionBuffers {
             next: Vec::new(),
             scratch: Scratch::with_capacity(0),
+            #[cfg(not(target_arch = "wasm32"))]
+            coarse: Vec::new(),
+            #[cfg(not(target_arch = "wasm32"))]
+            window: Vec::new(),
         }
-    }
-
-    /// Makes room for cycles of up to `size` elements.
-    fn reserve(&mut self, size: usize) {
-        self.next.clear();
-        self.next.reserve(size);
-        self.scratch.reserve(size / 2);
     }
 
     /// The number of elements the buffers have room for, all together.
     fn elements(&self) -> usize {
-        self.next.capacity()
+        #[cfg(not(target_arch = "wasm32"))]
+        let tiles = self.coarse.capacity() + self.window.capacity();
+        #[cfg(target_arch = "wasm32")]
+        let tiles = 0;
+        tiles
+            + self.next.capacity()
             + self.scratch.left.capacity()
             + self.scratch.right.capacity()
             + self
