@@ -66,6 +66,10 @@ stage "clippy $WASM_TARGET (web lib, features render)" \
   cargo clippy -p screwbender-web --lib --target "$WASM_TARGET" --features render -- -D warnings
 stage "native tests (all targets)" cargo test --workspace --all-targets
 stage "doc tests" cargo test --workspace --doc
+# The API documentation builds without warnings: no broken intra-doc links. (The CLI separately:
+# its binary `screwbender` and the core library would write the same page.)
+stage "rustdoc (core and web libs)" env RUSTDOCFLAGS="-D warnings" cargo doc --no-deps -p screwbender -p screwbender-web
+stage "rustdoc (CLI)" env RUSTDOCFLAGS="-D warnings" cargo doc --no-deps -p screwbender-cli
 # The web crate's tests with its `teaching` functions (feature-gated out of the light npm module).
 # ChromeDriver makes a browser profile in $TMPDIR for each test binary and leaves it there (about
 # 28 MB each, 19 per run of this stage), so the stage gets a TMPDIR of its own, removed after it.

@@ -25,7 +25,7 @@ use crate::input::read_document;
 /// Names are those of [`Method::NAMES`]; each entry may also be a comma-separated list
 /// (`"rb,cc0"`), duplicates are measured once. With no names, every method that applies is used
 /// (all but `cc1` for a closed input), and one that does not support these particular poses is
-/// listed as skipped. An unknown name gives [`Error::UnknownValue`] at `methods`; a named method
+/// listed as skipped. An unknown name gives [`ErrorKind::UnknownValue`] at `methods`; a named method
 /// that rejects the input (e.g. `cc1` on a closed input) gives its error, prefixed with the
 /// method's name. A motion that is poor though it was built ([`Method::warnings`]) is noted in
 /// its row and gets a `screwbender: warning: METHOD: …` line on standard error.

@@ -1,6 +1,6 @@
 //! The WebAssembly / JavaScript API (compiled for `wasm32` only; the npm package `screwbender`).
 //!
-//! * [`MotionHandle`] — the JS class `Motion`: an editable motion document with subdivision
+//! * `MotionHandle` — the JS class `Motion`: an editable motion document with subdivision
 //!   options, and the smooth motion it defines (poses, samples, kinematics, span screws).
 //! * Free functions: `screw`, `screwPoses`, `screwPairs`, `screwInfo`, `posesToMatrices`,
 //!   `scenes`, `limits`, `version`, `importMotionFile` (feature `files`; so is
@@ -9,7 +9,7 @@
 //!   feature `tracks`); the teaching views' `subdividePolygon`, `polygonScenes`, `spanScrewsOf`,
 //!   `splitTweakStep`, `subdivideDecoupled`, `compareFrames` (feature `teaching`).
 //!
-//! Bulk results are typed arrays with fixed layouts (see [`convert`]): 7 `f64` per pose
+//! Bulk results are typed arrays with fixed layouts (see `convert`): 7 `f64` per pose
 //! (origin `x, y, z`, quaternion `w, x, y, z`), 16 `f32` per column-major 4×4 matrix, 16 `f64`
 //! per kinematics sample. Every call that takes input validates it completely before changing
 //! anything and throws a JS `Error` whose message names the bad element (the core [`Error`]'s

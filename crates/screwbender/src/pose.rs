@@ -5,7 +5,7 @@ use glam::{DMat3, DMat4, DQuat, DVec3};
 use crate::error::{check_finite, Error, ErrorKind};
 
 /// How far from 1 the norm of a user-given quaternion may be; within it the quaternion is
-/// normalised, beyond it [`Pose::from_wxyz`] returns [`Error::NonUnitQuaternion`].
+/// normalised, beyond it [`Pose::from_wxyz`] returns [`ErrorKind::NonUnitQuaternion`](crate::ErrorKind::NonUnitQuaternion).
 ///
 /// `1e-3` accepts quaternions typed by hand with three decimals (`[0.707, 0, 0, 0.707]` has norm
 /// 0.99985) and rejects anything that is clearly not meant to be a rotation.
@@ -22,7 +22,7 @@ pub const ORTHONORMAL_TOLERANCE: f64 = 1e-4;
 /// Far beyond any physical scene (an `f64` resolves a millimetre only up to about `1e12`), and
 /// small enough that squared lengths and subdivision weights never overflow (`(1e100)² = 1e200`):
 /// every accepted pose gives finite results. Larger coordinates are refused with
-/// [`Error::OutOfRange`] naming `origin`.
+/// [`ErrorKind::OutOfRange`](crate::ErrorKind::OutOfRange) naming `origin`.
 pub const MAX_COORDINATE: f64 = 1e100;
 
 /// Checks a user-given origin: finite, each coordinate within [`MAX_COORDINATE`].

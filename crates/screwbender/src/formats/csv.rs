@@ -27,8 +27,8 @@ pub const POSE_COLUMNS: [&str; 7] = ["x", "y", "z", "qw", "qx", "qy", "qz"];
 /// Parses control poses from CSV text (see the module docs).
 ///
 /// Errors: text over [`MAX_CSV_BYTES`] (`csv`); a missing column, text in a number field, a
-/// header without one of the pose columns ([`Error::Parse`] at `line N`); NaN or infinity
-/// ([`Error::NonFinite`] at `line N, column qw`); a bad quaternion (`line N.rotation: zero quaternion`);
+/// header without one of the pose columns ([`ErrorKind::Parse`](crate::ErrorKind::Parse) at `line N`); NaN or infinity
+/// ([`ErrorKind::NonFinite`](crate::ErrorKind::NonFinite) at `line N, column qw`); a bad quaternion (`line N.rotation: zero quaternion`);
 /// fewer than 2 poses.
 pub fn parse_csv_poses(text: &str) -> Result<MotionDocument, Error> {
     if text.len() > MAX_CSV_BYTES {

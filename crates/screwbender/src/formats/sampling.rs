@@ -60,7 +60,7 @@ pub enum Deviation {
     OriginAndAngle,
     /// A keyframe player's pose (lerped origin, slerped rotation, as glTF `LINEAR`): the
     /// distance of every body point within `radius` of the local origin (scene units), e.g. the
-    /// vertices of the object's mesh with `radius` = [`crate::mesh::Mesh::radius`].
+    /// vertices of the object's mesh with `radius` = [`mesh_radius`](crate::formats::interop::mesh_radius).
     Body {
         /// The largest distance of a body point from the local origin.
         radius: f64,

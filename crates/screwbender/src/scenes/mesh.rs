@@ -337,7 +337,7 @@ impl Mesh {
     /// negative indices count from the end, `v/vt/vn` forms accepted); everything else is
     /// ignored. Normals are recomputed: flat per face (each face gets its own vertices).
     ///
-    /// Errors ([`Error::Parse`] / [`Error::OutOfRange`], path `obj` or `obj line N`): text over
+    /// Errors ([`ErrorKind::Parse`] / [`ErrorKind::OutOfRange`], path `obj` or `obj line N`): text over
     /// [`MAX_OBJ_BYTES`], more than [`MAX_OBJ_TRIANGLES`] triangles, malformed or non-finite
     /// numbers, out-of-range indices, no faces.
     pub fn from_obj(text: &str) -> Result<Mesh, Error> {
@@ -466,7 +466,7 @@ impl Mesh {
     /// int); node transforms, materials and non-triangle primitives are ignored. Normals are
     /// recomputed flat, as for [`Mesh::from_obj`].
     ///
-    /// Errors ([`Error::Parse`], path `gltf…`): over [`MAX_GLTF_MESH_BYTES`], more than
+    /// Errors ([`ErrorKind::Parse`], path `gltf…`): over [`MAX_GLTF_MESH_BYTES`], more than
     /// [`MAX_OBJ_TRIANGLES`] triangles, malformed JSON or GLB framing, accessors out of their
     /// buffers, non-finite positions, indices out of range, no triangles.
     #[cfg(feature = "gltf")]
@@ -651,7 +651,7 @@ impl Mesh {
     /// The mesh for a name: a named object ([`crate::scenes::object_shape`]), a scene's own
     /// object (`scene:<id>`), the `k`-th morph shape of a scene (`morph:<id>:<k>`), or the
     /// gizmo parts `unit-sphere` / `unit-cone` (radius 1, cone apex at `z = +1`, base at
-    /// `z = 0`). Unknown names are an [`Error::UnknownValue`] at `mesh`.
+    /// `z = 0`). Unknown names are an [`ErrorKind::UnknownValue`] at `mesh`.
     pub fn named(name: &str) -> Result<Mesh, Error> {
         if let Some(shape) = scenes::object_shape(name) {
             return Ok(Mesh::from_shape(&shape));

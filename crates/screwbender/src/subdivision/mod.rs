@@ -19,7 +19,7 @@ use scheme::{Rules, Scheme, MAX_J_PARAMETER};
 
 /// The largest number of elements a subdivision may produce or hold in between (the memory
 /// guard): `2²⁰ = 1 048 576` poses, about 59 MB. Asking for more returns
-/// [`Error::TooManyPoses`] before anything is allocated.
+/// [`ErrorKind::TooManyPoses`] before anything is allocated.
 pub const MAX_REFINED_POSES: usize = 1 << 20;
 
 /// A complete subdivision request: scheme, rule set and number of levels.

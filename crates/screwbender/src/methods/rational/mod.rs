@@ -133,7 +133,7 @@ impl RationalMotion {
     ///
     /// Needs at least 2 samples, validated by [`super::validate_samples`]: finite, strictly
     /// increasing times, a non-degenerate rigid triangle. The C¹ version fails with
-    /// [`Error::Unsupported`] when its denominator drops below [`MIN_DENOMINATOR`].
+    /// [`ErrorKind::Unsupported`](crate::ErrorKind::Unsupported) when its denominator drops below [`MIN_DENOMINATOR`].
     pub fn fit(
         samples: &[TriangleSample],
         continuity: Continuity,
