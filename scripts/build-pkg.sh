@@ -86,8 +86,23 @@ have=$(wasm-bindgen --version 2>/dev/null | awk '{print $2}') || true
 [[ $have == "$want" ]] || die "wasm-bindgen $want needed (Cargo.lock), found '${have:-none}': run scripts/setup.sh"
 [[ -x $WASM_OPT ]] || die "$WASM_OPT missing: run npm ci at the repo root (scripts/setup.sh)"
 
+# Panic locations name each source file by its path, and those of the dependencies lie under
+# cargo's registry in $CARGO_HOME: a module built in another home directory would differ, in
+# content and in size (which is budgeted). Mapped to machine-independent names (`serde_json-1.0.x/
+# src/…`, as the workspace's own are relative); in the wasm-release profile only, which nothing
+# but this script builds, so the dependencies are not rebuilt back and forth. (The standard
+# library's `/rustc/<commit>/…` paths come precompiled and are not remapped.)
+remap=()
+for registry in "${CARGO_HOME:-$HOME/.cargo}"/registry/src/*/; do
+  [[ -d $registry ]] && remap+=("\"--remap-path-prefix=$registry=\"")
+done
+cargo_wasm_release() {
+  cargo build -p screwbender-web --lib --profile wasm-release --target "$WASM_TARGET" \
+    --config "target.$WASM_TARGET.rustflags=[$(IFS=,; echo "${remap[*]}")]" "$@"
+}
+
 header "cargo build (wasm32, wasm-release, no features)"
-timed "cargo build" cargo build -p screwbender-web --lib --profile wasm-release --target "$WASM_TARGET"
+timed "cargo build" cargo_wasm_release
 
 # Skip wasm-bindgen and wasm-opt (~20 s) when neither the module nor the packaging changed.
 input=$TARGET_DIR/$WASM_TARGET/wasm-release/screwbender_web.wasm
@@ -124,8 +139,7 @@ WASM_OPT_FEATURES=(--enable-bulk-memory --enable-reference-types --enable-nontra
 wasm_module() {
   local features=$1 out=$2 opt=$3 node=${4:-} stamp stamp_file
   header "$(basename "$out"): cargo build (wasm32, wasm-release, features $features)"
-  timed "cargo build" cargo build -p screwbender-web --lib --profile wasm-release --target "$WASM_TARGET" \
-    --features "$features"
+  timed "cargo build" cargo_wasm_release --features "$features"
   stamp=$( (cat "$input" npm/node.js scripts/build-pkg.sh Cargo.lock; echo "$features $opt $node") | sha256sum | cut -d' ' -f1)
   stamp_file=$PKG_DIR/.stamp-$(basename "$out")
   if [[ -f $stamp_file && $(cat "$stamp_file") == "$stamp" && -f $out/screwbender_bg.wasm ]]; then
