@@ -192,6 +192,27 @@ pub(crate) fn atan2_kernel<R: Real>(y: R, x: R) -> R {
     steep * steep.constant(FRAC_PI_2) + (one - steep - steep) * angle
 }
 
+/// [`atan2_kernel`] on lanes, bit for bit, straight to `y/x` and the series when no lane needs
+/// either step (`y ≤ x·tan(π/12)` in every lane: angles up to 15°, spans up to 30°). There both
+/// `0`/`1` steps are `0`, and the kernel's formula reduces exactly: `1 + 0·(√3 − 1) = 1`,
+/// `(n·1 − d·0)/(n·0 + d·1) = n/d` with `n = y`, `d = x`, and adding `0·π/6` or `0·π/2` to the
+/// non-negative angle, or multiplying it by `1 − 0 − 0`, changes no bit. In a subdivision's
+/// finer levels every span is short, so every group goes this way (the branch is predictable),
+/// and the quotient starts without waiting for the min/max and the shift test. `x·tan(π/12) − y`
+/// is the kernel's own comparison: its sign is that of `fl(x·tan(π/12)) − y`.
+#[inline(always)]
+pub(crate) fn atan2_kernel_lanes<R: Real>(y: R, x: R) -> R {
+    if (x * x.constant(TAN_PI_12) - y).all(|m| m >= 0.0) {
+        // `+ 0` as in the kernel: −0 becomes +0.
+        let (y, x) = (y + y.constant(0.0), x + x.constant(0.0));
+        let z = y / x;
+        let z2 = z * z;
+        z + z * z2 * estrin15(z2, &ATAN)
+    } else {
+        atan2_kernel(y, x)
+    }
+}
+
 /// `Σ c[i] xⁱ` for 8 coefficients by Estrin's scheme: the same terms as Horner's rule but a
 /// dependency chain of depth 3 instead of 8 (the polynomials sit on the screw's critical path).
 #[inline(always)]
@@ -324,6 +345,55 @@ mod tests {
         // The branch is taken only where the kernel's quadrant is 0.
         let limit = NO_REDUCTION_LIMIT;
         assert!(limit * std::f64::consts::FRAC_2_PI < 0.5);
+    }
+
+    #[test]
+    fn the_arctangent_shortcut_is_the_kernel_bit_for_bit() {
+        let same = |y: f64, x: f64| {
+            assert_eq!(
+                atan2_kernel_lanes(y, x).to_bits(),
+                atan2_kernel(y, x).to_bits(),
+                "atan2({y}, {x})"
+            )
+        };
+        // Ratios across both sides of the shortcut's limit and of the diagonal, at several
+        // magnitudes, and the neighbours of the limit itself.
+        for x in [1e-12, 0.3, 1.0, 7.5, 1e150] {
+            let mut r = 0.0;
+            while r < 1.5 {
+                same(r * x, x);
+                same(x, r * x);
+                r += 0.000_173;
+            }
+            let edge = x * TAN_PI_12;
+            for k in 0..4u64 {
+                same(f64::from_bits(edge.to_bits() - k), x);
+                same(f64::from_bits(edge.to_bits() + k), x);
+            }
+        }
+        same(0.0, 1.0);
+        same(5e-324, 1.0);
+        // Two lanes: the shortcut only when both are within the limit; lane by lane the bits are
+        // the kernel's either way.
+        #[cfg(portable_lanes)]
+        {
+            use super::super::portable::Lanes;
+            for (y, x) in [
+                ([0.1, 0.2], [1.0, 1.0]),
+                ([0.1, 0.9], [1.0, 1.0]),
+                ([2.0, 0.01], [1.0, 3.0]),
+                ([TAN_PI_12, 0.0], [1.0, 2.0]),
+            ] {
+                let a = atan2_kernel_lanes(Lanes(y), Lanes(x));
+                for k in 0..2 {
+                    assert_eq!(
+                        a.0[k].to_bits(),
+                        atan2_kernel(y[k], x[k]).to_bits(),
+                        "{y:?}, {x:?}: lane {k}"
+                    );
+                }
+            }
+        }
     }
 
     #[test]

@@ -86,7 +86,7 @@ fn span_lanes<L: Width<N>, const N: usize>(
 ) -> Option<RegularSpan<L>> {
     let (oa, qa) = load(proto, a);
     let (ob, qb) = load(proto, b);
-    kernel::regular_span_with(oa, qa, ob, qb, angle)
+    kernel::regular_span_with::<L, true>(oa, qa, ob, qb, angle)
 }
 
 /// The poses at `t` of regular spans (see [`kernel::regular_at`]). Inlined or not as
