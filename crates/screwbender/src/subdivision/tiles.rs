@@ -54,9 +54,12 @@ pub(super) fn refine_cycle_tiled<T: Blend>(
     };
     let f = 1usize << TILE_LEVELS;
     let size = current.len() << sub.levels;
-    coarse_levels.refine_levels(current, &mut buffers.next, &mut buffers.scratch);
-    // The coarse cycle moves to its own buffer; `current` receives the refined poses.
-    std::mem::swap(current, &mut buffers.coarse);
+    // The coarse levels in a buffer of their own (a 64th of the result), so that `current`
+    // keeps its memory for the refined poses: refined in `current`, the levels' swaps with
+    // `next` would leave a caller's output buffer and the working buffer both at full size.
+    buffers.coarse.clear();
+    buffers.coarse.extend_from_slice(current);
+    coarse_levels.refine_levels(&mut buffers.coarse, &mut buffers.next, &mut buffers.scratch);
     current.clear();
     current.reserve(size);
     let coarse = &buffers.coarse;
