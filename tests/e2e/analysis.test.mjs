@@ -130,8 +130,23 @@ test(`${BACKEND}: a dropped glTF sets the title and brings its mesh`, async () =
   await page.waitForFunction(() => window.screwbender.app.view.object === 'obj');
   const state = await sb(() => ({ kind: window.screwbender.app.imported?.kind, poses: window.screwbender.app.motion.poseCount }));
   assert.deepEqual(state, { kind: 'gltf', poses: 6 });
-  // The title is the file's (its document's name: here the preset it was exported from).
+  // The title is the file's (its document's name: here the preset it was exported from), and
+  // so are the figure and the description: not those of the preset loaded before.
   assert.match(await page.locator('#scene-title').textContent(), /L cycle/);
+  assert.match(await page.locator('#scene-fig').textContent(), /^A2 · /);
+  assert.match(await page.locator('#scene-desc').textContent(), /^The L cycle with four rotated poses/);
+  // A motion file that names no preset: its name, and no preset's figure or words.
+  const doc = { name: 'my walk', closed: false, poses: [
+    { origin: [0, 0, 0], rotation: [1, 0, 0, 0] },
+    { origin: [3, 1, 1], rotation: [Math.SQRT1_2, 0, 0, Math.SQRT1_2] },
+  ] };
+  await page.locator('#any-file').setInputFiles({ name: 'walk.json', mimeType: 'application/json', buffer: Buffer.from(JSON.stringify(doc)) });
+  await page.waitForFunction(() => window.screwbender.app.motion.poseCount === 2);
+  await waitFrames(page, 2);
+  assert.equal(await page.locator('#scene-title').textContent(), 'my walk');
+  assert.equal(await page.locator('#scene-fig').textContent(), '');
+  assert.equal(await page.locator('#scene-desc').textContent(), '');
+  assert.equal(await page.locator('#panel button', { hasText: 'Preset:' }).textContent(), 'Preset: none …');
   assert.deepEqual(problems, []);
 });
 

@@ -229,12 +229,15 @@ export function buildUi(app) {
     // A motion from a file (its name is not the preset's) is titled by the file.
     const fileName = app.motion.name && app.motion.name !== app.view.scene ? app.motion.name : null;
     const fileScene = fileName && app.scenes.find((s) => s.id === fileName);
+    // A file's motion is described by the preset it names, if any: not by the last preset
+    // loaded, whose figure and words would be stale.
+    const described = fileName ? fileScene : named;
     $('scene-title').textContent = fileName
       ? (fileScene ? presetName(fileScene) : fileName)
       : named && app.view.object === 'scene' ? presetName(named) : `${info.label} · ${info.figure}`;
-    $('scene-fig').textContent = named ? presetSubtitle(named) : '';
-    presetCtrl.name(`Preset: ${named ? presetName(named) : info.label} …`);
-    $('scene-desc').textContent = info.description;
+    $('scene-fig').textContent = described ? presetSubtitle(described) : '';
+    presetCtrl.name(`Preset: ${described ? presetName(described) : fileName ? 'none' : info.label} …`);
+    $('scene-desc').textContent = fileName ? (fileScene?.description ?? '') : info.description;
     const m = app.motion;
     $('stats').textContent =
       `${m.poseCount} control poses · ${m.refinedCount.toLocaleString()} refined · ` +
