@@ -244,7 +244,7 @@ export default {
       state.poses = levelPoses();
       state.screws = spanScrewsOf(state.poses, app.motion.closed);
       const n = state.screws.length;
-      countEl.textContent = n > MAX_ROWS ? `${n} spans (table: first ${MAX_ROWS})` : `${n} spans`;
+      countEl.textContent = n > MAX_ROWS ? `${n} spans (table: first ${MAX_ROWS})` : `${n} span${n === 1 ? '' : 's'}`;
       if (state.hover >= state.screws.length) state.hover = -1;
       rebuildTable();
       if (state.hover >= 0) setHover(state.hover);

@@ -158,7 +158,7 @@ export default {
         }
         app.renderer.setInstances(SLOT.stepsGhost, instances(matricesOf(step.input), () => C.input));
         app.renderer.setInstances(SLOT.steps, instances(matricesOf(pick(step.split, mids)), () => C.split));
-        state.caption = `Level ${level} → ${level + 1} · split: the screw midpoint s(P_i, ½, P_{i+1}) of each of the ${n} spans is inserted (green), giving ${2 * n} poses${open}.`;
+        state.caption = `Level ${level} → ${level + 1} · split: the screw midpoint s(Pᵢ, ½, Pᵢ₊₁) of each of the ${n} spans is inserted (green), giving ${2 * n} poses${open}.`;
       } else {
         const moved = [];
         for (let j = 0; j < 2 * n; j++) if (step.tweaked[j]) moved.push(j);
