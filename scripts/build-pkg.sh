@@ -104,6 +104,10 @@ cargo_wasm_release() {
 header "cargo build (wasm32, wasm-release, no features)"
 timed "cargo build" cargo_wasm_release
 
+# The features rustc enables by default for wasm32 (wasm-opt must accept what the modules use).
+WASM_OPT_FEATURES=(--enable-bulk-memory --enable-reference-types --enable-nontrapping-float-to-int
+  --enable-sign-ext --enable-mutable-globals --enable-multivalue --enable-simd)
+
 # Skip wasm-bindgen and wasm-opt (~20 s) when neither the module nor the packaging changed.
 input=$TARGET_DIR/$WASM_TARGET/wasm-release/screwbender_web.wasm
 stamp=$(cat "$input" npm/* scripts/build-pkg.sh Cargo.lock | sha256sum | cut -d' ' -f1)
@@ -117,24 +121,18 @@ else
   timed "wasm-bindgen" wasm-bindgen --target web --out-dir "$PKG_DIR" --out-name screwbender "$input"
 
   header "wasm-opt -Os --converge"
-  # The features rustc enables by default for wasm32 (wasm-opt must accept what the module uses).
   # --converge repeats the passes while they still shrink the module: about 110 bytes gzip of
   # the math module's budget, for a few seconds more. --low-memory-unused (here and for the other
   # modules below) lets wasm-opt fold `pointer + constant` into the loads' and stores' offset
   # fields: the two differ only where the 32-bit sum wraps around into the lowest kilobyte,
   # which Rust code never reaches (pointer arithmetic does not wrap; the stack lies below 1 MB
   # and the data above it). About 1,050 bytes gzip of the math module.
-  timed "wasm-opt" "$WASM_OPT" -Os --converge --low-memory-unused \
-    --enable-bulk-memory --enable-reference-types --enable-nontrapping-float-to-int \
-    --enable-sign-ext --enable-mutable-globals --enable-multivalue --enable-simd \
+  timed "wasm-opt" "$WASM_OPT" -Os --converge --low-memory-unused "${WASM_OPT_FEATURES[@]}" \
     "$PKG_DIR/screwbender_bg.wasm" -o "$PKG_DIR/screwbender_bg.opt.wasm"
   mv "$PKG_DIR/screwbender_bg.opt.wasm" "$PKG_DIR/screwbender_bg.wasm"
 
   node_types "$PKG_DIR"
 fi
-
-WASM_OPT_FEATURES=(--enable-bulk-memory --enable-reference-types --enable-nontrapping-float-to-int
-  --enable-sign-ext --enable-mutable-globals --enable-multivalue --enable-simd)
 
 # wasm_module FEATURES OUT_DIR OPT [node]: the web crate built with FEATURES into OUT_DIR
 # (cargo, wasm-bindgen, wasm-opt at OPT; the last two, ~1-3 min, are skipped when the cargo output

@@ -177,16 +177,14 @@ pub(crate) fn in_atan2_range(y: f64, x: f64) -> bool {
 #[inline(always)]
 pub(crate) fn atan2_kernel<R: Real>(y: R, x: R) -> R {
     let one = y.constant(1.0);
-    // `+ 0` turns −0 into +0, whose bit pattern `gt_step` needs.
-    let (y, x) = (y + y.constant(0.0), x + x.constant(0.0));
+    let (y, x) = (plus_zero(y), plus_zero(x));
     let (n, d) = (y.min(x), y.max(x));
     // shift = 1: (n√3 − d)/(n + d√3) and π/6; shift = 0: n/d and 0. `√3 − 1` and `1 + (√3 − 1)`
     // are exact, so both cases are computed with exactly the roundings of their own formula.
     let shift = n.gt_step(d * d.constant(TAN_PI_12));
     let root = one + shift * shift.constant(SQRT_3 - 1.0);
     let z = (n * root - d * shift) / (n * shift + d * root);
-    let z2 = z * z;
-    let angle = shift * shift.constant(FRAC_PI_6) + (z + z * z2 * estrin15(z2, &ATAN));
+    let angle = shift * shift.constant(FRAC_PI_6) + atan_series(z);
     // Above the diagonal the angle is π/2 minus that of the mirrored point.
     let steep = y.gt_step(x);
     steep * steep.constant(FRAC_PI_2) + (one - steep - steep) * angle
@@ -203,14 +201,24 @@ pub(crate) fn atan2_kernel<R: Real>(y: R, x: R) -> R {
 #[inline(always)]
 pub(crate) fn atan2_kernel_lanes<R: Real>(y: R, x: R) -> R {
     if (x * x.constant(TAN_PI_12) - y).all(|m| m >= 0.0) {
-        // `+ 0` as in the kernel: −0 becomes +0.
-        let (y, x) = (y + y.constant(0.0), x + x.constant(0.0));
-        let z = y / x;
-        let z2 = z * z;
-        z + z * z2 * estrin15(z2, &ATAN)
+        atan_series(plus_zero(y) / plus_zero(x))
     } else {
         atan2_kernel(y, x)
     }
+}
+
+/// `y + 0`: −0 becomes +0 (whose bit pattern `gt_step` needs), every other value stays.
+#[inline(always)]
+fn plus_zero<R: Real>(y: R) -> R {
+    y + y.constant(0.0)
+}
+
+/// `atan(z)` for `|z| ≤ tan(π/12)` by its series: the arctangent kernels' last step, shared so
+/// that the shortcut and the kernel keep the same operations in the same order.
+#[inline(always)]
+fn atan_series<R: Real>(z: R) -> R {
+    let z2 = z * z;
+    z + z * z2 * estrin15(z2, &ATAN)
 }
 
 /// `Σ c[i] xⁱ` for 8 coefficients by Estrin's scheme: the same terms as Horner's rule but a
