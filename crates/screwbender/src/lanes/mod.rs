@@ -80,6 +80,11 @@ pub(crate) mod tests {
             let (a, b) = (proto.gather(|k| x[k]), proto.gather(|k| y[k]));
             let each = |f: fn(f64, f64) -> f64| std::array::from_fn(|k| f(x[k], y[k]));
             same(a, x, "gather");
+            let rows = proto.rows4(|k| [x[k], y[k], -x[k], x[k] * y[k]]);
+            same(rows[0], x, "rows4, first entry");
+            same(rows[1], y, "rows4, second entry");
+            same(rows[2], x.map(|p| -p), "rows4, third entry");
+            same(rows[3], each(|p, q| p * q), "rows4, fourth entry");
             same(a + b, each(|p, q| p + q), "add");
             same(a - b, each(|p, q| p - q), "sub");
             same(a * b, each(|p, q| p * q), "mul");

@@ -116,6 +116,12 @@ pub(crate) trait Width<const N: usize>: Real {
     fn gather(self, f: impl Fn(usize) -> f64) -> Self;
     /// Lane `k`.
     fn lane(self, k: usize) -> f64;
+    /// Four rows of lanes from `N` rows of four numbers: lane `k` of the result's `j`-th
+    /// entry is `row(k)[j]` (a transposition, as [`Width::gather`] of each entry does).
+    #[inline(always)]
+    fn rows4(self, row: impl Fn(usize) -> [f64; 4]) -> [Self; 4] {
+        std::array::from_fn(|j| self.gather(|k| row(k)[j]))
+    }
 }
 
 /// A computation written for any lanes (see `dispatch::run_widest`).

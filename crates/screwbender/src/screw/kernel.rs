@@ -102,6 +102,10 @@ pub(crate) fn regular_span<R: Real>(
 /// nothing about the next (the bench's random pairs ran 1–2 % slower with the test). Both give
 /// the same bits.
 #[inline(always)]
+#[allow(
+    clippy::manual_map,
+    reason = "a closure is not always inlined, and out of line it runs without the lanes' target features"
+)]
 pub(crate) fn regular_span_with<R: Real, const GROUPS: bool>(
     oa: V3<R>,
     qa: Q<R>,
@@ -109,18 +113,90 @@ pub(crate) fn regular_span_with<R: Real, const GROUPS: bool>(
     qb: Q<R>,
     angle: bool,
 ) -> Option<RegularSpan<R>> {
+    match regular_relative(oa, qa, ob, qb) {
+        Some(rel) => Some(span_start::<R, GROUPS>(oa, qa, rel, angle).complete()),
+        None => None,
+    }
+}
+
+/// The relative displacement from `(oa, qa)` to `(ob, qb)` (in every lane), or `None` when any
+/// lane is a rare case (see [`regular_span`]): [`regular_span_with`] up to its decision.
+#[inline(always)]
+pub(crate) fn regular_relative<R: Real>(
+    oa: V3<R>,
+    qa: Q<R>,
+    ob: V3<R>,
+    qb: Q<R>,
+) -> Option<Relative<R>> {
     let rel = relative(oa, qa, ob, qb);
     let regular = rel.s.all(|s| s > MIN_ROTATION_SINE)
         && rel.w.all(|w| w > HALF_TURN_EPSILON)
         && rel.s.all(|s| s < f64::INFINITY)
         && rel.w.all(|w| w < f64::INFINITY);
-    if !regular {
-        return None;
+    if regular {
+        Some(rel)
+    } else {
+        None
     }
+}
+
+/// A regular span up to its sweep `E`: [`regular_span_with`] after its decision, but for the two
+/// products that need nothing else ([`SpanStart::complete`]). The batch of full screws computes
+/// the two parts in different stages of its pipeline (`screw::batch`), so that fewer values
+/// wait between the stages.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct SpanStart<R> {
+    oa: V3<R>,
+    qa: Q<R>,
+    half_angle: R,
+    s: R,
+    w: R,
+    axis: V3<R>,
+    slide: R,
+    perp: V3<R>,
+    sweep: V3<R>,
+}
+
+impl<R: Real> SpanStart<R> {
+    /// The span.
+    #[inline(always)]
+    pub(crate) fn complete(self) -> RegularSpan<R> {
+        let SpanStart {
+            oa,
+            qa,
+            half_angle,
+            s,
+            w,
+            axis,
+            slide,
+            perp,
+            sweep,
+        } = self;
+        RegularSpan {
+            oa,
+            qa,
+            half_angle,
+            s,
+            w,
+            coefficients: complete_coefficients(qa, axis, slide, perp, sweep),
+        }
+    }
+}
+
+/// The start of the span from `(oa, qa)` whose relative displacement `rel` is regular (see
+/// [`regular_relative`]; `angle` and `GROUPS` as in [`regular_span_with`]).
+#[inline(always)]
+pub(crate) fn span_start<R: Real, const GROUPS: bool>(
+    oa: V3<R>,
+    qa: Q<R>,
+    rel: Relative<R>,
+    angle: bool,
+) -> SpanStart<R> {
     let inv_s = rel.s.constant(1.0) / rel.s;
     let axis = rel.v.scale(inv_s);
     let slide = axis.dot(rel.translation);
-    Some(RegularSpan {
+    let (perp, sweep) = perp_and_sweep(oa, axis, slide, rel.w * inv_s, rel.translation);
+    SpanStart {
         oa,
         qa,
         half_angle: if !angle {
@@ -132,8 +208,11 @@ pub(crate) fn regular_span_with<R: Real, const GROUPS: bool>(
         },
         s: rel.s,
         w: rel.w,
-        coefficients: coefficients(oa, qa, axis, slide, rel.w * inv_s, rel.translation),
-    })
+        axis,
+        slide,
+        perp,
+        sweep,
+    }
 }
 
 /// The pose at `t` of a regular span, or `None` when `t·θ/2` is outside the fast sine range in
@@ -218,8 +297,35 @@ pub(crate) fn coefficients<R: Real>(
     cot_half: R,
     translation: V3<R>,
 ) -> Coefficients<R> {
+    let (perp, sweep) = perp_and_sweep(oa, axis, slide, cot_half, translation);
+    complete_coefficients(qa, axis, slide, perp, sweep)
+}
+
+/// `u` and `E` (see the module documentation) of the span from origin `oa` with unit axis
+/// `axis`, slide `slide`, half-angle cotangent `cot_half` and translation `t_D`.
+#[inline(always)]
+fn perp_and_sweep<R: Real>(
+    oa: V3<R>,
+    axis: V3<R>,
+    slide: R,
+    cot_half: R,
+    translation: V3<R>,
+) -> (V3<R>, V3<R>) {
     let perp = translation - axis.scale(slide);
     let sweep = perp.scale(cot_half) + axis.cross(oa.scale(cot_half.constant(2.0)) - translation);
+    (perp, sweep)
+}
+
+/// The coefficients from the start rotation `qa`, the axis, the slide, `u` and `E`: the two
+/// products left (`n × E` and `(n, 0) q₀`).
+#[inline(always)]
+fn complete_coefficients<R: Real>(
+    qa: Q<R>,
+    axis: V3<R>,
+    slide: R,
+    perp: V3<R>,
+    sweep: V3<R>,
+) -> Coefficients<R> {
     Coefficients {
         axis,
         slide,
