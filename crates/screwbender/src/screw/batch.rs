@@ -133,7 +133,7 @@ fn start_group<'p, L: Width<N>, const N: usize>(
 /// of a group (its loads and square root) comes before the rest of the two groups started before
 /// it, so the processor finds independent work beside each group's long chain (the arctangent's
 /// division and series, then the sine and cosine), where one group at a time left it waiting:
-/// 1.24–1.29× the batch's speed with AVX-512 (see docs/speed/one-call-screw.md).
+/// 1.23–1.28× the batch's speed with AVX-512, 1.15–1.20× with AVX2 (docs/speed/one-call-screw.md).
 #[cfg(not(target_arch = "wasm32"))]
 #[inline(always)]
 #[allow(
@@ -533,8 +533,8 @@ mod tests {
     #[test]
     fn a_rare_group_in_every_stage_of_the_pipeline() {
         // Regular pairs, but for one rare pair (no rotation) or one fraction outside the fast
-        // sine range in the group at position `g`: whichever stage that group is in when the
-        // others pass, each group's screws come out as one at a time, in order.
+        // sine range at index `rare`: whichever stage its group is in when the others pass,
+        // every screw comes out as one at a time, in order.
         let p = poses();
         let regular: Vec<usize> = (0..p.len())
             .filter(|&i| {
