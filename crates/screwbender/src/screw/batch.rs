@@ -94,82 +94,117 @@ fn at_lanes<L: Width<N>, const N: usize>(span: &RegularSpan<L>, t: L) -> Option<
     kernel::regular_at(span, t)
 }
 
-/// A group of full screws after the first stage of [`screws`]' pipeline: the index of its first
-/// screw, its start poses and relative displacements (`None` when a lane is a rare case), its
-/// fractions.
+/// The native batch of full screws: three groups in flight ([`pipeline::whole_groups`]).
 #[cfg(not(target_arch = "wasm32"))]
-type Started<L, const N: usize> = (usize, Option<(V3<L>, Q<L>, kernel::Relative<L>)>, [f64; N]);
-
-/// A group after the second stage: its spans up to their sweeps.
-#[cfg(not(target_arch = "wasm32"))]
-type Spanned<L, const N: usize> = (usize, Option<kernel::SpanStart<L>>, [f64; N]);
-
-/// The first stage of [`screws`]' pipeline for the group `item(i..i + N)`: its poses loaded
-/// into lanes, their relative displacements and the decision whether the group is regular.
-#[cfg(not(target_arch = "wasm32"))]
-#[inline(always)]
 #[allow(
     clippy::manual_map,
-    reason = "a closure is not always inlined, and out of line it runs without the lanes' target features"
+    reason = "a closure is not always inlined, and out of line it loses the lanes' target features"
 )]
-fn start_group<'p, L: Width<N>, const N: usize>(
-    proto: L,
-    i: usize,
-    item: &impl Fn(usize) -> (&'p Pose, f64, &'p Pose),
-) -> Started<L, N> {
-    let group: [_; N] = group(i, (&Pose::IDENTITY, 0.0, &Pose::IDENTITY), item);
-    let (oa, qa) = load(proto, group.map(|g| g.0));
-    let (ob, qb) = load(proto, group.map(|g| g.2));
-    let relative = match kernel::regular_relative(oa, qa, ob, qb) {
-        Some(rel) => Some((oa, qa, rel)),
-        None => None,
-    };
-    (i, relative, group.map(|g| g.1))
-}
+mod pipeline {
+    use super::*;
 
-/// Appends the screws `item(0..k)` of the whole groups of `N` among `item(0..n)`; returns `k`.
-///
-/// Natively three groups are in flight, each in its own stage: in program order the first stage
-/// of a group (its loads and square root) comes before the rest of the two groups started before
-/// it, so the processor finds independent work beside each group's long chain (the arctangent's
-/// division and series, then the sine and cosine), where one group at a time left it waiting:
-/// 1.23–1.28× the batch's speed with AVX-512, 1.15–1.20× with AVX2 (docs/speed/one-call-screw.md).
-#[cfg(not(target_arch = "wasm32"))]
-#[inline(always)]
-#[allow(
-    clippy::manual_map,
-    reason = "a closure is not always inlined, and out of line it runs without the lanes' target features"
-)]
-fn whole_groups<'p, L: Width<N>, const N: usize>(
-    proto: L,
-    n: usize,
-    item: &impl Fn(usize) -> (&'p Pose, f64, &'p Pose),
-    out: &mut Vec<Pose>,
-) -> usize {
-    let mut started: Option<Started<L, N>> = None;
-    let mut spanned: Option<Spanned<L, N>> = None;
-    let mut i = 0;
-    while i + N <= n {
-        let now = start_group(proto, i, item);
-        let next = match started.take() {
-            Some(group) => Some(span_group(group)),
-            None => None,
-        };
-        if let Some(group) = spanned.take() {
+    /// A group of full screws after the first stage of [`screws`]' pipeline: the index of its first
+    /// screw, its start poses and relative displacements (`None` when a lane is a rare case), its
+    /// fractions.
+    type Started<L, const N: usize> = (usize, Option<(V3<L>, Q<L>, kernel::Relative<L>)>, [f64; N]);
+
+    /// A group after the second stage: its spans up to their sweeps.
+    type Spanned<L, const N: usize> = (usize, Option<kernel::SpanStart<L>>, [f64; N]);
+
+    /// Appends the screws `item(0..k)` of the whole groups of `N` among `item(0..n)`; returns `k`.
+    ///
+    /// Natively three groups are in flight, each in its own stage: in program order the first stage
+    /// of a group (its loads and square root) comes before the rest of the two groups started
+    /// before it, so the processor finds independent work beside each group's long chain (the
+    /// arctangent's division and series, then the sine and cosine), where one group at a time left
+    /// it waiting: 1.23–1.28× the batch's speed with AVX-512, 1.15–1.20× with AVX2
+    /// (docs/speed/one-call-screw.md).
+    #[inline(always)]
+    pub(super) fn whole_groups<'p, L: Width<N>, const N: usize>(
+        proto: L,
+        n: usize,
+        item: &impl Fn(usize) -> (&'p Pose, f64, &'p Pose),
+        out: &mut Vec<Pose>,
+    ) -> usize {
+        let mut started: Option<Started<L, N>> = None;
+        let mut spanned: Option<Spanned<L, N>> = None;
+        let mut i = 0;
+        while i + N <= n {
+            let now = start_group(proto, i, item);
+            let next = match started.take() {
+                Some(group) => Some(span_group(group)),
+                None => None,
+            };
+            if let Some(group) = spanned.take() {
+                finish_group(proto, group, item, out);
+            }
+            spanned = next;
+            started = Some(now);
+            i += N;
+        }
+        if let Some(group) = spanned {
             finish_group(proto, group, item, out);
         }
-        spanned = next;
-        started = Some(now);
-        i += N;
+        if let Some(group) = started {
+            finish_group(proto, span_group(group), item, out);
+        }
+        i
     }
-    if let Some(group) = spanned {
-        finish_group(proto, group, item, out);
+
+    /// The first stage of [`screws`]' pipeline for the group `item(i..i + N)`: its poses loaded
+    /// into lanes, their relative displacements and the decision whether the group is regular.
+    #[inline(always)]
+    fn start_group<'p, L: Width<N>, const N: usize>(
+        proto: L,
+        i: usize,
+        item: &impl Fn(usize) -> (&'p Pose, f64, &'p Pose),
+    ) -> Started<L, N> {
+        let group: [_; N] = group(i, (&Pose::IDENTITY, 0.0, &Pose::IDENTITY), item);
+        let (oa, qa) = load(proto, group.map(|g| g.0));
+        let (ob, qb) = load(proto, group.map(|g| g.2));
+        let relative = match kernel::regular_relative(oa, qa, ob, qb) {
+            Some(rel) => Some((oa, qa, rel)),
+            None => None,
+        };
+        (i, relative, group.map(|g| g.1))
     }
-    if let Some(group) = started {
-        finish_group(proto, span_group(group), item, out);
+
+    /// The second stage: the spans up to their sweeps, with their half angles.
+    #[inline(always)]
+    fn span_group<L: Width<N>, const N: usize>((i, started, t): Started<L, N>) -> Spanned<L, N> {
+        let span = match started {
+            Some((oa, qa, rel)) => Some(kernel::span_start::<L, true>(oa, qa, rel, true)),
+            None => None,
+        };
+        (i, span, t)
     }
-    i
+
+    /// The last stage: the spans completed and evaluated at their fractions, the poses appended to
+    /// `out`; a group with a rare case (or a fraction outside the fast sine range) through the
+    /// scalar route.
+    #[inline(always)]
+    fn finish_group<'p, L: Width<N>, const N: usize>(
+        proto: L,
+        (i, span, t): Spanned<L, N>,
+        item: &impl Fn(usize) -> (&'p Pose, f64, &'p Pose),
+        out: &mut Vec<Pose>,
+    ) {
+        let lanes = match span {
+            Some(span) => kernel::regular_at(&span.complete(), proto.gather(|k| t[k])),
+            None => None,
+        };
+        match lanes {
+            Some(lanes) => push(out, lanes),
+            None => (i..i + N).for_each(|i| {
+                let (a, t, b) = item(i);
+                out.push(scalar_screw(a, t, b));
+            }),
+        }
+    }
 }
+
+#[cfg(not(target_arch = "wasm32"))]
+use pipeline::whole_groups;
 
 /// [`whole_groups`] on wasm32: one group at a time ([`screw_group`]). The pipeline's stages,
 /// each with the kernel inlined, added about 6 KB gzip to the math module, whose size is
@@ -208,45 +243,6 @@ fn screw_group<L: Width<N>, const N: usize>(
     match span_lanes(proto, a, b, true).and_then(|span| at_lanes(&span, proto.gather(|k| t[k]))) {
         Some(lanes) => push(out, lanes),
         None => (0..N).for_each(|k| out.push(scalar_screw(a[k], t[k], b[k]))),
-    }
-}
-
-/// The second stage: the spans up to their sweeps, with their half angles.
-#[cfg(not(target_arch = "wasm32"))]
-#[inline(always)]
-#[allow(
-    clippy::manual_map,
-    reason = "a closure is not always inlined, and out of line it runs without the lanes' target features"
-)]
-fn span_group<L: Width<N>, const N: usize>((i, started, t): Started<L, N>) -> Spanned<L, N> {
-    let span = match started {
-        Some((oa, qa, rel)) => Some(kernel::span_start::<L, true>(oa, qa, rel, true)),
-        None => None,
-    };
-    (i, span, t)
-}
-
-/// The last stage: the spans completed and evaluated at their fractions, the poses appended to
-/// `out`; a group with a rare case (or a fraction outside the fast sine range) through the
-/// scalar route.
-#[cfg(not(target_arch = "wasm32"))]
-#[inline(always)]
-fn finish_group<'p, L: Width<N>, const N: usize>(
-    proto: L,
-    (i, span, t): Spanned<L, N>,
-    item: &impl Fn(usize) -> (&'p Pose, f64, &'p Pose),
-    out: &mut Vec<Pose>,
-) {
-    let lanes = match span {
-        Some(span) => kernel::regular_at(&span.complete(), proto.gather(|k| t[k])),
-        None => None,
-    };
-    match lanes {
-        Some(lanes) => push(out, lanes),
-        None => (i..i + N).for_each(|i| {
-            let (a, t, b) = item(i);
-            out.push(scalar_screw(a, t, b));
-        }),
     }
 }
 

@@ -104,7 +104,7 @@ pub(crate) fn regular_span<R: Real>(
 #[inline(always)]
 #[allow(
     clippy::manual_map,
-    reason = "a closure is not always inlined, and out of line it runs without the lanes' target features"
+    reason = "a closure is not always inlined, and out of line it loses the lanes' target features"
 )]
 pub(crate) fn regular_span_with<R: Real, const GROUPS: bool>(
     oa: V3<R>,
