@@ -162,7 +162,7 @@ mod pipeline {
         let group: [_; N] = group(i, (&Pose::IDENTITY, 0.0, &Pose::IDENTITY), item);
         let (oa, qa) = load(proto, group.map(|g| g.0));
         let (ob, qb) = load(proto, group.map(|g| g.2));
-        let relative = match kernel::regular_relative(oa, qa, ob, qb) {
+        let relative = match kernel::regular_relative::<L, true>(oa, qa, ob, qb) {
             Some(rel) => Some((oa, qa, rel)),
             None => None,
         };
