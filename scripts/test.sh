@@ -14,7 +14,8 @@
 # installed, CHROMEDRIVER set, Chromium at /usr/bin/chromium). A stage fails by exiting non-zero.
 # Name them NN-what.sh (e.g. 10-npm-package.sh, 20-node-tests.sh, 50-e2e.sh) to fix the order.
 #
-# The last line is `stages: N passed, M failed`.
+# At the end (and after a failing stage) a table gives each stage's wall time; the last line is
+# `stages: N passed, M failed`.
 set -euo pipefail
 # shellcheck source=scripts/lib.sh
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
@@ -23,7 +24,9 @@ cd "$REPO_ROOT"
 if [[ ${SKIP_SETUP:-0} == 1 ]]; then
   log "SKIP_SETUP=1: not checking installs"
 else
+  setup_start=$SECONDS
   ./scripts/setup.sh
+  log "setup took $((SECONDS - setup_start)) s"
 fi
 
 # wasm-bindgen-test-runner: drive Debian's Chromium through its ChromeDriver, with the extra
@@ -39,7 +42,19 @@ export WASM_BINDGEN_TEST_TIMEOUT=${WASM_BINDGEN_TEST_TIMEOUT:-120}
 export CARGO_INCREMENTAL=${CARGO_INCREMENTAL:-0}
 
 passed=0
-summary() { printf 'stages: %d passed, %d failed\n' "$passed" "$1"; }
+
+stage_names=()
+stage_secs=()
+# summary FAILED: the per-stage wall times, then the closing count line.
+summary() {
+  local i
+  header "stage times"
+  for i in "${!stage_names[@]}"; do
+    printf '%6d s  %s\n' "${stage_secs[$i]}" "${stage_names[$i]}" >&2
+  done
+  printf '%6d s  total (setup included)\n' "$SECONDS" >&2
+  printf 'stages: %d passed, %d failed\n' "$passed" "$1"
+}
 
 # stage NAME CMD...: one announced stage; stops the whole run at the first failure.
 stage() {
@@ -47,6 +62,8 @@ stage() {
   shift
   header "stage $((passed + 1)): $name"
   "$@" || rc=$?
+  stage_names+=("$name")
+  stage_secs+=($((SECONDS - start)))
   if ((rc != 0)); then
     log "stage '$name' FAILED (exit $rc) after $((SECONDS - start)) s"
     summary 1

@@ -1,3 +1,4 @@
+// e2e-backends: webgpu webgl2 (the mesh is uploaded and drawn by each renderer)
 // The paper's bunny example (preset bunny6) shows the Stanford bunny (www/vendor/bunny.obj, from
 // the npm package `bunny`; www/vendor/bunny.NOTICE) instead of the wedge that stood in: the
 // vendored mesh is the package's, and the page uploads it for the preset's object. Screenshots

@@ -3,7 +3,7 @@
 // multiple-choice answers agree with what the wasm API measures, malformed lesson files are
 // refused with a message naming step and field (page unchanged), progress survives a reload,
 // ?lesson= and ?tour=1 open by URL. Screenshots of each lesson go to artifacts/e2e-<backend>/lessons/
-// (with DOCS_SHOTS=1 to docs/lessons/, the committed copies).
+// (with DOCS_SHOTS=1 to docs/screenshots/lessons/, the committed copies).
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
@@ -409,7 +409,7 @@ test('axe finds no serious or critical violation in the lesson menu, card and ex
   }
 });
 
-test('screenshots of each lesson (docs/lessons/ with DOCS_SHOTS=1)', async () => {
+test('screenshots of each lesson (docs/screenshots/lessons/ with DOCS_SHOTS=1)', async () => {
   fs.mkdirSync(SHOTS, { recursive: true });
   // The refused URLs of an earlier test leave their message up for 9 s: dismissed, as a reader
   // would, so that it is not in the pictures.

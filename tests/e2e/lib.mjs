@@ -15,13 +15,13 @@ export const BACKEND = process.env.E2E_BACKEND ?? 'webgpu';
 export const EXPECTED_BACKEND = BACKEND === 'webgpu' ? 'WebGPU' : 'WebGL2';
 
 /**
- * Where a screenshot named `name` (a path relative to docs/, e.g. 'timeline-phone.png' or
+ * Where a screenshot named `name` (a path relative to docs/screenshots/, e.g. 'timeline-phone.png' or
  * 'lessons/01.png') goes: artifacts/e2e-<backend>/ normally, so that a test run never changes a
- * committed file; docs/ itself with DOCS_SHOTS=1, to refresh the committed copies. The folder is
+ * committed file; docs/screenshots/ itself with DOCS_SHOTS=1, to refresh the committed copies. The folder is
  * created.
  */
 export function shotPath(name) {
-  const dir = process.env.DOCS_SHOTS === '1' ? path.join(ROOT, 'docs') : path.join(ROOT, `artifacts/e2e-${BACKEND}`);
+  const dir = process.env.DOCS_SHOTS === '1' ? path.join(ROOT, 'docs/screenshots') : path.join(ROOT, `artifacts/e2e-${BACKEND}`);
   const file = path.join(dir, name);
   fs.mkdirSync(path.dirname(file), { recursive: true });
   return file;

@@ -1,3 +1,4 @@
+// e2e-backends: webgpu webgl2 (PNG and video are read back from each backend's canvas)
 // End-to-end: pictures out of the playground (editor/media.js) — a real PNG download at 1× and
 // 2× (size, non-blank pixels, a transparent background), a real WebM video of one cycle (EBML
 // header, duration, frames), cancelling a recording, a browser without a video encoder — and the view

@@ -1,3 +1,4 @@
+// e2e-backends: webgpu webgl2 (pixels of every preset, the backend the page reports)
 // End-to-end tests of the playground in headless Chromium (playwright-core + Debian chromium).
 //
 //   E2E_BACKEND=webgpu|webgl2 node --test tests/e2e/   (scripts/test.d/40-e2e.sh runs both)

@@ -1,3 +1,4 @@
+// e2e-backends: webgpu webgl2 (figures render on each backend; one device per page on WebGPU)
 // The embeddable figure <screw-bender> (www/js/element/screw-bender.js) on the course example
 // page (www/examples/course.html) and on pages built around it: figures render and differ,
 // read-only figures ignore drags, an editable one emits `change`, the wheel scrolls the page
