@@ -39,7 +39,7 @@ fuzz_target!(|input: Input| {
         _ => Scheme::J(input.s),
     };
     let rules = if input.split {
-        Rules::SplitTweak
+        Rules::SplitThenTweak
     } else {
         Rules::Direct
     };

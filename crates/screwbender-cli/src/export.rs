@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use glam::DVec3;
 use screwbender::mesh::Mesh;
 use screwbender::{
-    export_motion, scenes, ExportFormat, ExportSamples, ExportSettings, SamplingMode,
+    export_motion, presets, ExportFormat, ExportSamples, ExportSettings, SamplingMode,
     DEFAULT_TOLERANCE,
 };
 
@@ -110,7 +110,7 @@ pub fn export(args: &[String]) -> Result<Output, Failure> {
     let mesh = doc
         .name
         .as_deref()
-        .and_then(scenes::scene)
+        .and_then(presets::preset)
         .map(|sc| Mesh::from_shape(&sc.shape));
     let out = o.output.as_deref();
     let (gltf_path, bin_path) = gltf_paths(out.unwrap_or("motion"));

@@ -15,7 +15,9 @@ mod output;
 use std::io::{self, Write};
 use std::process::ExitCode;
 
-use screwbender::{scenes, Motion, MotionDocument, Polyscrew, Pose, Screw, ScrewBender, ScrewKind};
+use screwbender::{
+    presets, Motion, MotionDocument, Polyscrew, Pose, Screw, ScrewBender, ScrewKind,
+};
 use serde_json::{json, Value};
 
 use args::{number, ArgReader, SubdivisionArgs};
@@ -298,13 +300,13 @@ fn preset(args: &[String]) -> Result<String, Failure> {
     match args {
         [] => {
             let mut s = String::new();
-            for sc in scenes::scenes() {
+            for sc in presets::all() {
                 s += &format!("{:<18} {:<4} {}\n", sc.id, sc.label, sc.description);
             }
             Ok(s)
         }
         [id] => {
-            let sc = scenes::scene(id).ok_or_else(|| {
+            let sc = presets::preset(id).ok_or_else(|| {
                 Failure(format!(
                     "unknown preset '{id}' (run 'screwbender preset' for the list)"
                 ))

@@ -333,7 +333,7 @@ fn unknown_option_values_are_refused_and_named() {
         e.to_string(),
         "rules: unknown value 'v3' (expected direct, split)"
     );
-    let e = Subdivision::new(Scheme::J(0.3), Rules::SplitTweak, 2)
+    let e = Subdivision::new(Scheme::J(0.3), Rules::SplitThenTweak, 2)
         .validate()
         .unwrap_err();
     assert_eq!(e.path(), "rules");

@@ -35,7 +35,9 @@ fn subdivide_reads_stdin_and_writes_a_document() {
     let lib =
         screwbender::Subdivision::new(screwbender::Scheme::BSpline, screwbender::Rules::Direct, 2)
             .apply(
-                &screwbender::scenes::scene("l_cycle_rotated").unwrap().poses,
+                &screwbender::presets::preset("l_cycle_rotated")
+                    .unwrap()
+                    .poses,
                 true,
             )
             .unwrap();

@@ -8,12 +8,12 @@ mod support;
 use screwbender::methods::{
     Continuity, EndCondition, RationalMotion, ReferenceTriangle, TriangleSample,
 };
-use screwbender::scenes;
+use screwbender::presets;
 use support::run;
 
 /// The triangle samples of the scene `triangle7` (the paper's example) at `t = 0, 1, 2, …`.
 fn triangle7() -> Vec<TriangleSample> {
-    let s = scenes::scene("triangle7").unwrap();
+    let s = presets::preset("triangle7").unwrap();
     s.poses
         .iter()
         .enumerate()
@@ -142,7 +142,7 @@ fn poses_at_the_documents_times_match_the_library() {
     let doc = run(&["preset", "helix_open"], "").stdout;
     let out = run(&["rational", "--end", "19"], &doc);
     assert_eq!(out.code, 0, "{}", out.stderr);
-    let s = scenes::scene("helix_open").unwrap();
+    let s = presets::preset("helix_open").unwrap();
     let times: Vec<f64> = (0..s.poses.len()).map(|i| i as f64).collect();
     let lib = RationalMotion::from_poses(
         &s.poses,

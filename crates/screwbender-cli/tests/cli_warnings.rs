@@ -4,7 +4,7 @@
 
 mod support;
 
-use screwbender::{scenes, MotionDocument, Rules, Scheme, Subdivision};
+use screwbender::{presets, MotionDocument, Rules, Scheme, Subdivision};
 use support::run;
 
 fn preset(id: &str) -> String {
@@ -45,8 +45,8 @@ fn split_rules_on_the_four_pose_circle_warn_per_span_and_keep_stdout() {
     }
     // Standard output is the library's result, warnings or not.
     let doc = MotionDocument::from_json(&split.stdout).unwrap();
-    let lib = Subdivision::new(Scheme::Jarek, Rules::SplitTweak, 2)
-        .apply(&scenes::scene("circle4").unwrap().poses, true)
+    let lib = Subdivision::new(Scheme::Jarek, Rules::SplitThenTweak, 2)
+        .apply(&presets::preset("circle4").unwrap().poses, true)
         .unwrap();
     assert_eq!(doc.poses.len(), lib.len());
     for (a, b) in doc.poses.iter().zip(&lib) {

@@ -203,7 +203,7 @@ impl MotionHandle {
         let named = match (&input.object, &doc.name) {
             (Some(name), _) => Some(Mesh::named(name).map_err(|e| e.within("object"))?),
             (None, Some(name)) => {
-                screwbender::scenes::scene(name).map(|s| Mesh::from_shape(&s.shape))
+                screwbender::presets::preset(name).map(|s| Mesh::from_shape(&s.shape))
             }
             (None, None) => None,
         };

@@ -3,10 +3,10 @@
 //! * `MotionHandle` — the JS class `Motion`: an editable motion document with subdivision
 //!   options, and the smooth motion it defines (poses, samples, kinematics, span screws).
 //! * Free functions: `screw`, `screwPoses`, `screwPairs`, `screwInfo`, `posesToMatrices`,
-//!   `scenes`, `limits`, `version`, `importMotionFile` (feature `files`; so is
+//!   `presets`, `limits`, `version`, `importMotionFile` (feature `files`; so is
 //!   `Motion.exportFile`), `methods` (feature `methods`: the comparison methods; see `Motion.methodSample`,
 //!   `compareMethods`, `quaternionSpline`); `Motion.keyframeTracks` (three.js keyframe arrays,
-//!   feature `tracks`); the teaching views' `subdividePolygon`, `polygonScenes`, `spanScrewsOf`,
+//!   feature `tracks`); the teaching views' `subdividePolygon`, `polygonPresets`, `spanScrewsOf`,
 //!   `splitTweakStep`, `subdivideDecoupled`, `compareFrames` (feature `teaching`).
 //!
 //! Bulk results are typed arrays with fixed layouts (see `convert`): 7 `f64` per pose
@@ -29,7 +29,7 @@ mod files;
 mod methods;
 mod motion;
 pub mod options;
-mod scenes;
+mod presets;
 mod screw;
 #[cfg(feature = "teaching")]
 mod teaching;
@@ -43,12 +43,12 @@ pub use files::import_motion_file_js;
 #[cfg(feature = "methods")]
 pub use methods::methods;
 pub use motion::MotionHandle;
-pub use scenes::scenes;
+pub use presets::{presets, scenes_alias};
 pub use screw::{poses_to_matrices_js, screw, screw_info, screw_pairs, screw_poses};
 #[cfg(feature = "teaching")]
 pub use teaching::{
-    compare_frames_js, polygon_scenes, span_screws_of, split_tweak_step_js, subdivide_decoupled_js,
-    subdivide_polygon,
+    compare_frames_js, polygon_presets, polygon_scenes_alias, span_screws_of, split_tweak_step_js,
+    subdivide_decoupled_js, subdivide_polygon,
 };
 
 use convert::{to_js, KINEMATICS_STRIDE, MATRIX_STRIDE, POSE_STRIDE};

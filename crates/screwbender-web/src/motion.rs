@@ -17,7 +17,7 @@ use super::convert::{
     KINEMATICS_STRIDE,
 };
 use super::options::{self, default_subdivision};
-use super::scenes::find_scene;
+use super::presets::find_preset;
 use screwbender::{
     screw, Error, ErrorKind, Motion, MotionDocument, Polyscrew, Pose, Rules, ScrewBender,
     Subdivision, SubdivisionBuffers, MAX_REFINED_POSES,
@@ -217,17 +217,23 @@ impl MotionHandle {
         Ok(MotionHandle::from_state(State { doc, subdivision })?)
     }
 
-    /// The scene preset `id` (see `scenes()`), with the scene's scheme and levels and the direct
-    /// rules; the document's name is the scene id.
+    /// The preset `id` (see `presets()`), with the preset's scheme and levels and the direct
+    /// rules; the document's name is the preset id.
+    #[wasm_bindgen(js_name = fromPreset)]
+    pub fn from_preset(
+        #[wasm_bindgen(unchecked_param_type = "PresetId")] id: JsValue,
+    ) -> Result<MotionHandle, JsError> {
+        Ok(MotionHandle::preset_named(&id, "preset")?)
+    }
+
+    /// Former name of `Motion.fromPreset`, kept for one release (its errors name `scene`).
+    ///
+    /// @deprecated Renamed to `Motion.fromPreset`.
     #[wasm_bindgen(js_name = fromScene)]
     pub fn from_scene(
-        #[wasm_bindgen(unchecked_param_type = "SceneId")] id: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "PresetId")] id: JsValue,
     ) -> Result<MotionHandle, JsError> {
-        let scene = find_scene(&string(&id, "scene")?)?;
-        let mut doc = MotionDocument::new(scene.poses, scene.closed);
-        doc.name = Some(scene.id.to_string());
-        let subdivision = Subdivision::new(scene.scheme, Rules::Direct, scene.levels);
-        Ok(MotionHandle::from_state(State { doc, subdivision })?)
+        Ok(MotionHandle::preset_named(&id, "scene")?)
     }
 
     // ---- the document ------------------------------------------------------------------------
@@ -728,4 +734,15 @@ pub(crate) fn batch(value: &JsValue, at: &str) -> Result<Vec<f64>, Error> {
         return Err(Error::new(format!("{at}[{k}]"), ErrorKind::NonFinite));
     }
     Ok(values)
+}
+
+impl MotionHandle {
+    /// The preset whose id is the string `id`; errors name `path`.
+    fn preset_named(id: &JsValue, path: &'static str) -> Result<MotionHandle, Error> {
+        let preset = find_preset(&string(id, path)?, path)?;
+        let mut doc = MotionDocument::new(preset.poses, preset.closed);
+        doc.name = Some(preset.id.to_string());
+        let subdivision = Subdivision::new(preset.scheme, Rules::Direct, preset.levels);
+        MotionHandle::from_state(State { doc, subdivision })
+    }
 }

@@ -50,7 +50,7 @@ pub(crate) fn scheme_name(scheme: &Scheme) -> &'static str {
 pub(crate) fn rules_name(rules: &Rules) -> &'static str {
     match rules {
         Rules::Direct => "direct",
-        Rules::SplitTweak => "split",
+        Rules::SplitThenTweak => "split",
     }
 }
 

@@ -17,7 +17,7 @@ use super::convert::{
     to_js, ScrewInfo,
 };
 use super::options::{self, default_subdivision};
-use screwbender::scenes;
+use screwbender::presets;
 use screwbender::{
     compare_frames, split_tweak_levels, subdivide_decoupled, Error, ErrorKind, Polyscrew,
     Subdivision, MAX_REFINED_POSES,
@@ -31,13 +31,15 @@ pub const POINT3_STRIDE: usize = 3;
 
 #[wasm_bindgen(typescript_custom_section)]
 const TS_TEACHING: &'static str = r#"
-/** A planar polygon preset (docs/math/scenes.md §2.4). */
-export interface PolygonSceneInfo {
+/** A planar polygon preset (docs/math/presets.md §2.4). */
+export interface PolygonPresetInfo {
   id: 'polygon_l' | 'polygon_star' | 'polygon_split_tweak';
   figure: string;
   /** Vertices `[x, y]`, a cycle. */
   points: [number, number][];
 }
+/** @deprecated Renamed to `PolygonPresetInfo`. */
+export type PolygonSceneInfo = PolygonPresetInfo;
 
 /** One subdivision step taken apart (see `splitTweakStep`). Poses: 7 numbers each. */
 export interface SplitTweakStep {
@@ -146,17 +148,17 @@ fn points3_arg(value: &JsValue, at: &str) -> Result<Vec<DVec3>, Error> {
         .collect())
 }
 
-/// The planar polygon presets of scene A4 (paper Figs. 2–3): `polygon_l`, `polygon_star`,
+/// The planar polygon presets of A4 (paper Figs. 2–3): `polygon_l`, `polygon_star`,
 /// `polygon_split_tweak`.
-#[wasm_bindgen(js_name = polygonScenes, unchecked_return_type = "PolygonSceneInfo[]")]
-pub fn polygon_scenes() -> Result<JsValue, JsError> {
+#[wasm_bindgen(js_name = polygonPresets, unchecked_return_type = "PolygonPresetInfo[]")]
+pub fn polygon_presets() -> Result<JsValue, JsError> {
     #[derive(Serialize)]
     struct Info {
         id: &'static str,
         figure: &'static str,
         points: Vec<[f64; 2]>,
     }
-    let list: Vec<Info> = scenes::polygon_scenes()
+    let list: Vec<Info> = presets::polygon_presets()
         .into_iter()
         .map(|p| Info {
             id: p.id,
@@ -165,6 +167,14 @@ pub fn polygon_scenes() -> Result<JsValue, JsError> {
         })
         .collect();
     to_js(&list)
+}
+
+/// Former name of `polygonPresets()`, kept for one release.
+///
+/// @deprecated Renamed to `polygonPresets()`.
+#[wasm_bindgen(js_name = polygonScenes, unchecked_return_type = "PolygonPresetInfo[]")]
+pub fn polygon_scenes_alias() -> Result<JsValue, JsError> {
+    polygon_presets()
 }
 
 /// Subdivides a planar polygon with the point versions of the rules (docs/math/point-rules.md; the same code as the

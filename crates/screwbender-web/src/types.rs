@@ -3,7 +3,7 @@
 //! `unchecked_return_type`.
 //!
 //! Keep them in step with `convert.rs` (pose and document objects, `ScrewInfo`), `options.rs`
-//! (`SubdivisionOptions`) and `scenes.rs` (`SceneInfo`, `Shape`); `tests/js/api.test.mjs`
+//! (`SubdivisionOptions`) and `presets.rs` (`PresetInfo`, `Shape`); `tests/js/api.test.mjs`
 //! checks the shapes at run time.
 
 use wasm_bindgen::prelude::*;
@@ -101,8 +101,8 @@ export type ScrewInfo =
       pitch: number;
     };
 
-/** Ids of the scene presets (see `scenes()`). */
-export type SceneId =
+/** Ids of the presets (see `presets()`). */
+export type PresetId =
   | 'l_cycle_parallel'
   | 'l_cycle_rotated'
   | 'l_cycle_edit'
@@ -118,7 +118,7 @@ export type SceneId =
   | 'rb_ibeam7'
   | 'rb_molecule4';
 
-/** The object drawn at each pose of a scene (scene units, local frame). */
+/** The object drawn at each pose of a preset (scene units, local frame). */
 export type Shape =
   | { kind: 'bar'; length: number; section: number }
   | { kind: 'block'; size: Vec3; base: boolean }
@@ -132,9 +132,9 @@ export type Shape =
   | { kind: 'iBeam'; flange: Vec3; web: number; webSection: [number, number] }
   | { kind: 'molecule'; ring: number; atom: number };
 
-/** A scene preset as listed by `scenes()`. */
-export interface SceneInfo {
-  id: SceneId;
+/** A preset as listed by `presets()`. */
+export interface PresetInfo {
+  id: PresetId;
   label: string;
   figure: string;
   description: string;
@@ -146,6 +146,11 @@ export interface SceneInfo {
   /** One shape per control pose for the morph scene, else empty. */
   morphShapes: Shape[];
 }
+
+/** @deprecated Renamed to `PresetId`. */
+export type SceneId = PresetId;
+/** @deprecated Renamed to `PresetInfo`. */
+export type SceneInfo = PresetInfo;
 
 /** Size limits of the API. */
 export interface Limits {

@@ -9,8 +9,8 @@ mod support;
 
 use js_sys::{Array, Float64Array, Uint32Array, Uint8Array};
 use screwbender_web::{
-    compare_frames_js, polygon_scenes, span_screws_of, split_tweak_step_js, subdivide_decoupled_js,
-    subdivide_polygon,
+    compare_frames_js, polygon_presets, span_screws_of, split_tweak_step_js,
+    subdivide_decoupled_js, subdivide_polygon,
 };
 use wasm_bindgen::{JsError, JsValue};
 use wasm_bindgen_test::*;
@@ -21,7 +21,7 @@ wasm_bindgen_test_configure!(run_in_browser);
 
 /// The L cycle of scene A2 as 7 numbers per pose (rotations about z).
 fn l_cycle() -> JsValue {
-    let scene = screwbender::scenes::scene("l_cycle_rotated").expect("scene A2");
+    let scene = screwbender::presets::preset("l_cycle_rotated").expect("scene A2");
     let mut data = Vec::new();
     for p in &scene.poses {
         data.extend_from_slice(&p.origin.to_array());
@@ -35,7 +35,7 @@ const L: [f64; 12] = [0.0, 0.0, 6.0, 0.0, 6.0, 2.0, 2.0, 2.0, 2.0, 6.0, 0.0, 6.0
 
 #[wasm_bindgen_test]
 fn polygon_presets_and_the_l_polygon_vectors() {
-    let list = Array::from(&polygon_scenes().unwrap());
+    let list = Array::from(&polygon_presets().unwrap());
     assert_eq!(list.length(), 3);
     assert_eq!(get(&list.get(0), "id").as_string().unwrap(), "polygon_l");
     let points: JsValue = Float64Array::from(&L[..]).into();

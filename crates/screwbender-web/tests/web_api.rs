@@ -79,7 +79,7 @@ fn typed_array_layouts() {
 
 #[wasm_bindgen_test]
 fn circle_is_kept_exactly() {
-    let m = MotionHandle::from_scene("circle4".into()).unwrap();
+    let m = MotionHandle::from_preset("circle4".into()).unwrap();
     for u in [0.3, 1.5, 3.9] {
         let p = m.pose_at(u.into()).unwrap();
         let a = std::f64::consts::FRAC_PI_2 * u;
@@ -207,11 +207,11 @@ fn bad_input_is_rejected_and_changes_nothing() {
 
 #[wasm_bindgen_test]
 fn scenes_are_listed_and_loadable() {
-    let list = Array::from(&screwbender_web::scenes().unwrap());
-    assert_eq!(list.length() as usize, screwbender::scenes::scenes().len());
+    let list = Array::from(&screwbender_web::presets().unwrap());
+    assert_eq!(list.length() as usize, screwbender::presets::all().len());
     for s in list.iter() {
         let id = get(&s, "id");
-        let m = MotionHandle::from_scene(id).unwrap();
+        let m = MotionHandle::from_preset(id).unwrap();
         assert_eq!(
             m.pose_count().unwrap(),
             get(&s, "poseCount").as_f64().unwrap() as usize

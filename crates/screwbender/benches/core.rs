@@ -469,7 +469,7 @@ fn subdivision(c: &mut Criterion) {
     report_large_subdivisions();
     let poses = cycle(&mut Rng(7), 32);
     let mut g = c.benchmark_group("subdivide 32 poses x 6 levels");
-    for rules in [Rules::Direct, Rules::SplitTweak] {
+    for rules in [Rules::Direct, Rules::SplitThenTweak] {
         for scheme in [Scheme::BSpline, Scheme::FourPoint, Scheme::Jarek] {
             let s = Subdivision::new(scheme, rules, 6);
             // Each result is dropped before the next subdivision, as in an interactive loop.

@@ -18,9 +18,9 @@ mod native {
     };
     use screwbender::{Motion, Pose};
 
-    /// Scene C1's keyframes (`scenes.md`), pose `i` at `t = i`.
+    /// Scene C1's keyframes (`presets.md`), pose `i` at `t = i`.
     fn sphere7() -> (Vec<f64>, Vec<DQuat>) {
-        let scene = screwbender::scenes::scene("rb_sphere7").expect("scene C1");
+        let scene = screwbender::presets::preset("rb_sphere7").expect("scene C1");
         let q: Vec<DQuat> = scene.poses.iter().map(|p| p.rotation).collect();
         ((0..q.len()).map(|i| i as f64).collect(), q)
     }
@@ -48,7 +48,7 @@ mod native {
     }
 
     fn l_cycle_rotated() -> Vec<Pose> {
-        screwbender::scenes::scene("l_cycle_rotated")
+        screwbender::presets::preset("l_cycle_rotated")
             .expect("preset A2 exists")
             .poses
     }

@@ -7,12 +7,12 @@
 //! versions, and the J_s family that contains them.
 //!
 //! ```
-//! use screwbender::{scenes, Motion, Rules, Scheme, ScrewBender, Subdivision};
+//! use screwbender::{presets, Closure, Motion, Rules, Scheme, ScrewBender, Subdivision};
 //!
-//! let scene = scenes::scene("circle4").unwrap();
+//! let preset = presets::preset("circle4").unwrap();
 //! let smooth = ScrewBender::new(
-//!     scene.poses.clone(),
-//!     true,
+//!     preset.poses.clone(),
+//!     Closure::Closed,
 //!     Subdivision::new(Scheme::FourPoint, Rules::Direct, 5),
 //! )?;
 //! // 4 control poses × 2⁵ = 128 refined poses; the screw schemes keep the circle exactly.
@@ -22,7 +22,7 @@
 //!     assert!((radius - 3.0).abs() < 1e-12);
 //! }
 //! // 4-point interpolates: control pose 1 sits at u = 1.
-//! assert!(smooth.pose_at(1.0).approx_eq(&scene.poses[1], 1e-12));
+//! assert!(smooth.pose_at(1.0).approx_eq(&preset.poses[1], 1e-12));
 //! # Ok::<(), screwbender::Error>(())
 //! ```
 //!
@@ -57,7 +57,7 @@
 //! * Point rules (cubic B-spline, Dyn–Levin–Gregory 4-point, Jarek): paper §2 / Figs. 2–3; on
 //!   points through the same generic code ([`Blend`]).
 //! * Direct rules [`Rules::Direct`]: revised paper (V2) §4, "ScrewBender".
-//! * Split-then-tweak rules [`Rules::SplitTweak`]: first version (V1) §4, with the 4-point and
+//! * Split-then-tweak rules [`Rules::SplitThenTweak`]: first version (V1) §4, with the 4-point and
 //!   Jarek new-pose tweaks' argument order corrected (`screw(m, 5/4, L_c)`, not
 //!   `screw(L_c, 5/4, m)`).
 //! * The J_s family [`Scheme::J`]: Rossignac & Schaefer's J-splines, applied to screws.
@@ -79,7 +79,7 @@
 //! The vocabulary types sit at the top ([`Pose`], [`Motion`], [`Polyscrew`], [`ScrewBender`],
 //! [`Timing`], [`Error`]); below them, folders by kind: `lanes` (SIMD lanes and their
 //! backends), `screw` (construction, kernel, batches), `subdivision` (rules, schemes, blends,
-//! the teaching variants), `formats` (JSON, CSV, glTF, sampling), [`scenes`] (presets, meshes,
+//! the teaching variants), `formats` (JSON, CSV, glTF, sampling), [`presets`] (the named motions, meshes,
 //! morph) and [`methods`] (the comparison methods). Every public item is re-exported here, flat.
 //! This crate has no WebAssembly or GPU code: the JavaScript API and the renderer are the crate
 //! `screwbender-web`, the command-line tool `screwbender-cli`.
@@ -100,6 +100,7 @@
 //! identical poses, pure translations, angles down to the last bit and half turns (with a
 //! deterministic tie-break, see [`Screw`]).
 
+mod closure;
 mod error;
 mod formats;
 mod lanes;
@@ -107,19 +108,20 @@ pub mod methods;
 mod motion;
 mod polyscrew;
 mod pose;
-pub mod scenes;
+pub mod presets;
 mod screw;
 mod screwbender;
 mod subdivision;
 mod timing;
 
-pub use scenes::mesh;
+pub use presets::mesh;
 
 /// The README's Rust examples, compiled and run as doctests.
 #[cfg(doctest)]
 #[doc = include_str!("../../../README.md")]
 struct ReadmeDoctests;
 
+pub use closure::Closure;
 pub use error::{Error, ErrorKind};
 pub use formats::csv::{
     parse_csv_poses, poses_csv, trajectory_csv, write_poses_csv, write_trajectory_csv,
@@ -154,12 +156,38 @@ pub use pose::{
     quat_from_wxyz, quat_to_wxyz, Pose, MAX_COORDINATE, ORTHONORMAL_TOLERANCE,
     UNIT_QUATERNION_TOLERANCE,
 };
-pub use scenes::morph::{morph_mesh, morph_weights, MORPH_RESOLUTION};
+pub use presets::morph::{morph_mesh, morph_weights, MORPH_RESOLUTION};
 pub use screw::{
     screw, screw_paper, BasisPair, PaperScrew, Screw, ScrewKind, ScrewParameters, ANGLE_EPSILON,
     HALF_TURN_EPSILON, LENGTH_EPSILON, PAPER_CROSS_EPSILON,
 };
 pub use screwbender::ScrewBender;
+
+/// Former name of [`presets`], kept for one release.
+#[deprecated(
+    since = "0.2.0",
+    note = "renamed to `presets` (`presets::preset`, `presets::all`)"
+)]
+pub mod scenes {
+    pub use crate::presets::{
+        mesh, object_shape, PolygonPreset as PolygonScene, Preset as Scene, Shape,
+    };
+
+    /// Former name of [`crate::presets::preset`].
+    pub fn scene(id: &str) -> Option<Scene> {
+        crate::presets::preset(id)
+    }
+
+    /// Former name of [`crate::presets::all`].
+    pub fn scenes() -> Vec<Scene> {
+        crate::presets::all()
+    }
+
+    /// Former name of [`crate::presets::polygon_presets`].
+    pub fn polygon_scenes() -> Vec<PolygonScene> {
+        crate::presets::polygon_presets()
+    }
+}
 pub use subdivision::blend::Blend;
 pub use subdivision::decoupled::{
     compare_frames, move_local_origin, subdivide_decoupled, DecoupledPose, FrameComparison,

@@ -62,8 +62,15 @@ pub trait Motion {
 
     /// Analytic kinematics of the body point with local coordinates `local` at `u`, when the
     /// method has them in closed form. At a knot the right-hand (next piece's) value is returned.
-    fn kinematics(&self, _u: f64, _local: DVec3) -> Option<Kinematics> {
+    fn kinematics_at(&self, _u: f64, _local: DVec3) -> Option<Kinematics> {
         None
+    }
+
+    /// Former name of [`Motion::kinematics_at`], kept for one release (every API of the project
+    /// calls it `kinematics_at`).
+    #[deprecated(since = "0.2.0", note = "renamed to `kinematics_at`")]
+    fn kinematics(&self, u: f64, local: DVec3) -> Option<Kinematics> {
+        self.kinematics_at(u, local)
     }
 
     /// `count` poses at uniformly spaced parameters: over `[start, end)` for a closed motion (the

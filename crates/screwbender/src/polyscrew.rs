@@ -4,6 +4,7 @@ use std::sync::{Mutex, OnceLock, PoisonError};
 
 use glam::DVec3;
 
+use crate::closure::Closure;
 use crate::error::{Error, ErrorKind};
 use crate::motion::{Kinematics, Motion};
 use crate::pose::{unit_to_rounding, Pose, UNIT_QUATERNION_TOLERANCE};
@@ -67,8 +68,8 @@ impl Polyscrew {
     ///
     /// Needs at least 2 poses, all finite with unit rotations (within
     /// [`UNIT_QUATERNION_TOLERANCE`]; they are renormalised).
-    pub fn new(poses: Vec<Pose>, closed: bool) -> Result<Polyscrew, Error> {
-        Polyscrew::with_span_length(poses, closed, 1.0)
+    pub fn new(poses: Vec<Pose>, closure: impl Into<Closure>) -> Result<Polyscrew, Error> {
+        Polyscrew::with_span_length(poses, closure.into().is_closed(), 1.0)
     }
 
     /// A polyscrew whose spans each cover `span_length` coarse units (must be positive and
@@ -348,7 +349,7 @@ impl Motion for Polyscrew {
             .collect()
     }
 
-    fn kinematics(&self, u: f64, local: DVec3) -> Option<Kinematics> {
+    fn kinematics_at(&self, u: f64, local: DVec3) -> Option<Kinematics> {
         Some(self.point_kinematics(u, local))
     }
 }

@@ -2,6 +2,7 @@
 
 use glam::DVec3;
 
+use crate::closure::Closure;
 use crate::error::{Error, ErrorKind};
 use crate::motion::{Kinematics, Motion};
 use crate::polyscrew::{check_poses, checked_pose, Polyscrew};
@@ -24,9 +25,10 @@ impl ScrewBender {
     /// Subdivides `control` (at least 2 poses) with `subdivision`.
     pub fn new(
         control: Vec<Pose>,
-        closed: bool,
+        closure: impl Into<Closure>,
         subdivision: Subdivision,
     ) -> Result<ScrewBender, Error> {
+        let closed = closure.into().is_closed();
         // Validate the control poses first so errors name them, not refined poses.
         let control = checked_control(control)?;
         let poses = subdivision.apply(&control, closed)?;
@@ -173,7 +175,7 @@ impl Motion for ScrewBender {
         (0..self.control.len()).map(|i| i as f64).collect()
     }
 
-    fn kinematics(&self, u: f64, local: DVec3) -> Option<Kinematics> {
+    fn kinematics_at(&self, u: f64, local: DVec3) -> Option<Kinematics> {
         Some(self.refined.point_kinematics(u, local))
     }
 }

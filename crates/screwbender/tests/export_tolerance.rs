@@ -14,8 +14,8 @@ mod support;
 use glam::{DMat3, DQuat, DVec3};
 use screwbender::mesh::Mesh;
 use screwbender::{
-    export_motion, mesh_radius, scenes, ExportFormat, ExportSettings, Motion, MotionDocument, Pose,
-    Rules, SamplingMode, ScrewBender, Subdivision, Timing, DEFAULT_TOLERANCE,
+    export_motion, mesh_radius, presets, ExportFormat, ExportSettings, Motion, MotionDocument,
+    Pose, Rules, SamplingMode, ScrewBender, Subdivision, Timing, DEFAULT_TOLERANCE,
 };
 
 /// Allowance on top of the tolerance for the `f32` storage of glTF keyframes: value rounding
@@ -106,7 +106,7 @@ fn vertices(mesh: &Mesh) -> Vec<DVec3> {
 #[test]
 fn every_preset_uniform_and_timed_meets_the_tolerance_at_its_vertices() {
     let mut report = Vec::new();
-    for scene in scenes::scenes() {
+    for scene in presets::all() {
         let mesh = Mesh::from_shape(&scene.shape);
         let verts = vertices(&mesh);
         let sub = Subdivision::new(scene.scheme, Rules::Direct, scene.levels);
@@ -168,7 +168,7 @@ fn every_preset_uniform_and_timed_meets_the_tolerance_at_its_vertices() {
 
 #[test]
 fn a_csv_trajectory_meets_the_tolerance_at_its_point() {
-    let scene = scenes::scene("l_cycle_rotated").unwrap();
+    let scene = presets::preset("l_cycle_rotated").unwrap();
     let sub = Subdivision::new(scene.scheme, Rules::Direct, scene.levels);
     let motion = ScrewBender::new(scene.poses.clone(), scene.closed, sub).unwrap();
     let mut doc = MotionDocument::new(scene.poses.clone(), scene.closed);
@@ -216,7 +216,7 @@ fn a_csv_trajectory_meets_the_tolerance_at_its_point() {
 
 #[test]
 fn key_times_survive_a_glb_round_trip_and_uniform_files_stay_untimed() {
-    let scene = scenes::scene("l_cycle_rotated").unwrap();
+    let scene = presets::preset("l_cycle_rotated").unwrap();
     let sub = Subdivision::new(scene.scheme, Rules::Direct, 3);
     let mut doc = MotionDocument::new(scene.poses.clone(), scene.closed);
     for times in [None, Some(vec![0.5, 1.5, 3.25, 4.0, 6.5, 7.0, 9.5])] {

@@ -9,7 +9,7 @@ use wasm_bindgen_test::wasm_bindgen_test as test;
 
 use glam::DVec3;
 use screwbender::{
-    compare_frames, move_local_origin, scenes, subdivide_decoupled, Pose, Rules, Scheme,
+    compare_frames, move_local_origin, presets, subdivide_decoupled, Pose, Rules, Scheme,
     Subdivision,
 };
 
@@ -30,7 +30,7 @@ fn body_points() -> Vec<DVec3> {
 fn screw_trajectories_ignore_the_local_origin_decoupled_do_not() {
     // A2 (the rotated L cycle) and A9.
     for id in ["l_cycle_rotated", "circle4"] {
-        let scene = scenes::scene(id).unwrap();
+        let scene = presets::preset(id).unwrap();
         for scheme in [Scheme::BSpline, Scheme::FourPoint, Scheme::Jarek] {
             let sub = Subdivision::new(scheme, Rules::Direct, 4);
             for c in [
@@ -58,7 +58,7 @@ fn screw_trajectories_ignore_the_local_origin_decoupled_do_not() {
 
 #[test]
 fn zero_offset_changes_nothing() {
-    let poses = scenes::scene("circle4").unwrap().poses;
+    let poses = presets::preset("circle4").unwrap().poses;
     let sub = Subdivision::new(Scheme::FourPoint, Rules::Direct, 3);
     let cmp = compare_frames(&poses, true, &sub, DVec3::ZERO, &body_points()).unwrap();
     assert_eq!(cmp.screw_deviation, 0.0);
@@ -67,7 +67,7 @@ fn zero_offset_changes_nothing() {
 
 #[test]
 fn moving_the_origin_keeps_the_object_in_place() {
-    let poses = scenes::scene("bunny6").unwrap().poses;
+    let poses = presets::preset("bunny6").unwrap().poses;
     let c = DVec3::new(0.5, -1.0, 2.0);
     for (p, q) in poses.iter().zip(move_local_origin(&poses, c)) {
         assert!(
@@ -79,11 +79,11 @@ fn moving_the_origin_keeps_the_object_in_place() {
     }
 }
 
-/// docs/math/scenes.md §2.9: the screw scheme keeps circle4 on the circle of radius 3; the decoupled 4-point
+/// docs/math/presets.md §2.9: the screw scheme keeps circle4 on the circle of radius 3; the decoupled 4-point
 /// origins dip to 10/16·√2·3 = 2.651650 at 45°.
 #[test]
 fn circle4_screw_keeps_the_circle_decoupled_cuts_corners() {
-    let poses = scenes::scene("circle4").unwrap().poses;
+    let poses = presets::preset("circle4").unwrap().poses;
     let sub = Subdivision::new(Scheme::FourPoint, Rules::Direct, 5);
     let screw = sub.apply(&poses, true).unwrap();
     let dev = screw

@@ -14,7 +14,7 @@ use glam::DVec3;
 use screwbender::mesh::Mesh;
 use screwbender::ErrorKind;
 use screwbender::{
-    import_glb, import_gltf, parse_csv_poses, poses_csv, sample_polyscrew, scenes, split_glb,
+    import_glb, import_gltf, parse_csv_poses, poses_csv, presets, sample_polyscrew, split_glb,
     Error, GltfAsset, GltfMotion, Motion, NodeSelection, Pose, Rules, Scheme, ScrewBender,
     Subdivision, Timing, DEFAULT_TOLERANCE,
 };
@@ -100,7 +100,7 @@ fn worst_deviation(glb: &[u8], motion: &dyn Motion, timing: &Timing) -> (f64, f6
 
 #[test]
 fn every_preset_and_scheme_stays_within_tolerance() {
-    for scene in scenes::scenes() {
+    for scene in presets::all() {
         for scheme in [Scheme::BSpline, Scheme::FourPoint, Scheme::Jarek] {
             let levels = if scheme == Scheme::FourPoint { 5 } else { 3 };
             let sub = Subdivision::new(scheme, Rules::Direct, levels);
@@ -125,7 +125,7 @@ fn every_preset_and_scheme_stays_within_tolerance() {
 
 #[test]
 fn nonuniform_timing_stays_within_tolerance() {
-    let scene = scenes::scene("cylinder5").unwrap();
+    let scene = presets::preset("cylinder5").unwrap();
     let sb = ScrewBender::new(
         scene.poses.clone(),
         true,
@@ -147,7 +147,7 @@ fn nonuniform_timing_stays_within_tolerance() {
 
 #[test]
 fn export_import_export_keeps_control_poses() {
-    for scene in scenes::scenes() {
+    for scene in presets::all() {
         let sub = Subdivision::new(Scheme::FourPoint, Rules::Direct, 2);
         let sb = ScrewBender::new(scene.poses.clone(), scene.closed, sub).unwrap();
         let timing = Timing::uniform(scene.poses.len(), scene.closed);
@@ -169,7 +169,7 @@ fn export_import_export_keeps_control_poses() {
 
 #[test]
 fn the_object_node_can_be_imported_by_name() {
-    let scene = scenes::scene("circle4").unwrap();
+    let scene = presets::preset("circle4").unwrap();
     let sb = ScrewBender::new(
         scene.poses.clone(),
         true,
@@ -186,7 +186,7 @@ fn the_object_node_can_be_imported_by_name() {
 
 #[test]
 fn csv_samples_read_back() {
-    let scene = scenes::scene("helix_open").unwrap();
+    let scene = presets::preset("helix_open").unwrap();
     let sb = ScrewBender::new(
         scene.poses.clone(),
         false,
@@ -203,7 +203,7 @@ fn csv_samples_read_back() {
 }
 
 fn sample_glb() -> Vec<u8> {
-    let scene = scenes::scene("pendulum").unwrap();
+    let scene = presets::preset("pendulum").unwrap();
     let sb = ScrewBender::new(
         scene.poses.clone(),
         true,

@@ -10,7 +10,7 @@ use wasm_bindgen_test::wasm_bindgen_test as test;
 
 use glam::DVec3;
 use screwbender::{
-    sample_fixed_rate, scenes, Motion, MotionDocument, Rules, Scheme, ScrewBender, Subdivision,
+    presets, sample_fixed_rate, Motion, MotionDocument, Rules, Scheme, ScrewBender, Subdivision,
 };
 
 /// How closely the key times map to the key parameters.
@@ -19,7 +19,7 @@ const KEY_PARAMETER: f64 = 1e-9;
 /// A timed, partly constrained document of preset `id` (4-point: the motion interpolates its
 /// control poses, so pose `i` is the key pose).
 fn timed(id: &str, velocities: &[Option<f64>]) -> (MotionDocument, ScrewBender) {
-    let scene = scenes::scene(id).unwrap();
+    let scene = presets::preset(id).unwrap();
     let mut doc = MotionDocument::new(scene.poses.clone(), scene.closed);
     let keys = scene.poses.len() + usize::from(scene.closed);
     let times: Vec<f64> = (0..keys)
@@ -64,7 +64,7 @@ fn key_poses_are_reached_at_key_times() {
 }
 
 fn doc_keys(id: &str) -> usize {
-    scenes::scene(id).unwrap().poses.len()
+    presets::preset(id).unwrap().poses.len()
 }
 
 #[test]

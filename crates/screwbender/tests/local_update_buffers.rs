@@ -29,7 +29,7 @@ fn options() -> Vec<Subdivision> {
             Scheme::Jarek,
             Scheme::J(0.3),
         ] {
-            for rules in [Rules::Direct, Rules::SplitTweak] {
+            for rules in [Rules::Direct, Rules::SplitThenTweak] {
                 let s = Subdivision::new(scheme, rules, levels);
                 if s.validate().is_ok() {
                     out.push(s);

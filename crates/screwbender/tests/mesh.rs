@@ -6,7 +6,7 @@ use wasm_bindgen_test::wasm_bindgen_test as test;
 
 use glam::DVec3;
 use screwbender::mesh::{Mesh, MAX_OBJ_TRIANGLES};
-use screwbender::scenes::{self, Shape};
+use screwbender::presets::{self, Shape};
 
 /// Every triangle index in range, normals unit, and the mesh closed (each directed edge is
 /// matched by its reverse, counting positions rather than vertex ids since flat faces duplicate
@@ -57,7 +57,7 @@ fn volume(m: &Mesh) -> f64 {
 
 #[test]
 fn every_scene_shape_is_a_closed_outward_mesh() {
-    for scene in scenes::scenes() {
+    for scene in presets::all() {
         for shape in std::iter::once(&scene.shape).chain(&scene.morph_shapes) {
             let m = Mesh::from_shape(shape);
             if !matches!(shape, Shape::Pendulum { .. }) {

@@ -6,11 +6,11 @@ use glam::{DQuat, DVec4};
 use screwbender::methods::{
     fit_barr, fit_quaternion_spline, BarrOptions, Method, RbOptions, MAX_BARR_FRAMES,
 };
-use screwbender::{scenes, ErrorKind};
+use screwbender::{presets, ErrorKind};
 use testkit::Rng;
 
 fn c1() -> (Vec<f64>, Vec<DQuat>) {
-    let s = scenes::scene("rb_sphere7").unwrap();
+    let s = presets::preset("rb_sphere7").unwrap();
     let keys: Vec<DQuat> = s.poses.iter().map(|p| p.rotation).collect();
     let times = (0..keys.len()).map(|i| i as f64).collect();
     (times, keys)
@@ -125,7 +125,7 @@ fn objective_of(fit: &screwbender::methods::BarrFit, times: &[f64], keys: &[DQua
 
 #[test]
 fn as_a_method_it_interpolates_and_refuses_what_it_cannot_do() {
-    let s = scenes::scene("rb_sphere7").unwrap();
+    let s = presets::preset("rb_sphere7").unwrap();
     let m = Method::Barr.build(&s.poses, false).unwrap();
     for (i, p) in s.poses.iter().enumerate() {
         assert!(m.pose_at(i as f64).approx_eq(p, 1e-12), "pose {i}");

@@ -117,7 +117,7 @@ fn finite_differences_match_analytic_kinematics() {
         let m = method.build(&poses, true).unwrap();
         for u in [0.3, 2.5, 4.71] {
             for local in [DVec3::ZERO, DVec3::new(2.0, 0.0, 0.0)] {
-                let a = m.kinematics(u, local).unwrap();
+                let a = m.kinematics_at(u, local).unwrap();
                 for side in [Side::Left, Side::Right, Side::Central] {
                     let f = finite_difference(m.as_ref(), u, local, side);
                     let scale = 1.0 + a.velocity.length();

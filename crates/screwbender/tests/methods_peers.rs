@@ -214,7 +214,7 @@ fn slerp_kinematics_match_finite_differences() {
     let m = SlerpPolyline::new(&poses, true).unwrap();
     let local = DVec3::new(0.4, 1.0, -0.7);
     for u in [0.2, 1.5, 3.7, 4.9] {
-        let a = m.kinematics(u, local).unwrap();
+        let a = m.kinematics_at(u, local).unwrap();
         let f = screwbender::methods::finite_difference(&m, u, local, Side::Central);
         assert!((a.position - f.position).length() < 1e-14);
         assert!((a.velocity - f.velocity).length() < 1e-6, "{u}");

@@ -23,9 +23,9 @@ const SPEC_TOL: f64 = 1.5e-6;
 /// Optimised quantities: docs/math/quaternion-splines.md §8 says 1e-4 relative.
 const OPT_TOL: f64 = 1e-4;
 
-/// Scene C1's keyframes (`scenes.md`, the preset `rb_sphere7`), keyframe `i` at `t = i`.
+/// Scene C1's keyframes (`presets.md`, the preset `rb_sphere7`), keyframe `i` at `t = i`.
 fn sphere7() -> (Vec<f64>, Vec<DQuat>) {
-    let scene = screwbender::scenes::scene("rb_sphere7").expect("scene C1");
+    let scene = screwbender::presets::preset("rb_sphere7").expect("scene C1");
     let q: Vec<DQuat> = scene.poses.iter().map(|p| p.rotation).collect();
     ((0..q.len()).map(|i| i as f64).collect(), q)
 }
@@ -394,9 +394,9 @@ fn closed_spline_is_periodic_and_smooth() {
     // Angular velocity continuous at the wrap and at keyframes.
     let local = DVec3::new(1.0, 0.5, -0.3);
     for knot in [0.0, 2.0, 5.0] {
-        let right = m.kinematics(knot, local).unwrap();
-        let l1 = m.kinematics(knot - 1e-6, local).unwrap();
-        let l2 = m.kinematics(knot - 2e-6, local).unwrap();
+        let right = m.kinematics_at(knot, local).unwrap();
+        let l1 = m.kinematics_at(knot - 1e-6, local).unwrap();
+        let l2 = m.kinematics_at(knot - 2e-6, local).unwrap();
         let wl = l1.angular_velocity * 2.0 - l2.angular_velocity;
         let vl = l1.velocity * 2.0 - l2.velocity;
         assert!(
@@ -428,7 +428,7 @@ fn motion_kinematics_match_finite_differences() {
     let h = 1e-4;
     for u in [0.33, 1.9, 4.45] {
         let x = |u: f64| m.pose_at(u).transform_point(local);
-        let kin = m.kinematics(u, local).unwrap();
+        let kin = m.kinematics_at(u, local).unwrap();
         let v = (x(u + h) - x(u - h)) / (2.0 * h);
         let a = (x(u + h) - x(u) * 2.0 + x(u - h)) / (h * h);
         assert!((kin.position - x(u)).length() < 1e-14);

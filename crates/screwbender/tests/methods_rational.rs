@@ -230,12 +230,12 @@ fn worked_example_c1_start_condition() {
         "a(0.3)",
     );
     // d¹_1 = (2, 2.258570, 0.1): the translation's velocity at t_1 (C¹, so from either side).
-    let k = m.kinematics(0.2, DVec3::ZERO).unwrap();
+    let k = m.kinematics_at(0.2, DVec3::ZERO).unwrap();
     near3(k.velocity, [2.0, 2.258570, 0.1], 2e-6, "d¹_1");
-    let k = m.kinematics(0.4, DVec3::ZERO).unwrap();
+    let k = m.kinematics_at(0.4, DVec3::ZERO).unwrap();
     near3(k.velocity, [2.0, 0.680603, 0.5], 2e-6, "d¹_2");
     // d²_1 = (0, −7.889834, 2) is the second derivative at the start of segment 1.
-    let k = m.kinematics(0.2, DVec3::ZERO).unwrap();
+    let k = m.kinematics_at(0.2, DVec3::ZERO).unwrap();
     near3(k.acceleration, [0.0, -7.889834, 2.0], 1e-5, "d²_1");
 }
 
@@ -326,8 +326,8 @@ fn c1_is_continuous_and_c0_is_not() {
         let mut worst = 0.0f64;
         for s in &samples[1..6] {
             for local in [DVec3::ZERO, DVec3::X, DVec3::new(0.3, 0.8, 0.0)] {
-                let v = |t: f64| m.kinematics(t, local).unwrap().velocity;
-                let w = |t: f64| m.kinematics(t, local).unwrap().angular_velocity;
+                let v = |t: f64| m.kinematics_at(t, local).unwrap().velocity;
+                let w = |t: f64| m.kinematics_at(t, local).unwrap().angular_velocity;
                 worst = worst.max((v(s.t) - left(v, s.t)).length());
                 worst = worst.max((w(s.t) - left(w, s.t)).length());
             }
@@ -348,7 +348,7 @@ fn kinematics_match_finite_differences() {
         for t in [0.05, 0.33, 0.71, 1.13] {
             let local = DVec3::new(0.5, -0.2, 0.7);
             let x = |t: f64| m.pose_at(t).transform_point(local);
-            let k = m.kinematics(t, local).unwrap();
+            let k = m.kinematics_at(t, local).unwrap();
             let v = (x(t + h) - x(t - h)) / (2.0 * h);
             let a = (x(t + h) - x(t) * 2.0 + x(t - h)) / (h * h);
             assert!((k.position - x(t)).length() < 1e-14);
@@ -362,7 +362,7 @@ fn kinematics_match_finite_differences() {
                 "{c:?} {t}: {} {a}",
                 k.acceleration
             );
-            let w = |t: f64| m.kinematics(t, local).unwrap().angular_velocity;
+            let w = |t: f64| m.kinematics_at(t, local).unwrap().angular_velocity;
             let alpha = (w(t + h) - w(t - h)) / (2.0 * h);
             assert!((k.angular_acceleration - alpha).length() < 1e-6);
             // ω against the rotation itself: R(t+h) R(t−h)ᵀ ≈ exp(2h ω).

@@ -8,7 +8,7 @@ wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
 use wasm_bindgen_test::wasm_bindgen_test as test;
 
 use glam::DVec3;
-use screwbender::scenes::{scene, Shape};
+use screwbender::presets::{preset, Shape};
 use screwbender::ErrorKind;
 use screwbender::{morph_mesh, morph_weights, MORPH_RESOLUTION};
 
@@ -76,7 +76,7 @@ fn extents_are_weighted_sums_of_the_shapes_extents() {
 
 #[test]
 fn the_morph_scene_gives_closed_finite_meshes_with_outward_normals() {
-    let s = scene("pip_morph5").unwrap();
+    let s = preset("pip_morph5").unwrap();
     assert_eq!(s.morph_shapes.len(), s.poses.len());
     for k in 0..25 {
         let w = morph_weights(s.morph_shapes.len(), true, k as f64 * 0.2);

@@ -69,7 +69,7 @@ fn analytic_kinematics_match_finite_differences() {
                 let span = 1.0 / 8.0;
                 let u = (rng.range(0.0, 5.0) / span).floor() * span + rng.range(0.2, 0.8) * span;
                 let x = |v: f64| m.pose_at(v).transform_point(local);
-                let k = m.kinematics(u, local).unwrap();
+                let k = m.kinematics_at(u, local).unwrap();
                 let vel = (x(u + H) - x(u - H)) / (2.0 * H);
                 let acc = (x(u + H) - 2.0 * x(u) + x(u - H)) / (H * H);
                 let scale = 1.0 + k.velocity.length();
@@ -112,7 +112,9 @@ fn analytic_kinematics_match_finite_differences() {
 /// jumps at its refined knots shrink as levels grow (towards a C¹/C² limit).
 #[test]
 fn velocity_jumps_shrink_with_levels() {
-    let p = screwbender::scenes::scene("l_cycle_rotated").unwrap().poses;
+    let p = screwbender::presets::preset("l_cycle_rotated")
+        .unwrap()
+        .poses;
     let plain = Polyscrew::new(p.clone(), true).unwrap();
     let local = DVec3::new(2.0, 0.0, 0.0);
     let jump = |m: &Polyscrew, i: usize| {

@@ -7,7 +7,7 @@ use screwbender::methods::{
     compare_methods, Continuity, EndCondition, Method, MetricsOptions, RationalMotion,
     ReferenceTriangle, GROWTH_WARNING,
 };
-use screwbender::{scenes, Pose};
+use screwbender::{presets, Pose};
 use testkit::Rng;
 
 const C1_18: Continuity = Continuity::C1(EndCondition::ZeroCurvatureStart);
@@ -50,7 +50,7 @@ fn zigzag(n: usize) -> Vec<Pose> {
 
 #[test]
 fn the_papers_open_scenes_and_smooth_sequences_are_not_flagged() {
-    for s in scenes::scenes().iter().filter(|s| !s.closed) {
+    for s in presets::all().iter().filter(|s| !s.closed) {
         let times: Vec<f64> = (0..s.poses.len()).map(|i| i as f64).collect();
         for c in [C1_18, C1_19] {
             let Ok(m) = RationalMotion::from_poses(

@@ -1,5 +1,5 @@
 //! The worked examples and test vectors of the math notes (docs/math/screw.md §7, docs/math/point-rules.md §5, docs/math/subdivision.md §3.3 and §7,
-//! docs/math/scenes.md §2.5), checked natively and, compiled to wasm, in headless Chromium.
+//! docs/math/presets.md §2.5), checked natively and, compiled to wasm, in headless Chromium.
 //!
 //! The math notes print six decimals (docs/math/README.md §3), so comparisons with printed numbers use `PRINTED` (half a unit in
 //! the sixth decimal, plus rounding of the inputs that are themselves printed).
@@ -14,7 +14,7 @@ use wasm_bindgen_test::wasm_bindgen_test as test;
 
 use glam::{DVec2, DVec3};
 use screwbender::{
-    scenes, screw, screw_paper, BasisPair, PaperScrew, Pose, Rules, Scheme, Screw, ScrewKind,
+    presets, screw, screw_paper, BasisPair, PaperScrew, Pose, Rules, Scheme, Screw, ScrewKind,
     Subdivision,
 };
 use testkit::{assert_pose_near, assert_vec_near, pose};
@@ -315,10 +315,10 @@ fn example_h_general_3d() {
 /// docs/math/point-rules.md: one step of each point scheme on the L polygon, by both rule sets.
 #[test]
 fn l_polygon_one_step() {
-    let l = scenes::polygon_scenes().remove(0).vertices;
+    let l = presets::polygon_presets().remove(0).vertices;
     let expected = testkit::l_polygon_one_step();
     for (scheme, want) in expected {
-        for rules in [Rules::Direct, Rules::SplitTweak] {
+        for rules in [Rules::Direct, Rules::SplitThenTweak] {
             let got = Subdivision::new(scheme, rules, 1).apply(&l, true).unwrap();
             for (j, (g, w)) in got.iter().zip(&want).enumerate() {
                 assert!(
@@ -347,7 +347,7 @@ fn v1_erratum_numeric_example() {
     assert!((corrected - DVec2::new(1.5, -0.1875)).length() < 1e-15);
     assert!((misprint - DVec2::new(1.5, 0.9375)).length() < 1e-15);
     // And the library's split-tweak 4-point rule on the cycle (a,b,c,d) gives the corrected point.
-    let out = Subdivision::new(Scheme::FourPoint, Rules::SplitTweak, 1)
+    let out = Subdivision::new(Scheme::FourPoint, Rules::SplitThenTweak, 1)
         .apply(&[a, b, c, d], true)
         .unwrap();
     let expect = (-a + 9.0 * b + 9.0 * c - d) / 16.0;
@@ -433,7 +433,7 @@ fn one_step_vectors_all_rule_sets() {
         (6, [0.5, 3.414819, 0.715188], [0.995185, 0.098017, 0.0, 0.0]),
     ];
     bspline_v1.extend(bspline_new);
-    check_step(Scheme::BSpline, Rules::SplitTweak, &bspline_v1);
+    check_step(Scheme::BSpline, Rules::SplitThenTweak, &bspline_v1);
 
     let input = spec_65_input();
     let olds: Vec<Slot> = input
@@ -488,7 +488,7 @@ fn one_step_vectors_all_rule_sets() {
         ),
     ];
     fp_v1.extend(olds.iter().copied());
-    check_step(Scheme::FourPoint, Rules::SplitTweak, &fp_v1);
+    check_step(Scheme::FourPoint, Rules::SplitThenTweak, &fp_v1);
 
     check_step(
         Scheme::Jarek,
@@ -538,7 +538,7 @@ fn one_step_vectors_all_rule_sets() {
     );
     check_step(
         Scheme::Jarek,
-        Rules::SplitTweak,
+        Rules::SplitThenTweak,
         &[
             (
                 0,
@@ -585,10 +585,10 @@ fn one_step_vectors_all_rule_sets() {
 }
 
 /// Scene A5: the pendulum's refined poses all lie on the one screw, at the 4-point limit of the
-/// zig-zag 0,1,0,1 (fractions listed in `scenes.md`).
+/// zig-zag 0,1,0,1 (fractions listed in `presets.md`).
 #[test]
 fn pendulum_fractions() {
-    let sc = scenes::scene("pendulum").unwrap();
+    let sc = presets::preset("pendulum").unwrap();
     let s = Screw::between(&sc.poses[0], &sc.poses[1]);
     let refined = Subdivision::new(Scheme::FourPoint, Rules::Direct, 3)
         .apply(&sc.poses, true)

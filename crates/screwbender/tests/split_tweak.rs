@@ -12,7 +12,7 @@ use wasm_bindgen_test::wasm_bindgen_test as test;
 
 use glam::DVec2;
 use screwbender::{
-    scenes, screw, split_tweak_levels, split_tweak_step, Pose, Rules, Scheme, Screw, Subdivision,
+    presets, screw, split_tweak_levels, split_tweak_step, Pose, Rules, Scheme, Screw, Subdivision,
 };
 use testkit::{assert_pose_near, max_pose_error, pose};
 
@@ -27,7 +27,7 @@ const SCHEMES: [Scheme; 4] = [
     Scheme::J(0.3),
 ];
 
-/// docs/math/subdivision.md §7 input and the L cycle with rotations (docs/math/scenes.md §2.2) and the bunny cycle (A10).
+/// docs/math/subdivision.md §7 input and the L cycle with rotations (docs/math/presets.md §2.2) and the bunny cycle (A10).
 fn inputs() -> Vec<(&'static str, Vec<Pose>)> {
     vec![
         (
@@ -41,17 +41,17 @@ fn inputs() -> Vec<(&'static str, Vec<Pose>)> {
         ),
         (
             "l_cycle_rotated",
-            scenes::scene("l_cycle_rotated").unwrap().poses,
+            presets::preset("l_cycle_rotated").unwrap().poses,
         ),
-        ("bunny6", scenes::scene("bunny6").unwrap().poses),
+        ("bunny6", presets::preset("bunny6").unwrap().poses),
     ]
 }
 
 fn combos() -> impl Iterator<Item = (Scheme, Rules)> {
     SCHEMES.into_iter().flat_map(|s| {
-        [Rules::Direct, Rules::SplitTweak]
+        [Rules::Direct, Rules::SplitThenTweak]
             .into_iter()
-            .filter(move |r| !(matches!(s, Scheme::J(_)) && *r == Rules::SplitTweak))
+            .filter(move |r| !(matches!(s, Scheme::J(_)) && *r == Rules::SplitThenTweak))
             .map(move |r| (s, r))
     })
 }
@@ -114,7 +114,7 @@ fn untweaked_slots_stay_split_and_helpers_explain_the_tweak() {
                         assert_pose_near(&mid, &step.output[j], SAME, name);
                     }
                 }
-                Rules::SplitTweak => {
+                Rules::SplitThenTweak => {
                     let count = step.tweaked.iter().filter(|t| **t).count();
                     assert_eq!(step.helpers.len(), count, "{name} {scheme}");
                     for (j, h) in &step.helpers {
@@ -141,7 +141,7 @@ fn untweaked_slots_stay_split_and_helpers_explain_the_tweak() {
 
 #[test]
 fn levels_end_in_the_subdivision_closed_and_open() {
-    let poses = scenes::scene("l_cycle_rotated").unwrap().poses;
+    let poses = presets::preset("l_cycle_rotated").unwrap().poses;
     for (scheme, rules) in combos() {
         for closed in [true, false] {
             let sub = Subdivision::new(scheme, rules, 3);
@@ -168,7 +168,7 @@ fn rejects_what_subdivision_rejects() {
     let one = [Pose::IDENTITY];
     assert!(split_tweak_step(&one, Scheme::FourPoint, Rules::Direct).is_err());
     let two = [Pose::IDENTITY, Pose::IDENTITY];
-    assert!(split_tweak_step(&two, Scheme::J(0.2), Rules::SplitTweak).is_err());
+    assert!(split_tweak_step(&two, Scheme::J(0.2), Rules::SplitThenTweak).is_err());
     assert!(split_tweak_levels(
         &two,
         true,
@@ -177,14 +177,14 @@ fn rejects_what_subdivision_rejects() {
     .is_err());
 }
 
-/// docs/math/point-rules.md §3, §5 / docs/math/scenes.md §2.4 (paper Fig. 3): split and tweak of the L polygon give the printed
+/// docs/math/point-rules.md §3, §5 / docs/math/presets.md §2.4 (paper Fig. 3): split and tweak of the L polygon give the printed
 /// one-step vectors, for both rule sets.
 #[test]
 fn l_polygon_split_and_tweak() {
-    let l = scenes::polygon_scenes().remove(0).vertices;
+    let l = presets::polygon_presets().remove(0).vertices;
     let expected = testkit::l_polygon_one_step();
     for (scheme, want) in expected {
-        for rules in [Rules::Direct, Rules::SplitTweak] {
+        for rules in [Rules::Direct, Rules::SplitThenTweak] {
             let step = split_tweak_step(&l, scheme, rules).unwrap();
             for (j, (g, w)) in step.output.iter().zip(&want).enumerate() {
                 assert!(

@@ -22,8 +22,8 @@ fn all_rules() -> Vec<Subdivision> {
         Scheme::Jarek,
         Scheme::J(0.7),
     ] {
-        for rules in [Rules::Direct, Rules::SplitTweak] {
-            if matches!(scheme, Scheme::J(_)) && rules == Rules::SplitTweak {
+        for rules in [Rules::Direct, Rules::SplitThenTweak] {
+            if matches!(scheme, Scheme::J(_)) && rules == Rules::SplitThenTweak {
                 continue;
             }
             v.push(Subdivision::new(scheme, rules, 3));

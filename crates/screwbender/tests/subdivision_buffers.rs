@@ -30,7 +30,7 @@ fn options() -> Vec<Subdivision> {
             Scheme::Jarek,
             Scheme::J(0.3),
         ] {
-            for rules in [Rules::Direct, Rules::SplitTweak] {
+            for rules in [Rules::Direct, Rules::SplitThenTweak] {
                 let s = Subdivision::new(scheme, rules, levels);
                 if s.validate().is_ok() {
                     out.push(s);
@@ -184,7 +184,7 @@ fn refined_poses_are_the_subdivision_of_the_checked_control_poses() {
     // and rule set, the refined poses of `ScrewBender::new` are the subdivision of the control
     // poses as `Polyscrew::new` checks them, bit for bit (the motion's own check of its refined
     // poses changes none of them).
-    for scene in screwbender::scenes::scenes() {
+    for scene in screwbender::presets::all() {
         let control = Polyscrew::new(scene.poses.clone(), scene.closed).unwrap();
         for s in options().into_iter().filter(|s| s.levels == 3) {
             let motion = ScrewBender::new(scene.poses.clone(), scene.closed, s).unwrap();

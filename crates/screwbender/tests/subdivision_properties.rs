@@ -14,7 +14,7 @@ use std::f64::consts::PI;
 use glam::{DQuat, DVec3};
 use screwbender::ErrorKind;
 use screwbender::{
-    scenes, Motion, Polyscrew, Pose, Rules, Scheme, ScrewBender, Subdivision, MAX_REFINED_POSES,
+    presets, Motion, Polyscrew, Pose, Rules, Scheme, ScrewBender, Subdivision, MAX_REFINED_POSES,
 };
 use testkit::{assert_pose_near, max_pose_error, Rng};
 
@@ -23,7 +23,7 @@ fn all_rule_sets() -> Vec<(Scheme, Rules)> {
     let mut v = Vec::new();
     for scheme in [Scheme::BSpline, Scheme::FourPoint, Scheme::Jarek] {
         v.push((scheme, Rules::Direct));
-        v.push((scheme, Rules::SplitTweak));
+        v.push((scheme, Rules::SplitThenTweak));
     }
     v.push((Scheme::J(0.3), Rules::Direct));
     v.push((Scheme::J(-0.5), Rules::Direct));
@@ -76,7 +76,7 @@ fn circles_are_preserved() {
         };
         let p: Vec<Pose> = (0..n).map(|i| step(i as f64)).collect();
         for (scheme, rules) in all_rule_sets() {
-            if rules == Rules::SplitTweak && n < 5 {
+            if rules == Rules::SplitThenTweak && n < 5 {
                 continue;
             }
             let q = refine(&p, scheme, rules, 4, true);
@@ -90,7 +90,7 @@ fn circles_are_preserved() {
 /// docs/math/open-sequences.md §5, scene A11: an open helix is reproduced exactly from the first to the last pose.
 #[test]
 fn open_helix_and_line_are_preserved() {
-    let helix = scenes::scene("helix_open").unwrap().poses;
+    let helix = presets::preset("helix_open").unwrap().poses;
     let at = |u: f64| {
         let r = DQuat::from_rotation_z((45.0 * u).to_radians());
         Pose::new(
@@ -123,7 +123,7 @@ fn open_helix_and_line_are_preserved() {
 fn four_point_interpolates() {
     let mut rng = Rng::new(13);
     let p = rng.cycle(7, 1.0);
-    for rules in [Rules::Direct, Rules::SplitTweak] {
+    for rules in [Rules::Direct, Rules::SplitThenTweak] {
         for closed in [true, false] {
             let q = refine(&p, Scheme::FourPoint, rules, 4, closed);
             for (i, pi) in p.iter().enumerate() {
@@ -216,7 +216,7 @@ fn the_two_rule_sets_differ() {
     let p = rng.cycle(6, 1.0);
     for scheme in [Scheme::BSpline, Scheme::FourPoint, Scheme::Jarek] {
         let a = refine(&p, scheme, Rules::Direct, 1, true);
-        let b = refine(&p, scheme, Rules::SplitTweak, 1, true);
+        let b = refine(&p, scheme, Rules::SplitThenTweak, 1, true);
         let diff = max_pose_error(&a, &b);
         assert!(
             diff > 1e-3,
@@ -265,7 +265,7 @@ fn locality_windows() {
 fn open_sequences() {
     let mut rng = Rng::new(18);
     let p = rng.cycle(5, 1.0);
-    for rules in [Rules::Direct, Rules::SplitTweak] {
+    for rules in [Rules::Direct, Rules::SplitThenTweak] {
         let q = refine(&p, Scheme::BSpline, rules, 4, false);
         assert_eq!(q.len(), 4 * 16 + 1);
         assert_pose_near(&q[0], &p[0], 1e-12, "B-spline start");
@@ -315,7 +315,7 @@ fn v1_breaks_down_on_the_four_pose_circle() {
         let want: Vec<Pose> = (0..32).map(|j| exact(sign, j as f64 / 8.0)).collect();
         let direct = refine(&p, Scheme::FourPoint, Rules::Direct, 3, true);
         assert!(max_pose_error(&direct, &want) < 1e-13);
-        let split = refine(&p, Scheme::FourPoint, Rules::SplitTweak, 3, true);
+        let split = refine(&p, Scheme::FourPoint, Rules::SplitThenTweak, 3, true);
         assert!(split.iter().all(Pose::is_finite));
         let err = max_pose_error(&split, &want);
         if sign > 0.0 {
@@ -331,7 +331,7 @@ fn v1_breaks_down_on_the_four_pose_circle() {
 
 #[test]
 fn bad_requests_are_errors() {
-    let p = scenes::scene("circle4").unwrap().poses;
+    let p = presets::preset("circle4").unwrap().poses;
     let e = Subdivision::new(Scheme::Jarek, Rules::Direct, 30)
         .apply(&p, true)
         .unwrap_err();

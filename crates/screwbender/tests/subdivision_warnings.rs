@@ -5,7 +5,7 @@
 use std::f64::consts::{PI, TAU};
 
 use glam::{DQuat, DVec3};
-use screwbender::{scenes, Pose, Rules, Scheme, Subdivision, Warning};
+use screwbender::{presets, Pose, Rules, Scheme, Subdivision, Warning};
 
 /// The radius of the test circles, in scene units.
 const RADIUS: f64 = 5.0;
@@ -49,7 +49,8 @@ fn split_rules_on_three_and_four_pose_circles_warn_for_every_span() {
     for scheme in [Scheme::FourPoint, Scheme::Jarek] {
         for n in [3, 4] {
             let poses = circle(n, TAU);
-            let warnings = Subdivision::new(scheme, Rules::SplitTweak, 3).warnings(&poses, true);
+            let warnings =
+                Subdivision::new(scheme, Rules::SplitThenTweak, 3).warnings(&poses, true);
             assert_eq!(
                 spans(&warnings),
                 (0..n).collect::<Vec<_>>(),
@@ -68,7 +69,7 @@ fn split_rules_on_three_and_four_pose_circles_warn_for_every_span() {
                 assert!(text.contains("span ") && text.contains("°"), "{text}");
             }
             // And the result is indeed poor.
-            let refined = Subdivision::new(scheme, Rules::SplitTweak, 3)
+            let refined = Subdivision::new(scheme, Rules::SplitThenTweak, 3)
                 .apply(&poses, true)
                 .unwrap();
             // Three poses: the tweak screws turn 240°, the short way is 120° the other way, and
@@ -85,9 +86,9 @@ fn split_rules_on_three_and_four_pose_circles_warn_for_every_span() {
 fn four_poses_around_a_circle_warn_where_the_turn_passes_a_half_turn() {
     // The scene `circle4`, 90° steps: every tweak screw is exactly a half turn, an ambiguous
     // screw whose direction rounding decides, so every span is named.
-    let scene = scenes::scene("circle4").unwrap();
+    let scene = presets::preset("circle4").unwrap();
     for scheme in [Scheme::FourPoint, Scheme::Jarek] {
-        let s = Subdivision::new(scheme, Rules::SplitTweak, scene.levels);
+        let s = Subdivision::new(scheme, Rules::SplitThenTweak, scene.levels);
         assert_eq!(
             spans(&s.warnings(&scene.poses, scene.closed)),
             vec![0, 1, 2, 3]
@@ -105,7 +106,7 @@ fn four_poses_around_a_circle_warn_where_the_turn_passes_a_half_turn() {
     };
     let poses: Vec<Pose> = angles.iter().map(|&d| at(d)).collect();
     for scheme in [Scheme::FourPoint, Scheme::Jarek] {
-        let s = Subdivision::new(scheme, Rules::SplitTweak, 1);
+        let s = Subdivision::new(scheme, Rules::SplitThenTweak, 1);
         assert_eq!(spans(&s.warnings(&poses, true)), vec![0, 1, 3], "{scheme}");
         let split = s.apply(&poses, true).unwrap();
         let direct = Subdivision::new(scheme, Rules::Direct, 1)
@@ -125,9 +126,9 @@ fn no_warning_where_the_result_is_good() {
     for n in [3, 4, 5, 6, 8, 12] {
         let poses = circle(n, TAU);
         for scheme in [Scheme::BSpline, Scheme::FourPoint, Scheme::Jarek] {
-            for rules in [Rules::Direct, Rules::SplitTweak] {
+            for rules in [Rules::Direct, Rules::SplitThenTweak] {
                 let s = Subdivision::new(scheme, rules, 3);
-                let bad = rules == Rules::SplitTweak && scheme != Scheme::BSpline && n <= 4;
+                let bad = rules == Rules::SplitThenTweak && scheme != Scheme::BSpline && n <= 4;
                 if bad {
                     continue;
                 }
@@ -164,7 +165,7 @@ fn only_the_spans_next_to_a_wide_turn_are_named() {
             rotation: last.rotation * DQuat::from_rotation_z(f64::to_radians(*t)),
         });
     }
-    let s = Subdivision::new(Scheme::FourPoint, Rules::SplitTweak, 2);
+    let s = Subdivision::new(Scheme::FourPoint, Rules::SplitThenTweak, 2);
     let warnings = s.warnings(&poses, false);
     assert_eq!(spans(&warnings), vec![3]);
     let Warning::WideTweak { turn, .. } = &warnings[0] else {
@@ -179,7 +180,7 @@ fn only_the_spans_next_to_a_wide_turn_are_named() {
     assert!(Subdivision::new(Scheme::FourPoint, Rules::Direct, 2)
         .warnings(&poses, false)
         .is_empty());
-    assert!(Subdivision::new(Scheme::BSpline, Rules::SplitTweak, 2)
+    assert!(Subdivision::new(Scheme::BSpline, Rules::SplitThenTweak, 2)
         .warnings(&poses, false)
         .is_empty());
 }
@@ -189,24 +190,25 @@ fn open_half_circle_of_three_poses_warns() {
     // Three poses 90° apart, open: the extension continues the end spans, so every tweak screw
     // turns 180°.
     let poses = circle(3, 1.5 * PI);
-    let warnings = Subdivision::new(Scheme::Jarek, Rules::SplitTweak, 2).warnings(&poses, false);
+    let warnings =
+        Subdivision::new(Scheme::Jarek, Rules::SplitThenTweak, 2).warnings(&poses, false);
     assert_eq!(spans(&warnings), vec![0, 1]);
     // Fine steps on an open arc: no warning.
     let poses = circle(9, PI);
-    assert!(Subdivision::new(Scheme::Jarek, Rules::SplitTweak, 2)
+    assert!(Subdivision::new(Scheme::Jarek, Rules::SplitThenTweak, 2)
         .warnings(&poses, false)
         .is_empty());
 }
 
 #[test]
 fn degenerate_input_gives_no_warning() {
-    let s = Subdivision::new(Scheme::FourPoint, Rules::SplitTweak, 2);
+    let s = Subdivision::new(Scheme::FourPoint, Rules::SplitThenTweak, 2);
     assert!(s.warnings(&[], true).is_empty());
     assert!(s.warnings(&[Pose::IDENTITY], false).is_empty());
     // No levels: nothing is subdivided.
-    let none = Subdivision::new(Scheme::FourPoint, Rules::SplitTweak, 0);
+    let none = Subdivision::new(Scheme::FourPoint, Rules::SplitThenTweak, 0);
     assert!(none.warnings(&circle(3, TAU), true).is_empty());
     // Invalid options: the subdivision reports the error, the warnings stay quiet.
-    let bad = Subdivision::new(Scheme::J(0.3), Rules::SplitTweak, 2);
+    let bad = Subdivision::new(Scheme::J(0.3), Rules::SplitThenTweak, 2);
     assert!(bad.warnings(&circle(3, TAU), true).is_empty());
 }

@@ -75,9 +75,9 @@ pub fn assert_rel(got: f64, want: f64, tol: f64, what: &str) {
     );
 }
 
-/// The poses of scene A2 `l_cycle_rotated` (scenes.md), cyclic: the library's preset.
+/// The poses of scene A2 `l_cycle_rotated` (presets.md), cyclic: the library's preset.
 pub fn l_cycle_rotated() -> Vec<Pose> {
-    screwbender::scenes::scene("l_cycle_rotated")
+    screwbender::presets::preset("l_cycle_rotated")
         .expect("preset A2 exists")
         .poses
 }

@@ -140,7 +140,7 @@ impl RendererHandle {
         closed: bool,
         u: f64,
     ) -> Result<usize, JsError> {
-        let s = screwbender::scenes::scene(scene)
+        let s = screwbender::presets::preset(scene)
             .ok_or_else(|| JsError::new(&format!("unknown scene {scene:?}")))?;
         if !u.is_finite() {
             return Err(JsError::new("u: not a finite number (NaN or infinity)"));

@@ -18,7 +18,7 @@ use crate::formats::gltf::glb::is_glb;
 use crate::formats::gltf::import::{import_glb, import_gltf, NodeSelection, MAX_GLTF_BYTES};
 use crate::formats::sampling::Deviation;
 use crate::formats::tracks::{sample_document, DocumentSamples, SamplingMode};
-use crate::scenes::mesh::Mesh;
+use crate::presets::mesh::Mesh;
 use crate::subdivision::Subdivision;
 
 /// The file formats of [`export_motion`].

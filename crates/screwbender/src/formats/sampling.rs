@@ -374,9 +374,9 @@ fn too_many() -> Error {
 /// with `timing` over its control poses (e.g. `Timing::uniform(n, closed)`: 1 s per span).
 ///
 /// ```
-/// use screwbender::{sample_screwbender, scenes, Rules, Scheme, ScrewBender, Subdivision, Timing};
+/// use screwbender::{sample_screwbender, presets, Rules, Scheme, ScrewBender, Subdivision, Timing};
 ///
-/// let scene = scenes::scene("circle4").unwrap();
+/// let scene = presets::preset("circle4").unwrap();
 /// let sub = Subdivision::new(Scheme::FourPoint, Rules::Direct, 5);
 /// let motion = ScrewBender::new(scene.poses.clone(), true, sub)?;
 /// let samples = sample_screwbender(&motion, &Timing::uniform(4, true), 1e-4)?;

@@ -121,14 +121,14 @@ pub fn kinematics_at(motion: &dyn Motion, u: f64, local: DVec3, side: Side) -> K
         Side::Right => 1.0,
         Side::Central => 0.0,
     };
-    if let Some(k) = motion.kinematics(u, local) {
+    if let Some(k) = motion.kinematics_at(u, local) {
         if sign == 0.0 {
             return k;
         }
         let d = sign * KNOT_OFFSET;
         if let (Some(a), Some(b)) = (
-            motion.kinematics(u + d, local),
-            motion.kinematics(u + 2.0 * d, local),
+            motion.kinematics_at(u + d, local),
+            motion.kinematics_at(u + 2.0 * d, local),
         ) {
             let lin = |x: DVec3, y: DVec3| x * 2.0 - y;
             return Kinematics {
@@ -332,7 +332,7 @@ pub fn motion_metrics(
 ) -> MetricsRow {
     let points = &options.body_points;
     let probe = points.first().copied().unwrap_or(DVec3::ZERO);
-    let analytic = motion.kinematics(motion.domain().0, probe).is_some();
+    let analytic = motion.kinematics_at(motion.domain().0, probe).is_some();
     let (domain_start, domain_end) = motion.domain();
     let kin = |u: f64, p: DVec3, side: Side| match derivatives {
         Derivatives::Auto => kinematics_at(motion, u, p, side),

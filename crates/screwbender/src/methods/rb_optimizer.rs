@@ -496,7 +496,7 @@ impl Motion for RamamoorthiBarr {
 
     /// Closed form: rotation rates from `q, q', q''` of the Hermite piece (see
     /// [`super::angular_rates`]), translation from the Catmull–Rom piece.
-    fn kinematics(&self, t: f64, local: DVec3) -> Option<Kinematics> {
+    fn kinematics_at(&self, t: f64, local: DVec3) -> Option<Kinematics> {
         let [q, q1, q2, _] = self.fit.spline.eval(t);
         let (omega, alpha) = angular_rates(q, q1, q2);
         let (o, v, a) = self.positions.eval(t);

@@ -97,7 +97,7 @@ impl Motion for SlerpPolyline {
     /// On a span the world angular velocity is the constant rotation vector `ω` of
     /// `R_{i+1} R_iᵀ`, the origin velocity the chord `O_{i+1} − O_i`; a body point at `r = x − O`
     /// moves with `O' + ω × r` and accelerates with `ω × (ω × r)`.
-    fn kinematics(&self, u: f64, local: DVec3) -> Option<Kinematics> {
+    fn kinematics_at(&self, u: f64, local: DVec3) -> Option<Kinematics> {
         let (i, f) = locate_uniform(u, self.spans(), self.closed);
         let (a, b) = self.span(i);
         let omega = (b.rotation * a.rotation.conjugate()).to_scaled_axis();

@@ -63,7 +63,7 @@ impl Subdivision {
                     },
                 ));
             }
-            if self.rules == Rules::SplitTweak {
+            if self.rules == Rules::SplitThenTweak {
                 return Err(Error::new(
                     "rules",
                     ErrorKind::Unsupported {
@@ -304,7 +304,7 @@ impl Subdivision {
         out.clear();
         match self.rules {
             Rules::Direct => direct_step(input, self.scheme, out, scratch),
-            Rules::SplitTweak => split_tweak_step(input, self.scheme, out, scratch),
+            Rules::SplitThenTweak => split_tweak_step(input, self.scheme, out, scratch),
         }
     }
 
@@ -671,7 +671,7 @@ mod tests {
 
     #[test]
     fn j_with_split_rules_is_rejected() {
-        let s = Subdivision::new(Scheme::J(0.3), Rules::SplitTweak, 1);
+        let s = Subdivision::new(Scheme::J(0.3), Rules::SplitThenTweak, 1);
         let pts = [DVec2::ZERO, DVec2::X, DVec2::Y];
         assert!(matches!(
             s.apply(&pts, true).as_ref().map_err(|e| e.kind()),
@@ -694,7 +694,7 @@ mod tests {
         let reals = [0.0, 1.0, 4.0, 2.0];
         let runs = move |levels| {
             let mut results = Vec::new();
-            for rules in [Rules::Direct, Rules::SplitTweak] {
+            for rules in [Rules::Direct, Rules::SplitThenTweak] {
                 for scheme in [Scheme::BSpline, Scheme::FourPoint, Scheme::Jarek] {
                     let s = Subdivision::new(scheme, rules, levels);
                     let refined = s.apply(&points, true).unwrap();

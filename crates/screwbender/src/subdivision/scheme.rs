@@ -98,30 +98,40 @@ pub enum Rules {
     Direct,
     /// The first version: split (insert screw midpoints), then tweak the split sequence
     /// (docs/math/subdivision.md §3, with the 4-point/Jarek argument-order misprint corrected).
-    SplitTweak,
+    /// Its id in files and options is `split`.
+    SplitThenTweak,
 }
 
 impl Rules {
     /// The names accepted by [`Rules::from_str`].
-    pub const NAMES: &'static str = "direct, split";
+    pub const NAMES: &'static str = "direct, split-then-tweak (split)";
+
+    /// Former name of [`Rules::SplitThenTweak`], kept for one release: "Split&Tweak" names the
+    /// whole framework, of which both rule sets are part.
+    #[deprecated(since = "0.2.0", note = "renamed to `Rules::SplitThenTweak`")]
+    #[allow(non_upper_case_globals)]
+    pub const SplitTweak: Rules = Rules::SplitThenTweak;
 }
 
 impl fmt::Display for Rules {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(match self {
             Rules::Direct => "direct",
-            Rules::SplitTweak => "split",
+            Rules::SplitThenTweak => "split",
         })
     }
 }
 
 impl FromStr for Rules {
     type Err = Error;
-    /// Parses `direct` (also `v2`) or `split` (also `split-tweak`, `v1`), case-insensitive.
+    /// Parses `direct` (also `v2`) or `split-then-tweak` (also `split`, `split-tweak`, `v1`),
+    /// case-insensitive.
     fn from_str(s: &str) -> Result<Self, Error> {
         match s.to_ascii_lowercase().as_str() {
             "direct" | "v2" => Ok(Rules::Direct),
-            "split" | "split-tweak" | "splittweak" | "v1" => Ok(Rules::SplitTweak),
+            "split-then-tweak" | "split" | "split-tweak" | "splittweak" | "v1" => {
+                Ok(Rules::SplitThenTweak)
+            }
             _ => Err(Error::new(
                 "rules",
                 ErrorKind::UnknownValue {

@@ -2,7 +2,7 @@
 //! sequence (every span's screw midpoint inserted) and the **tweak** that turns it into the
 //! step's output, generic over [`Blend`] like [`Subdivision`].
 //!
-//! * With the first version's rules ([`Rules::SplitTweak`], docs/math/subdivision.md §3) the tweak is computed here
+//! * With the first version's rules ([`Rules::SplitThenTweak`], docs/math/subdivision.md §3) the tweak is computed here
 //!   from the split sequence `Z`, independently of [`Subdivision`], together with the helper
 //!   element each tweak moves towards or away from (`m = s(Z_{j−1}, ½, Z_{j+1})` for old slots,
 //!   `m = s(Z_{j−2}, ½, Z_{j+2})` for new slots). The integration tests check that the result
@@ -98,7 +98,7 @@ pub fn split_tweak_step<T: Blend>(
         .collect();
     let (output, helpers) = match rules {
         Rules::Direct => (direct, direct_helpers(input, scheme)),
-        Rules::SplitTweak => {
+        Rules::SplitThenTweak => {
             let zz = |j: usize| &z[j % m];
             let mut out = Vec::with_capacity(m);
             let mut helpers = Vec::new();
@@ -216,7 +216,7 @@ mod tests {
             DVec2::new(2.0, 0.0),
             DVec2::new(3.0, 3.0),
         ];
-        let s = split_tweak_step(&p, Scheme::FourPoint, Rules::SplitTweak).unwrap();
+        let s = split_tweak_step(&p, Scheme::FourPoint, Rules::SplitThenTweak).unwrap();
         assert_eq!(
             s.tweaked,
             [false, true, false, true, false, true, false, true]

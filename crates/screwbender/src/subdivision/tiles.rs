@@ -131,9 +131,9 @@ mod tests {
                 (Scheme::FourPoint, Rules::Direct),
                 (Scheme::Jarek, Rules::Direct),
                 (Scheme::J(0.3), Rules::Direct),
-                (Scheme::BSpline, Rules::SplitTweak),
-                (Scheme::FourPoint, Rules::SplitTweak),
-                (Scheme::Jarek, Rules::SplitTweak),
+                (Scheme::BSpline, Rules::SplitThenTweak),
+                (Scheme::FourPoint, Rules::SplitThenTweak),
+                (Scheme::Jarek, Rules::SplitThenTweak),
             ];
             for (scheme, rules) in cases {
                 let sub = Subdivision::new(scheme, rules, levels);
@@ -161,7 +161,7 @@ mod tests {
         let points: Vec<DVec2> = (0..500)
             .map(|i| DVec2::new((i as f64 * 0.37).sin(), (i as f64 * 0.11).cos()))
             .collect();
-        let sub = Subdivision::new(Scheme::Jarek, Rules::SplitTweak, 8);
+        let sub = Subdivision::new(Scheme::Jarek, Rules::SplitThenTweak, 8);
         assert!(tiled(&sub, points.len()));
         same_bits(
             &sub.apply(&points, true).unwrap(),

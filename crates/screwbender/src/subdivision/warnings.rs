@@ -67,7 +67,10 @@ impl Subdivision {
     /// itself reports those).
     pub fn warnings(&self, poses: &[Pose], closed: bool) -> Vec<Warning> {
         let n = poses.len();
-        if self.levels == 0 || self.rules != Rules::SplitTweak || self.validate().is_err() || n < 2
+        if self.levels == 0
+            || self.rules != Rules::SplitThenTweak
+            || self.validate().is_err()
+            || n < 2
         {
             return Vec::new();
         }

@@ -29,7 +29,7 @@ use crate::error::{Error, ErrorKind};
 use crate::formats::sampling::Sample;
 use crate::formats::tracks::consistent_rotations;
 use crate::pose::Pose;
-use crate::scenes::mesh::Mesh;
+use crate::presets::mesh::Mesh;
 
 /// Default name of the animated object node.
 pub const OBJECT_NODE_NAME: &str = "object";

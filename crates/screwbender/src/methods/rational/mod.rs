@@ -510,7 +510,7 @@ impl Motion for RationalMotion {
     /// Closed form: `ω = 2 vec(Q'Q*)/|Q|²`, `α` from `Q''` (see [`super::angular_rates`]); the
     /// translation by the quotient rule on `N/w`; a body point at `r = x − a` from `a` moves with
     /// `a' + ω × r` and accelerates with `a'' + α × r + ω × (ω × r)`.
-    fn kinematics(&self, t: f64, local: DVec3) -> Option<Kinematics> {
+    fn kinematics_at(&self, t: f64, local: DVec3) -> Option<Kinematics> {
         let (i, tau) = self.locate(t);
         let s = &self.segments[i];
         let h = s.t1 - s.t0;

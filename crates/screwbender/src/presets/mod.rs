@@ -1,6 +1,6 @@
-//! Preset scenes reproducing the paper's figures (docs/math/scenes.md §2).
+//! Presets: named motions reproducing the papers' figures (docs/math/presets.md §2).
 //!
-//! The papers publish no pose data; these values were chosen by this project (docs/math/scenes.md) to match each figure's
+//! The papers publish no pose data; these values were chosen by this project (docs/math/presets.md) to match each figure's
 //! description. Poses are computed from their definitions (`Rz(90°·i)`, …) rather than copied
 //! from the six-decimal tables, so circles and helices are exact to rounding.
 
@@ -13,7 +13,7 @@ pub(crate) mod morph;
 use crate::pose::Pose;
 use crate::subdivision::scheme::Scheme;
 
-/// The object drawn at each pose of a scene (dimensions in scene units, local frame).
+/// The object drawn at each pose of a preset (dimensions in scene units, local frame).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 #[serde(tag = "kind", rename_all = "camelCase")]
 pub enum Shape {
@@ -82,7 +82,7 @@ pub enum Shape {
         /// Plate thickness.
         thickness: f64,
     },
-    /// An I-beam (scene C2): two flanges `flange` (x, y, z sizes) at `z = ±web/2`, joined by a
+    /// An I-beam (preset C2): two flanges `flange` (x, y, z sizes) at `z = ±web/2`, joined by a
     /// web of height `web` along local z and section `web_section` (x, y), centred.
     IBeam {
         /// Flange size along local x, y, z.
@@ -93,7 +93,7 @@ pub enum Shape {
         #[serde(rename = "webSection")]
         web_section: [f64; 2],
     },
-    /// A benzene-like molecule (scene C3): six atoms on a ring in the local xy plane and one
+    /// A benzene-like molecule (preset C3): six atoms on a ring in the local xy plane and one
     /// heavy atom bonded to the first, along +x.
     Molecule {
         /// Ring radius.
@@ -105,10 +105,10 @@ pub enum Shape {
 
 /// A preset: control poses, default options and the object to draw.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Scene {
+pub struct Preset {
     /// Identifier used on the command line and in the page (`l_cycle_rotated`, …).
     pub id: &'static str,
-    /// The scene's label in `scenes.md` (`A2`, …).
+    /// The preset's label in `presets.md` (`A2`, …).
     pub label: &'static str,
     /// Which figure of the paper it reproduces (V1 / V2 numbering).
     pub figure: &'static str,
@@ -124,13 +124,13 @@ pub struct Scene {
     pub levels: u32,
     /// The object to draw.
     pub shape: Shape,
-    /// Per-control-pose shapes for the morph scene (A8), else empty.
+    /// Per-control-pose shapes for the morph preset (A8), else empty.
     pub morph_shapes: Vec<Shape>,
 }
 
-/// A planar polygon preset for the polygon view (scene A4).
+/// A planar polygon preset for the polygon view (preset A4).
 #[derive(Clone, Debug, PartialEq)]
-pub struct PolygonScene {
+pub struct PolygonPreset {
     /// Identifier (`polygon_l`, `polygon_star`, `polygon_split_tweak`).
     pub id: &'static str,
     /// Which figure it reproduces.
@@ -183,10 +183,10 @@ fn cylinder5() -> Vec<Pose> {
     ]
 }
 
-/// All pose scenes A1–A11 (A4, the polygons, are in [`polygon_scenes`]), then B1 and C1–C3 (the
-/// comparison papers' scenes), in `scenes.md` order.
-pub fn scenes() -> Vec<Scene> {
-    let base = |id, label, figure, description, poses, scheme, shape| Scene {
+/// All pose presets A1–A11 (A4, the polygons, are in [`polygon_presets`]), then B1 and C1–C3 (the
+/// comparison papers' presets), in `presets.md` order.
+pub fn all() -> Vec<Preset> {
+    let base = |id, label, figure, description, poses, scheme, shape| Preset {
         id,
         label,
         figure,
@@ -283,7 +283,7 @@ pub fn scenes() -> Vec<Scene> {
                 height: 2.0,
             },
         ),
-        Scene {
+        Preset {
             morph_shapes: vec![
                 Shape::Cone {
                     radius: 0.6,
@@ -347,7 +347,7 @@ pub fn scenes() -> Vec<Scene> {
                 size: [1.2, 0.6, 0.8],
             },
         ),
-        Scene {
+        Preset {
             closed: false,
             levels: 4,
             ..base(
@@ -360,7 +360,7 @@ pub fn scenes() -> Vec<Scene> {
                 BAR,
             )
         },
-        Scene {
+        Preset {
             closed: false,
             levels: 5,
             ..base(
@@ -377,7 +377,7 @@ pub fn scenes() -> Vec<Scene> {
                 },
             )
         },
-        Scene {
+        Preset {
             closed: false,
             levels: 5,
             ..base(
@@ -393,7 +393,7 @@ pub fn scenes() -> Vec<Scene> {
                 },
             )
         },
-        Scene {
+        Preset {
             closed: false,
             levels: 5,
             ..base(
@@ -410,7 +410,7 @@ pub fn scenes() -> Vec<Scene> {
                 },
             )
         },
-        Scene {
+        Preset {
             closed: false,
             levels: 5,
             ..base(
@@ -429,7 +429,7 @@ pub fn scenes() -> Vec<Scene> {
     ]
 }
 
-/// Scene B1: the rigid motion `R(t) = Rot(axis (sin 2t, 0.5, cos t), 2.2t)`, `a(t) = (2t,
+/// Preset B1: the rigid motion `R(t) = Rot(axis (sin 2t, 0.5, cos t), 2.2t)`, `a(t) = (2t,
 /// 0.8 sin 3t, 0.5t²)` sampled at `t = 0, 0.2, …, 1.2` (the pose's origin is vertex `a`).
 fn triangle7() -> Vec<Pose> {
     (0..7)
@@ -442,7 +442,7 @@ fn triangle7() -> Vec<Pose> {
         .collect()
 }
 
-/// Scene C1's keyframes `[w, x, y, z]` (docs/math/quaternion-splines.md §8).
+/// Preset C1's keyframes `[w, x, y, z]` (docs/math/quaternion-splines.md §8).
 const RB_SPHERE7: [[f64; 4]; 7] = [
     [1.0, 0.0, 0.0, 0.0],
     [0.8, 0.6, 0.0, 0.0],
@@ -453,7 +453,7 @@ const RB_SPHERE7: [[f64; 4]; 7] = [
     [-0.6, -0.8, 0.0, 0.0],
 ];
 
-/// Scene C3's keyframes `[w, x, y, z]` (100°, 110°, 95° steps).
+/// Preset C3's keyframes `[w, x, y, z]` (100°, 110°, 95° steps).
 const RB_MOLECULE4: [[f64; 4]; 4] = [
     [1.0, 0.0, 0.0, 0.0],
     [0.642788, 0.541675, 0.541675, 0.0],
@@ -468,7 +468,7 @@ fn quaternion_keys(keys: &[[f64; 4]]) -> Vec<DQuat> {
         .collect()
 }
 
-/// Scene C2: origin `(2t, 0, 4 − 0.45 (t−3)²)` and the keyframe rotations of docs/math/scenes.md §4.2, `t = 0..6`.
+/// Preset C2: origin `(2t, 0, 4 − 0.45 (t−3)²)` and the keyframe rotations of docs/math/presets.md §4.2, `t = 0..6`.
 fn rb_ibeam7() -> Vec<Pose> {
     const Q: [[f64; 4]; 7] = [
         [1.0, 0.0, 0.0, 0.0],
@@ -489,16 +489,16 @@ fn rb_ibeam7() -> Vec<Pose> {
         .collect()
 }
 
-/// The scene with this id, if any.
-pub fn scene(id: &str) -> Option<Scene> {
-    scenes().into_iter().find(|s| s.id == id)
+/// The preset with this id, if any.
+pub fn preset(id: &str) -> Option<Preset> {
+    all().into_iter().find(|s| s.id == id)
 }
 
-/// The planar polygon presets of scene A4 (paper Figs. 2–3).
-pub fn polygon_scenes() -> Vec<PolygonScene> {
+/// The planar polygon presets of A4 (paper Figs. 2–3).
+pub fn polygon_presets() -> Vec<PolygonPreset> {
     let v = |pts: &[[f64; 2]]| pts.iter().map(|p| DVec2::from_array(*p)).collect();
     vec![
-        PolygonScene {
+        PolygonPreset {
             id: "polygon_l",
             figure: "Fig. 2",
             vertices: v(&[
@@ -510,7 +510,7 @@ pub fn polygon_scenes() -> Vec<PolygonScene> {
                 [0.0, 6.0],
             ]),
         },
-        PolygonScene {
+        PolygonPreset {
             id: "polygon_star",
             figure: "Fig. 2",
             // A five-point star, outer radius 5, inner 2, first point up.
@@ -522,7 +522,7 @@ pub fn polygon_scenes() -> Vec<PolygonScene> {
                 })
                 .collect(),
         },
-        PolygonScene {
+        PolygonPreset {
             id: "polygon_split_tweak",
             figure: "Fig. 3",
             vertices: v(&[[0.0, 0.0], [4.0, 0.0], [5.0, 3.0], [2.0, 5.0], [-1.0, 3.0]]),
@@ -576,11 +576,11 @@ mod tests {
         p.approx_eq(&expect, 2e-6)
     }
 
-    /// The computed poses agree with the six-decimal tables of `scenes.md`.
+    /// The computed poses agree with the six-decimal tables of `presets.md`.
     #[test]
     #[allow(clippy::approx_constant)] // the tables' printed values are the point of the test
-    fn scenes_match_the_spec_tables() {
-        let s = scene("l_cycle_rotated").unwrap();
+    fn presets_match_the_spec_tables() {
+        let s = preset("l_cycle_rotated").unwrap();
         assert!(close(
             &s.poses[0],
             [0.0, 0.0, 0.0],
@@ -591,13 +591,13 @@ mod tests {
             [2.0, 6.0, 0.0],
             [0.707107, 0.0, 0.0, 0.707107]
         ));
-        let s = scene("pendulum").unwrap();
+        let s = preset("pendulum").unwrap();
         assert!(close(
             &s.poses[0],
             [2.294306, 0.0, 0.723392],
             [0.953717, 0.0, -0.300706, 0.0]
         ));
-        let s = scene("spinning_block").unwrap();
+        let s = preset("spinning_block").unwrap();
         assert!(close(
             &s.poses[1],
             [0.0, -1.5, 0.5],
@@ -608,7 +608,7 @@ mod tests {
             [0.0, 1.5, 0.5],
             [0.696364, -0.122788, 0.122788, -0.696364]
         ));
-        let s = scene("cylinder5").unwrap();
+        let s = preset("cylinder5").unwrap();
         assert!(close(
             &s.poses[2],
             [5.0, 5.0, 2.0],
@@ -619,29 +619,29 @@ mod tests {
             [1.0, 6.0, 0.5],
             [0.294715, -0.092923, 0.285988, -0.907039]
         ));
-        let s = scene("bunny6").unwrap();
+        let s = preset("bunny6").unwrap();
         assert!(close(
             &s.poses[3],
             [6.5, 4.0, 1.0],
             [0.896201, -0.282571, -0.102847, 0.326190]
         ));
-        let s = scene("helix_open").unwrap();
+        let s = preset("helix_open").unwrap();
         assert!(!s.closed);
         assert!(close(
             &s.poses[5],
             [-2.121320, -2.121320, 3.0],
             [0.382683, 0.0, 0.0, -0.923880]
         ));
-        let s = scene("circle4").unwrap();
+        let s = preset("circle4").unwrap();
         assert!(close(&s.poses[2], [-3.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]));
-        let star = &polygon_scenes()[1].vertices;
+        let star = &polygon_presets()[1].vertices;
         assert!((star[1] - DVec2::new(-1.175571, 1.618034)).length() < 2e-6);
         assert!((star[4] - DVec2::new(-2.938926, -4.045085)).length() < 2e-6);
     }
 
     #[test]
     fn ids_are_unique() {
-        let all = scenes();
+        let all = all();
         for (i, a) in all.iter().enumerate() {
             assert!(all[i + 1..].iter().all(|b| b.id != a.id));
         }
@@ -649,9 +649,9 @@ mod tests {
     }
 
     #[test]
-    fn comparison_scenes_match_the_spec_tables() {
-        // B1 (scenes.md): vertex a and q at t = 0.2 and t = 1.2, six decimals.
-        let b1 = scene("triangle7").unwrap();
+    fn comparison_presets_match_the_spec_tables() {
+        // B1 (presets.md): vertex a and q at t = 0.2 and t = 1.2, six decimals.
+        let b1 = preset("triangle7").unwrap();
         assert!(close(
             &b1.poses[1],
             [0.4, 0.451714, 0.02],
@@ -663,14 +663,14 @@ mod tests {
             [0.248175, 0.714976, 0.529249, 0.383555]
         ));
         // C2 keeps the negative w of its last key; its origin follows the parabola.
-        let c2 = scene("rb_ibeam7").unwrap();
+        let c2 = preset("rb_ibeam7").unwrap();
         assert!(close(
             &c2.poses[6],
             [12.0, 0.0, -0.05],
             [-0.172827, 0.217600, 0.605166, 0.746026]
         ));
         for id in ["triangle7", "rb_sphere7", "rb_ibeam7", "rb_molecule4"] {
-            assert!(!scene(id).unwrap().closed, "{id} is an open sequence");
+            assert!(!preset(id).unwrap().closed, "{id} is an open sequence");
         }
     }
 }

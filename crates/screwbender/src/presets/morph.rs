@@ -11,8 +11,8 @@
 use glam::DVec3;
 
 use crate::error::{Error, ErrorKind};
-use crate::scenes::mesh::Mesh;
-use crate::scenes::Shape;
+use crate::presets::mesh::Mesh;
+use crate::presets::Shape;
 
 /// Latitude bands of the direction sphere ([`morph_mesh`]); longitudes are twice as many.
 pub const MORPH_RESOLUTION: usize = 24;

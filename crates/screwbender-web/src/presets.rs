@@ -1,4 +1,4 @@
-//! The scene presets ([`screwbender::scenes`]) for JavaScript: a list to show, and lookup by id.
+//! The presets ([`screwbender::presets`]) for JavaScript: a list to show, and lookup by id.
 
 use std::sync::OnceLock;
 
@@ -7,13 +7,13 @@ use wasm_bindgen::prelude::*;
 
 use super::convert::to_js;
 use super::options::scheme_name;
-use screwbender::scenes::{self, Scene, Shape};
+use screwbender::presets::{self, Preset, Shape};
 use screwbender::{Error, ErrorKind};
 
-/// One scene preset as listed by `scenes()`.
+/// One preset as listed by `presets()`.
 #[derive(Serialize)]
 #[serde(rename_all = "camelCase")]
-struct SceneInfo {
+struct PresetInfo {
     id: &'static str,
     label: &'static str,
     figure: &'static str,
@@ -26,11 +26,11 @@ struct SceneInfo {
     morph_shapes: Vec<Shape>,
 }
 
-/// The comma-separated scene ids, for error messages.
-fn scene_ids() -> &'static str {
+/// The comma-separated preset ids, for error messages.
+fn preset_ids() -> &'static str {
     static IDS: OnceLock<String> = OnceLock::new();
     IDS.get_or_init(|| {
-        scenes::scenes()
+        presets::all()
             .iter()
             .map(|s| s.id)
             .collect::<Vec<_>>()
@@ -38,27 +38,27 @@ fn scene_ids() -> &'static str {
     })
 }
 
-/// The scene with this id, or an `UnknownValue` error listing the ids.
-pub(crate) fn find_scene(id: &str) -> Result<Scene, Error> {
-    scenes::scene(id).ok_or_else(|| {
+/// The preset with this id, or an `UnknownValue` error at `path` listing the ids.
+pub(crate) fn find_preset(id: &str, path: &'static str) -> Result<Preset, Error> {
+    presets::preset(id).ok_or_else(|| {
         Error::new(
-            "scene",
+            path,
             ErrorKind::UnknownValue {
                 value: id.to_string(),
-                expected: scene_ids(),
+                expected: preset_ids(),
             },
         )
     })
 }
 
-/// The scene presets reproducing the paper's figures (id, label, figure, description, closed,
+/// The presets reproducing the papers' figures (id, label, figure, description, closed,
 /// default scheme and levels, pose count, the object to draw). Load one with
-/// `Motion.fromScene(id)`.
-#[wasm_bindgen(unchecked_return_type = "SceneInfo[]")]
-pub fn scenes() -> Result<JsValue, JsError> {
-    let list: Vec<SceneInfo> = scenes::scenes()
+/// `Motion.fromPreset(id)`.
+#[wasm_bindgen(unchecked_return_type = "PresetInfo[]")]
+pub fn presets() -> Result<JsValue, JsError> {
+    let list: Vec<PresetInfo> = presets::all()
         .into_iter()
-        .map(|s| SceneInfo {
+        .map(|s| PresetInfo {
             id: s.id,
             label: s.label,
             figure: s.figure,
@@ -72,4 +72,12 @@ pub fn scenes() -> Result<JsValue, JsError> {
         })
         .collect();
     to_js(&list)
+}
+
+/// Former name of `presets()`, kept for one release.
+///
+/// @deprecated Renamed to `presets()`.
+#[wasm_bindgen(js_name = scenes, unchecked_return_type = "PresetInfo[]")]
+pub fn scenes_alias() -> Result<JsValue, JsError> {
+    presets()
 }

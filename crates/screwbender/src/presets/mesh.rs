@@ -9,7 +9,7 @@
 use glam::DVec3;
 
 use crate::error::{Error, ErrorKind};
-use crate::scenes::{self, Shape};
+use crate::presets::{self, Shape};
 
 /// Segments around the circumference of cylinders, cones and spheres.
 pub const ROUND_SEGMENTS: u32 = 32;
@@ -648,12 +648,12 @@ fn base64_decode(text: &str) -> Option<Vec<u8>> {
 }
 
 impl Mesh {
-    /// The mesh for a name: a named object ([`crate::scenes::object_shape`]), a scene's own
+    /// The mesh for a name: a named object ([`crate::presets::object_shape`]), a scene's own
     /// object (`scene:<id>`), the `k`-th morph shape of a scene (`morph:<id>:<k>`), or the
     /// gizmo parts `unit-sphere` / `unit-cone` (radius 1, cone apex at `z = +1`, base at
     /// `z = 0`). Unknown names are an [`ErrorKind::UnknownValue`] at `mesh`.
     pub fn named(name: &str) -> Result<Mesh, Error> {
-        if let Some(shape) = scenes::object_shape(name) {
+        if let Some(shape) = presets::object_shape(name) {
             return Ok(Mesh::from_shape(&shape));
         }
         let unknown = || {
@@ -672,7 +672,7 @@ impl Mesh {
             _ => {}
         }
         let mut parts = name.split(':');
-        let scene = |id: Option<&str>| id.and_then(scenes::scene).ok_or_else(unknown);
+        let scene = |id: Option<&str>| id.and_then(presets::preset).ok_or_else(unknown);
         match parts.next() {
             Some("scene") => Ok(Mesh::from_shape(&scene(parts.next())?.shape)),
             Some("morph") => {
