@@ -28,23 +28,13 @@
 //!
 //! ## Conventions
 //!
-//! * **Poses** map local to world coordinates: `p_world = O + R p_local`, with `R`'s columns the
-//!   images `I, J, K` of the local axes. Frames are right-handed.
-//! * **Quaternions** are Hamilton, and in every file and JS API they are written **`[w, x, y, z]`,
-//!   scalar first** ([`quat_from_wxyz`] / [`quat_to_wxyz`] are the one place where glam's
-//!   `x, y, z, w` storage is converted). `q` and `−q` are the same rotation: poses are compared
-//!   with [`Pose::approx_eq`] / [`Pose::distance`].
-//! * **Composition**: `a.compose(&b)` is `a ∘ b`, "first `b`, then `a`". Changing the object's
-//!   local frame by `C` turns `P` into `P ∘ C`; moving the world by `G` turns it into `G ∘ P`.
-//! * **Angles** are in radians.
-//! * **`screw(a, t, b)`** — argument order *start, fraction, end* — is the pose after the fraction
-//!   `t` of the screw motion from `a` to `b`: `t = 0` is `a`, `t = 1` is `b`, any real `t` is
-//!   allowed. The V2 paper writes it `s(a, t, b)`, V1 `screw(L0, t, L1)`.
-//! * **Parameters** are in *coarse units*: control pose `i` sits at `u = i`; after `ℓ` levels,
-//!   refined pose `j` sits at `u = j / 2^ℓ`. Cycles of `n` poses have domain `[0, n)`, open
-//!   sequences of `m` poses `[0, m − 1]`.
-//! * **Slots**: one subdivision step maps input `i` to output `2i` (the old slot) and inserts the
-//!   new pose between `i` and `i + 1` at `2i + 1`.
+//! Quaternions are Hamilton and written **`[w, x, y, z]`, scalar first** in every file and API
+//! ([`quat_from_wxyz`] / [`quat_to_wxyz`] convert glam's storage); angles in radians; frames
+//! right-handed, a pose maps local to world (`p_world = O + R p_local`); **`screw(a, t, b)`** is
+//! *start, fraction, end*; control pose `i` sits at `u = i`. `q` and `−q` are the same rotation,
+//! so poses are compared with [`Pose::approx_eq`] / [`Pose::distance`]. The full statement, with
+//! the slot convention, the input tolerances and a glossary, is the repository's
+//! `docs/math/conventions.md`.
 //!
 //! ## Where each rule comes from
 //!
