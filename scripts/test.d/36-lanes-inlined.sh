@@ -7,9 +7,8 @@
 # inlined into such a function. Any helper that the compiler declines to inline there (a function
 # passed as a value is called through its `FnOnce` shim, which is not always inlined) is compiled
 # without those features, and then every lane operation in it becomes a call: the results stay
-# the same, but the subdivisions ran 3.5–4.5× as long natively until this was found (the
-# 2026-12-02 regression in `screw::kernel::regular_at`). Tests cannot see it and timed tests are
-# not allowed here, so the compiled code itself is checked.
+# the same, but the subdivisions take several times as long. Tests cannot see it and timed tests
+# are not allowed here, so the compiled code itself is checked.
 #
 # Allowed: the zero lanes that `Avx8::detect` / `Avx4::detect` build before the dispatch (once per
 # batch) and the feature detection's `xgetbv`.

@@ -2,9 +2,9 @@
 //! generated `.d.ts` and referenced from the exports through `unchecked_param_type` /
 //! `unchecked_return_type`.
 //!
-//! Keep them in step with `convert.rs` (pose and document objects, `ScrewInfo`), `options.rs`
-//! (`SubdivisionOptions`) and `presets.rs` (`PresetInfo`, `Shape`); `tests/js/api.test.mjs`
-//! checks the shapes at run time.
+//! The values themselves are built by `convert/` (pose and document objects, `ScrewInfo`),
+//! `options.rs` (`SubdivisionOptions`) and `presets.rs` (`PresetInfo`, `Shape`); nothing ties
+//! the two at compile time, so `tests/js/api.test.mjs` checks the shapes at run time.
 
 use wasm_bindgen::prelude::*;
 

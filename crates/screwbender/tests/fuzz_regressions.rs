@@ -2,9 +2,9 @@
 //! one target's checks on given input bytes, and every input a fuzzer ever crashed on becomes a
 //! named `#[test]` here, its bytes inline, next to the fix.
 //!
-//! The 600 s runs of 2026-11-22 found no crash. The inputs below are the ones the same session's
-//! randomized JS calls found (huge finite values that overflowed inside the math), replayed
-//! through the fuzz targets' checks, plus edge inputs of each target kept as a floor.
+//! The inputs below are the ones the randomized JS calls found (huge finite values that
+//! overflowed inside the math), replayed through the fuzz targets' checks, plus edge inputs of
+//! each target kept as a floor (docs/fuzzing.md has the fuzzers' runs).
 #![cfg(not(target_arch = "wasm32"))]
 
 use screwbender::{

@@ -105,9 +105,8 @@ pub(crate) fn sin_cos_kernel<R: Real>(x: R) -> (R, R) {
 /// is the identity and the quadrant step changes nothing. In a subdivision's finer levels every
 /// span is short, so every group goes this way, and the branch is predictable; for the batch's
 /// random pairs at `t = 0.3`, too (`|tθ/2| ≤ 0.3·π/2`). Unlike the one-`f64` route, on wasm32
-/// too: with it and the append that needs no growth call (`screw/batch.rs`), the subdivisions
-/// run there 0.84–0.95× as long (`benches/wasm/compare.mjs`), for about 150 bytes gzip of the
-/// math module (the second copy of the series).
+/// too, where with the append that needs no growth call (`screw/batch.rs`) it shortens the
+/// subdivisions (`benches/wasm/compare.mjs`) for the small price of a second copy of the series.
 #[inline(always)]
 pub(crate) fn sin_cos_kernel_lanes<R: Real>(x: R) -> (R, R) {
     if x.all(|v| v.abs() <= NO_REDUCTION_LIMIT) {

@@ -14,8 +14,8 @@ use crate::screw::Screw;
 /// `N` poses, lane `k` holding pose `k` (lanes of the kind of `proto`).
 #[inline(always)]
 fn load<L: Width<N>, const N: usize>(proto: L, p: [&Pose; N]) -> (V3<L>, Q<L>) {
-    // By rows of four numbers, which AVX-512 transposes in whole registers (`Width::rows4`):
-    // with the pipelined batch below, 0.93× the time of a `gather` per coordinate. The origin's
+    // By rows of four numbers, which AVX-512 transposes in whole registers (`Width::rows4`),
+    // fewer instructions than a `gather` per coordinate (docs/speed/one-call-screw.md). The origin's
     // row carries the rotation's x as a fourth entry, not used, so that the row is the pose's
     // first four numbers (one load where the layout allows).
     let [ox, oy, oz, _] = proto.rows4(|k| {
@@ -37,10 +37,9 @@ fn push<L: Width<N>, const N: usize>(out: &mut Vec<Pose>, (o, q): (V3<L>, Q<L>))
     // Every caller in this file reserves room for all it appends, so the vector never grows
     // here. That is checked by a path that does not return, rather than left to the copy, whose
     // growth path is a call: every number read from the lanes would be live across that call,
-    // and V8 keeps such values on the stack (70 of the 197 instructions per group of four of its
-    // code for a subdivision's sampling loop, 39 of 123 without the call; the subdivisions run
-    // 0.96–0.98× as long). An abort, not a panic, in release builds: it is reachable only by a
-    // mistake in this file, and the panic's message costs the math module 30 bytes.
+    // and V8 keeps such values on the stack, spilling a third of the sampling loop's
+    // instructions. An abort, not a panic, in release builds: it is reachable only by a mistake in
+    // this file, and a panic's message would be carried by the size-budgeted math module.
     if out.capacity() - out.len() < N {
         if cfg!(debug_assertions) {
             panic!("no room reserved for the lanes");
@@ -115,14 +114,13 @@ mod pipeline {
     ///
     /// Natively three groups are in flight, each in its own stage, so the processor finds
     /// independent work beside each group's long chain (the square root, the arctangent's
-    /// division and series, then the sine and cosine), where one group at a time left it waiting:
-    /// 1.23–1.28× the batch's speed with AVX-512, 1.15–1.20× with AVX2. The stages run oldest
+    /// division and series, then the sine and cosine), where one group at a time left it waiting.
+    /// The stages run oldest
     /// group first in program order (the last stage of the group started two turns ago, then the
     /// second of the previous one, then the new group's loads): the processor then gives its
     /// ports to the oldest work first, which is also the work whose inputs have waited longest,
-    /// and the new group's square root, last, no longer holds up retirement. The reverse order
-    /// had 0.86–0.90× this speed with AVX-512, 0.77–0.84× with four lanes and 0.82–0.84× with two
-    /// (docs/speed/one-call-screw.md).
+    /// and the new group's square root, last, no longer holds up retirement (every order is
+    /// measured in docs/speed/one-call-screw.md).
     #[inline(always)]
     pub(super) fn whole_groups<'p, L: Width<N>, const N: usize>(
         proto: L,
@@ -211,8 +209,8 @@ mod pipeline {
 use pipeline::whole_groups;
 
 /// [`whole_groups`] on wasm32: one group at a time ([`screw_group`]). The pipeline's stages,
-/// each with the kernel inlined, added about 6 KB gzip to the math module, whose size is
-/// budgeted.
+/// each with the kernel inlined, would grow the math module, whose size is budgeted, for an
+/// engine that does not reorder instructions across them.
 #[cfg(target_arch = "wasm32")]
 #[inline(always)]
 fn whole_groups<'p, L: Width<N>, const N: usize>(

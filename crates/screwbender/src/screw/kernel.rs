@@ -123,11 +123,10 @@ pub(crate) fn regular_span_with<R: Real, const GROUPS: bool>(
 /// lane is a rare case (see [`regular_span`]): [`regular_span_with`] up to its decision.
 ///
 /// With `GROUPS` (the batches), natively, the four tests make one branch: the lanes' four
-/// comparisons are combined first (in mask registers with AVX-512; the batch of full screws ran
-/// 1.02× as fast there, median of eight alternating runs). The one-`f64` route keeps four
-/// branches, each taken only on a rare case: there one combined test made the one-call screw
-/// slower (1.56× → 1.49× `sclerp`), as it did wasm32's subdivisions (1.01–1.03× the time in
-/// Node).
+/// comparisons are combined first (in mask registers with AVX-512), so a group pays one
+/// predictable branch. The one-`f64` route and wasm32 keep four branches, each taken only on a
+/// rare case: there the combining work sits on the call's critical path and costs more than the
+/// branches it saves (docs/speed/one-call-screw.md).
 #[inline(always)]
 pub(crate) fn regular_relative<R: Real, const GROUPS: bool>(
     oa: V3<R>,

@@ -69,7 +69,7 @@ pub fn screw(a: &Pose, t: f64, b: &Pose) -> Pose {
 }
 
 /// [`screw`] for any processor. (One out-of-line copy elsewhere than x86-64: inlined into
-/// every caller of [`screw`] it added 1.7 KB gzip to the budgeted wasm module.)
+/// every caller of [`screw`] it would be copied many times into the size-budgeted wasm module.)
 #[cfg_attr(target_arch = "x86_64", inline(always))]
 #[cfg_attr(not(target_arch = "x86_64"), inline(never))]
 fn screw_scalar(a: &Pose, t: f64, b: &Pose) -> Pose {

@@ -513,7 +513,7 @@ fn extend_open_into<T: Blend>(input: &[T], k: usize, e: &mut Vec<T>) {
 /// computed once), then the midpoints are taken in a second batch.
 // Never inlined (as `split_tweak_step`): called once per level, so the call costs nothing, and
 // every caller (`refine_cycle`, `step_cyclic`, the teaching steps) shares one copy per `T`
-// instead of inlining its own (3.3 KB gzip of the npm module).
+// instead of inlining its own into the size-budgeted npm module.
 #[inline(never)]
 fn direct_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>, scratch: &mut Scratch<T>) {
     let n = p.len();

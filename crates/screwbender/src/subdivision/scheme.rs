@@ -12,7 +12,7 @@ use crate::error::{Error, ErrorKind};
 /// overflows to infinities within the level cap. `±4` keeps the growth below `3²⁰ ≈ 3.5·10⁹`.
 pub const MAX_J_PARAMETER: f64 = 4.0;
 
-/// A subdivision scheme (docs/math/point-rules.md, docs/math/subdivision.md; issue "J_s family").
+/// A subdivision scheme (docs/math/point-rules.md, docs/math/subdivision.md).
 ///
 /// The three named schemes are the paper's; [`Scheme::J`] is the Rossignac–Schaefer J-spline
 /// family applied to screws, which contains them: `J(0)` = 4-point, `J(0.5)` = Jarek,
