@@ -179,7 +179,7 @@ pub mod scenes {
     }
 }
 pub use subdivision::blend::Blend;
-pub use subdivision::decoupled::{
+pub use subdivision::componentwise::{
     compare_frames, move_local_origin, subdivide_decoupled, DecoupledPose, FrameComparison,
 };
 pub use subdivision::scheme::{Rules, Scheme, MAX_J_PARAMETER};

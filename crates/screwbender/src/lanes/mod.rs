@@ -21,6 +21,7 @@ mod avx512;
 #[cfg(lanes)]
 mod dispatch;
 #[cfg(portable_lanes)]
+pub(crate) mod pair;
 mod portable;
 mod real;
 pub(crate) mod trig;

@@ -5,7 +5,7 @@
 //! most a few hundred variables, needs nothing but `Vec<f64>`, and must run unchanged (and
 //! deterministically, without a clock) in the browser.
 
-use super::pair::P;
+use crate::lanes::pair::P;
 
 /// Options of [`minimize`].
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -45,18 +45,15 @@
 //! panics (NaN parameters give NaN poses).
 
 mod algebra;
-mod barr;
-mod decoupled;
+mod catmull_rom_squad;
 mod gauss;
 mod kim_kim_shin;
 mod lbfgs;
 mod metrics;
-mod pair;
 mod polynomial;
 mod positions;
-mod quaternion_spline;
+mod ramamoorthi_barr;
 mod rational;
-mod rb_optimizer;
 mod registry;
 mod slerp_polyline;
 mod triangle;
@@ -65,7 +62,7 @@ mod triangle;
 use crate::motion::Motion;
 
 // Methods and their registry.
-pub use decoupled::DecoupledSmooth;
+pub use catmull_rom_squad::DecoupledSmooth;
 pub use kim_kim_shin::KimKimShin;
 pub use registry::{Method, COMPARISON_LEVELS};
 pub use slerp_polyline::SlerpPolyline;
@@ -81,18 +78,18 @@ pub use triangle::{
 };
 
 // Ramamoorthi & Barr, and the discrete baseline of Barr et al.
-pub use barr::{
+pub use ramamoorthi_barr::barr::{
     fit_barr, BarrBaseline, BarrFit, BarrOptions, BARR_RELATIVE_DECREASE,
     DEFAULT_BARR_FRAMES_PER_INTERVAL, MAX_BARR_FRAMES,
 };
-pub use quaternion_spline::{
-    euler_lagrange, integrand, EulerLagrange, Frame, HermiteQuatSpline, FRAME_TIME_TOLERANCE,
-    MAX_SPLINE_SAMPLES,
-};
-pub use rb_optimizer::{
+pub use ramamoorthi_barr::optimizer::{
     fit_quaternion_spline, initial_spline, optimise_spline, Insertion, RamamoorthiBarr, RbFit,
     RbOptions, RbStage, DEFAULT_ALPHA, DEFAULT_GAUSS_NODES, DEFAULT_MIN_RELATIVE_DECREASE,
     DEFAULT_SEGMENTS_PER_INTERVAL, DEFAULT_VARIABLE_FRAMES, MAX_RB_FRAMES,
+};
+pub use ramamoorthi_barr::spline::{
+    euler_lagrange, integrand, EulerLagrange, Frame, HermiteQuatSpline, FRAME_TIME_TOLERANCE,
+    MAX_SPLINE_SAMPLES,
 };
 
 // Metrics.

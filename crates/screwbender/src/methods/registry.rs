@@ -3,11 +3,11 @@
 use std::fmt;
 use std::str::FromStr;
 
-use super::barr::{BarrBaseline, BarrOptions};
-use super::decoupled::DecoupledSmooth;
+use super::catmull_rom_squad::DecoupledSmooth;
 use super::kim_kim_shin::KimKimShin;
+use super::ramamoorthi_barr::barr::{BarrBaseline, BarrOptions};
+use super::ramamoorthi_barr::optimizer::{RamamoorthiBarr, RbOptions};
 use super::rational::{Continuity, EndCondition, RationalMotion};
-use super::rb_optimizer::{RamamoorthiBarr, RbOptions};
 use super::slerp_polyline::SlerpPolyline;
 use super::triangle::ReferenceTriangle;
 use crate::error::{Error, ErrorKind};

@@ -6,7 +6,7 @@
 //! step's input (simultaneous update).
 
 pub(crate) mod blend;
-pub(crate) mod decoupled;
+pub(crate) mod componentwise;
 pub(crate) mod scheme;
 pub(crate) mod split_tweak;
 #[cfg(not(target_arch = "wasm32"))]

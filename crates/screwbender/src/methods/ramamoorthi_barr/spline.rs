@@ -3,14 +3,14 @@
 //! Euler–Lagrange error used to place variable frames (docs/math/quaternion-splines.md §2–§5).
 //!
 //! The spline lives in R⁴ (its values are not unit quaternions); the rotation it describes is
-//! `q/|q|`. Quaternion-valued 4-vectors are stored in [`DQuat`] (see [`super::algebra`]).
+//! `q/|q|`. Quaternion-valued 4-vectors are stored in [`DQuat`] (see `methods::algebra`).
 
 use glam::DQuat;
 
-use super::gauss::gauss_legendre;
-use super::pair::P;
-use super::polynomial::HERMITE_POWER;
 use crate::error::{check_finite, Error, ErrorKind};
+use crate::lanes::pair::P;
+use crate::methods::gauss::gauss_legendre;
+use crate::methods::polynomial::HERMITE_POWER;
 
 /// Largest number of segments per keyframe interval and of samples accepted by
 /// [`HermiteQuatSpline::segment_deviations`] and [`HermiteQuatSpline::unit_deviation`] (larger
@@ -535,7 +535,7 @@ impl HermiteQuatSpline {
 
     fn eval_piece(&self, j: usize, s: f64) -> [DQuat; 4] {
         let p = self.piece(j);
-        super::polynomial::hermite_d3(p.p0, p.m0, p.p1, p.m1, p.dt, s)
+        crate::methods::polynomial::hermite_d3(p.p0, p.m0, p.p1, p.m1, p.dt, s)
     }
 
     /// The number of free variables (4 per free position or velocity).
@@ -767,7 +767,8 @@ impl HermiteQuatSpline {
             let t = c0 + len * x;
             // Local fraction on piece j (the cut lies inside the piece).
             let s = (t - p.t0) / p.dt;
-            let [q, q1, q2, q3] = super::polynomial::hermite_d3(p.p0, p.m0, p.p1, p.m1, p.dt, s);
+            let [q, q1, q2, q3] =
+                crate::methods::polynomial::hermite_d3(p.p0, p.m0, p.p1, p.m1, p.dt, s);
             let el = euler_lagrange(
                 q,
                 q1,
@@ -833,8 +834,8 @@ impl HermiteQuatSpline {
 
 #[cfg(test)]
 mod tests {
-    use super::super::polynomial::hermite_basis;
     use super::*;
+    use crate::methods::polynomial::hermite_basis;
 
     /// The objective and gradient computed the plain way, on [`DQuat`] with the Hermite basis at
     /// every node and the gradient summed per frame (how they were computed before the power

@@ -6,12 +6,12 @@
 use glam::{DQuat, DVec3};
 use serde::Serialize;
 
-use super::algebra::{angular_rates, canonical_signs, normalised, velocity_from_omega};
-use super::gauss::MAX_GAUSS_NODES;
-use super::lbfgs::{minimize, LbfgsOptions, LbfgsReport};
-use super::positions::CatmullRom;
-use super::quaternion_spline::{Frame, HermiteQuatSpline, FRAME_TIME_TOLERANCE};
+use super::spline::{Frame, HermiteQuatSpline, FRAME_TIME_TOLERANCE};
 use crate::error::{check_finite, Error, ErrorKind};
+use crate::methods::algebra::{angular_rates, canonical_signs, normalised, velocity_from_omega};
+use crate::methods::gauss::MAX_GAUSS_NODES;
+use crate::methods::lbfgs::{minimize, LbfgsOptions, LbfgsReport};
+use crate::methods::positions::CatmullRom;
 use crate::motion::{Kinematics, Motion};
 use crate::pose::{Pose, UNIT_QUATERNION_TOLERANCE};
 use crate::timing::check_increasing_times;
@@ -495,7 +495,7 @@ impl Motion for RamamoorthiBarr {
     }
 
     /// Closed form: rotation rates from `q, q', q''` of the Hermite piece (see
-    /// [`super::angular_rates`]), translation from the Catmull–Rom piece.
+    /// [`crate::methods::algebra::angular_rates`]), translation from the Catmull–Rom piece.
     fn kinematics_at(&self, t: f64, local: DVec3) -> Option<Kinematics> {
         let [q, q1, q2, _] = self.fit.spline.eval(t);
         let (omega, alpha) = angular_rates(q, q1, q2);

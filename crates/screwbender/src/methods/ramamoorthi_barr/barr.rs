@@ -6,10 +6,10 @@
 
 use glam::{DQuat, DVec3, DVec4};
 
-use super::algebra::{canonical_signs, normalised};
-use super::positions::CatmullRom;
-use super::rb_optimizer::DEFAULT_ALPHA;
+use super::optimizer::DEFAULT_ALPHA;
 use crate::error::{Error, ErrorKind};
+use crate::methods::algebra::{canonical_signs, normalised};
+use crate::methods::positions::CatmullRom;
 use crate::motion::Motion;
 use crate::pose::Pose;
 
@@ -411,7 +411,7 @@ pub fn fit_barr(times: &[f64], keys: &[DQuat], options: &BarrOptions) -> Result<
 
 /// The discrete method of Barr et al. as a motion: the rotation between two frames by SLERP of
 /// the normalised frames, the translation the [`CatmullRom`] interpolant of the origins (as for
-/// [`super::RamamoorthiBarr`]). Open motions only.
+/// [`super::optimizer::RamamoorthiBarr`]). Open motions only.
 #[derive(Clone, Debug, PartialEq)]
 pub struct BarrBaseline {
     fit: BarrFit,
