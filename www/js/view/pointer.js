@@ -8,7 +8,9 @@
 //   drag(pt, e)   pointer moves during the tool's drag;   release()  its end
 //   hover(pt)     pointer moves with no button down;     cancel()   a second finger arrived
 //   click()       a press and release on empty space without moving (not a drag of the view)
-// All hooks are optional.
+// All hooks are optional. A touch gives the canvas the focus only once it acts on the figure (a
+// tap, an orbit that moved, a second finger): a swipe the browser takes to scroll the page
+// (touch-action pan-y, then pointercancel) leaves the focus where it was.
 import { local } from './picking.js';
 
 export function bindPointer(viewer, tool = {}) {
@@ -17,11 +19,12 @@ export function bindPointer(viewer, tool = {}) {
   let gesture = null; // {kind: 'orbit'|'pan'|'tool'|'pinch', ...}
   c.addEventListener('contextmenu', (e) => e.preventDefault());
   c.addEventListener('pointerdown', (e) => {
-    c.focus();
+    if (e.pointerType !== 'touch') c.focus();
     const pt = local(viewer, e);
     pointers.set(e.pointerId, pt);
     if (pointers.size === 2) {
       // Second finger: cancel any drag, start pinch/pan.
+      c.focus();
       tool.cancel?.();
       const [a, b] = [...pointers.values()];
       gesture = { kind: 'pinch', dist: Math.hypot(a[0] - b[0], a[1] - b[1]), mid: [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2] };
@@ -31,6 +34,7 @@ export function bindPointer(viewer, tool = {}) {
     const button = e.button;
     if (button === 0 && !e.altKey) {
       const took = tool.press?.(pt, e);
+      if (took) c.focus();
       if (took === 'drag') {
         gesture = { kind: 'tool' };
         return;
@@ -59,23 +63,29 @@ export function bindPointer(viewer, tool = {}) {
       camera.pan(mid[0] - gesture.mid[0], mid[1] - gesture.mid[1], viewer.pixelSize().cssH);
       gesture.dist = dist;
       gesture.mid = mid;
-      viewer.cameraMoved();
+      viewer.cameraMoved('user');
     } else if (gesture.kind === 'orbit' || gesture.kind === 'pan') {
       const dx = pt[0] - gesture.last[0];
       const dy = pt[1] - gesture.last[1];
       gesture.last = pt;
-      if (Math.hypot(pt[0] - gesture.start[0], pt[1] - gesture.start[1]) > 3) gesture.moved = true;
+      if (!gesture.moved && Math.hypot(pt[0] - gesture.start[0], pt[1] - gesture.start[1]) > 3) {
+        gesture.moved = true;
+        c.focus();
+      }
       if (gesture.kind === 'orbit') camera.orbit(dx, dy);
       else camera.pan(dx, dy, viewer.pixelSize().cssH);
       c.style.cursor = 'grabbing';
-      viewer.cameraMoved();
+      viewer.cameraMoved('user');
     }
   });
   const up = (e) => {
     pointers.delete(e.pointerId);
     if (!gesture) return;
     if (gesture.kind === 'tool') tool.release?.();
-    else if (gesture.kind === 'orbit' && !gesture.moved && e.type === 'pointerup') tool.click?.();
+    else if (gesture.kind === 'orbit' && !gesture.moved && e.type === 'pointerup') {
+      c.focus();
+      tool.click?.();
+    }
     c.style.cursor = 'grab';
     gesture = pointers.size === 0 ? null : gesture.kind === 'pinch' ? null : gesture;
   };
@@ -89,7 +99,7 @@ export function bindPointer(viewer, tool = {}) {
       e.preventDefault();
       const k = e.deltaMode === 1 ? 0.05 : 0.0015;
       viewer.camera.zoom(Math.exp(e.deltaY * k));
-      viewer.cameraMoved();
+      viewer.cameraMoved('user');
     },
     { passive: false },
   );
