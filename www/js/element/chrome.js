@@ -88,7 +88,13 @@ const BAR_KEYS = {
 export function bindChrome(fig) {
   const { bar, play, scrub, scheme, levels, frame } = fig.el;
   bar.addEventListener('keydown', (e) => {
-    if (!e.ctrlKey && !e.metaKey && !e.altKey && BAR_KEYS[e.target.tagName]?.includes(e.key)) e.stopPropagation();
+    if (e.ctrlKey || e.metaKey || e.altKey) return;
+    if (e.target.tagName === 'INPUT' && e.key === ' ') {
+      // Space on a slider plays or pauses, as on the canvas (a slider has no use for it).
+      e.preventDefault();
+      e.stopPropagation();
+      fig.guard(() => (fig.playing ? fig.pause() : fig.play()));
+    } else if (BAR_KEYS[e.target.tagName]?.includes(e.key)) e.stopPropagation();
   });
   play.addEventListener('click', () => fig.guard(() => (fig.playing ? fig.pause() : fig.play())));
   scrub.addEventListener('input', () =>

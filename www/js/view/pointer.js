@@ -42,7 +42,11 @@ export function bindPointer(viewer, tool = {}) {
       if (took) return;
     }
     const pan = button === 1 || button === 2 || e.shiftKey;
-    gesture = { kind: pan ? 'pan' : 'orbit', last: pt, start: pt, moved: false };
+    // A touch where the page may pan (the canvas's touch-action, read as the browser applies it)
+    // waits until the finger shows its direction: along the page's axis it is the page's scroll.
+    const pans = e.pointerType === 'touch' ? getComputedStyle(c).touchAction : 'none';
+    const yields = pans === 'pan-y' ? 'y' : pans === 'pan-x' ? 'x' : null;
+    gesture = { kind: pan ? 'pan' : 'orbit', last: pt, start: pt, moved: false, yields };
     c.setPointerCapture?.(e.pointerId);
   });
   c.addEventListener('pointermove', (e) => {
@@ -65,6 +69,16 @@ export function bindPointer(viewer, tool = {}) {
       gesture.mid = mid;
       viewer.cameraMoved('user');
     } else if (gesture.kind === 'orbit' || gesture.kind === 'pan') {
+      if (gesture.yields && !gesture.moved) {
+        const ax = Math.abs(pt[0] - gesture.start[0]);
+        const ay = Math.abs(pt[1] - gesture.start[1]);
+        if (Math.max(ax, ay) < 8) return;
+        if (gesture.yields === 'y' ? ay >= ax : ax >= ay) {
+          gesture = null;
+          return;
+        }
+        gesture.last = pt;
+      }
       const dx = pt[0] - gesture.last[0];
       const dy = pt[1] - gesture.last[1];
       gesture.last = pt;
