@@ -35,9 +35,12 @@ export function buildChrome(host) {
   };
   const schemes = [['bspline', 'B-spline'], ['fourpoint', '4-point'], ['jarek', 'Jarek']];
   fig.append(
-    node('canvas', { tabindex: '0', part: 'canvas', role: 'application', 'aria-label': DEFAULT_NAME }),
-    node('img', { class: 'poster', part: 'poster', alt: '', hidden: true }),
-    node('div', { class: 'still', hidden: true }),
+    // The 3-D view's box: the canvas, with the poster, the print still and the labels over it.
+    node('div', { class: 'view' },
+      node('canvas', { tabindex: '0', part: 'canvas', role: 'application', 'aria-label': DEFAULT_NAME }),
+      node('img', { class: 'poster', part: 'poster', alt: '', hidden: true }),
+      node('div', { class: 'still', hidden: true }),
+      node('div', { class: 'labels', part: 'labels' })),
     node('div', { class: 'bar', part: 'controls' },
       node('button', { class: 'play', type: 'button', 'aria-label': 'Play', text: '▶' }),
       node('input', { class: 'scrub', type: 'range', min: '0', max: '1000', value: '0', 'aria-label': 'Playback time' }),
@@ -50,7 +53,6 @@ export function buildChrome(host) {
         node('button', { class: 'frame', type: 'button', title: 'Frame all (A)', text: 'Frame' }))),
     node('div', { class: 'msg', role: 'alert', hidden: true }),
     node('div', { class: 'caption' }, node('slot')),
-    node('div', { class: 'labels', part: 'labels' }),
     node('div', { class: 'live', role: 'status', 'aria-live': 'polite', 'aria-atomic': 'true' }),
   );
   root.append(link, fig);

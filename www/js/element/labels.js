@@ -5,7 +5,8 @@
 // reach a label; a MutationObserver on the figure's own children keeps the assignment current.
 //
 // A label is a box (part "label", also "label-<k>") whose bottom centre sits
-// --screw-bender-label-offset (default 10px) above the pose; the page styles it with ::part or
+// --screw-bender-label-offset (default 10px) above the pose (placed in percent of the view's
+// box); the page styles it with ::part or
 // the variables of css/screw-bender.css.
 
 /** The pose a child labels, or null (a caption node). */
@@ -68,10 +69,15 @@ export class Labels {
   place() {
     const { viewer, model } = this.fig;
     const n = model.motion ? model.motion.poseCount : 0;
+    const { cssW, cssH } = viewer?.renderer ? viewer.pixelSize() : {};
     for (const [k, { box }] of this.boxes) {
       const p = viewer?.renderer && k < n ? viewer.toCanvas(model.motion.pose(k).origin) : null;
       box.hidden = !p;
-      if (p) box.style.translate = `${p.x.toFixed(1)}px ${p.y.toFixed(1)}px`;
+      // In percent of the view's box, so a printed still (stretched to the box) keeps them on it.
+      if (p) {
+        box.style.left = `${((100 * p.x) / cssW).toFixed(3)}%`;
+        box.style.top = `${((100 * p.y) / cssH).toFixed(3)}%`;
+      }
     }
   }
 
