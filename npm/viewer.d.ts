@@ -42,11 +42,55 @@ export interface ViewerOptions {
   theme?: 'light' | 'dark';
   /** A localStorage key: the figure saves its edits there and restores them (never without it). */
   persist?: string;
+  /** The figure's accessible name (default "3-D figure of a rigid motion"). */
+  alt?: string;
+  /** `lazy` (default): start when near the viewport; `eager`: start at once. */
+  loading?: 'lazy' | 'eager';
+  /** URL of an image shown until the first frame is drawn. */
+  poster?: string;
+  /**
+   * What a touch on the unfocused figure leaves to the page: `pan-y` (default: a vertical swipe
+   * scrolls the page, a sideways one orbits), `pan-x`, or `none` (the figure takes every touch).
+   * Once focused, the figure takes every touch. The attribute is `touch-action`.
+   */
+  touchAction?: 'pan-y' | 'pan-x' | 'none';
+  'touch-action'?: 'pan-y' | 'pan-x' | 'none';
 }
 
-/** What mount() returns (the element has the same members). */
+/** The camera as state: angles in radians, lengths in scene units (z up). */
+export interface CameraState {
+  /** Around z from +x. */
+  yaw: number;
+  /** Elevation, −π/2 to π/2. */
+  pitch: number;
+  /** From the target to the eye, > 0. */
+  distance: number;
+  /** The point the camera orbits and looks at. */
+  target: [number, number, number];
+  projection: 'perspective' | 'orthographic';
+}
+
+/** Options of toBlob and toDataURL. */
+export interface PictureOptions {
+  /** `image/png` (default), `image/jpeg` or `image/webp`. */
+  type?: 'image/png' | 'image/jpeg' | 'image/webp';
+  /** 0 to 1, for JPEG and WebP. */
+  quality?: number;
+  /** Times the drawing buffer (CSS size × devicePixelRatio), up to 8: drawn at that size, not scaled. Default 1. */
+  scale?: number;
+  /** A transparent background (PNG and WebP). Default false. */
+  transparent?: boolean;
+  /** Keep the selected pose's gizmo and the hover highlight in the picture. Default false. */
+  gizmo?: boolean;
+}
+
+/**
+ * A figure's script API: what mount() returns (the element has the same members but
+ * `destroy`). Playback follows HTMLMediaElement: times are seconds of the motion's own timing
+ * (pose i at `times[i]`, else at i s), over [start, start + duration].
+ */
 export interface ViewerHandle {
-  /** Resolves when the figure is drawn (or has shown its error message); never rejects. */
+  /** Resolves when the figure is drawn (a lazy one: once near the viewport) or has shown its error; never rejects. */
   readonly ready: Promise<void>;
   /** The motion document now shown (null before it loads); set to show another. */
   document: object | null;
@@ -54,36 +98,70 @@ export interface ViewerHandle {
   options: ViewerOptions & Partial<SubdivisionOptions>;
   /** `'WebGPU'`, `'WebGL2'`, or null before the start (or without graphics). */
   readonly backend: string | null;
-  play(): void;
+  /** The playhead in seconds; set it to seek (works while paused; fires `seeked`). */
+  currentTime: number;
+  /** The playback interval's length in seconds (NaN before the motion loads). */
+  readonly duration: number;
+  readonly paused: boolean;
+  /** Motion seconds per real second, −100 to 100 (negative plays backwards); starts as `speed`. */
+  playbackRate: number;
+  /** An open motion wraps at its end while playing (a cycle always does). */
+  loop: boolean;
+  /** The camera; set any of its fields (fires `camera-change` with source `'api'`). Null before the start. */
+  camera: CameraState | null;
+  /** Plays; with `repetitions` (a whole number ≥ 1), that many passes and then `ended`. */
+  play(options?: { repetitions?: number }): void;
   pause(): void;
-  /** Shows the moving object at parameter u (wrapped into the motion's domain). */
-  seek(u: number): void;
+  /** Shows the moving object at time t in seconds (the `currentTime` setter). */
+  seek(t: number): void;
+  /** A picture of the current view; rejects with a RangeError naming a bad option or before the start. */
+  toBlob(options?: PictureOptions): Promise<Blob>;
+  /** The same picture as a `data:` URL; throws a RangeError as toBlob rejects. */
+  toDataURL(options?: PictureOptions): string;
   /** Frees the figure's GPU data and listeners (mount only; the element does it on removal). */
   destroy(): void;
 }
 
-/** Event details. */
+/** The playhead of `time` and `timeupdate`: t in seconds, u the motion parameter, the interval in seconds. */
+export interface PlayheadDetail {
+  t: number;
+  u: number;
+  start: number;
+  end: number;
+}
+
+/** Event details (none of the events bubble). */
 export interface ViewerEventMap {
   change: CustomEvent<{ poses: Float64Array; index: number }>;
   select: CustomEvent<{ index: number }>;
-  time: CustomEvent<{ u: number; start: number; end: number }>;
+  time: CustomEvent<PlayheadDetail>;
+  timeupdate: CustomEvent<PlayheadDetail>;
+  play: CustomEvent<Record<string, never>>;
+  pause: CustomEvent<Record<string, never>>;
+  /** Playback reached an end by itself (an open motion without loop, or the last repetition). */
+  ended: CustomEvent<Record<string, never>>;
+  seeked: CustomEvent<Record<string, never>>;
+  ratechange: CustomEvent<Record<string, never>>;
+  /** The camera moved: `user` for the reader's gestures and keys, `api` for code. */
+  'camera-change': CustomEvent<{ source: 'user' | 'api'; camera: CameraState }>;
   error: CustomEvent<{ attribute: string | null; value: unknown; message: string }>;
 }
 
 /** Mounts a figure into `element` (its content becomes the caption); failures show in the figure. */
 export function mount(element: HTMLElement, options?: ViewerOptions): ViewerHandle;
 
-/** The class of <screw-bender> (defined when this module is imported). */
+/** The element's members are the handle's, but `destroy` (it frees itself when removed). */
+export interface ScrewBenderElement extends Omit<ViewerHandle, 'destroy'> {}
+
+/**
+ * The class of <screw-bender> (defined when this module is imported). Children with
+ * `slot="pose-3"` (or `slot="pose"` and `data-pose="3"`) label pose 3; the rest is the caption.
+ */
 export class ScrewBenderElement extends HTMLElement {
-  readonly ready: Promise<void>;
-  document: object | null;
-  options: ViewerOptions & Partial<SubdivisionOptions>;
-  readonly backend: string | null;
-  play(): void;
-  pause(): void;
-  seek(u: number): void;
   addEventListener<K extends keyof ViewerEventMap>(type: K, listener: (this: ScrewBenderElement, ev: ViewerEventMap[K]) => unknown, options?: boolean | AddEventListenerOptions): void;
   addEventListener(type: string, listener: EventListenerOrEventListenerObject, options?: boolean | AddEventListenerOptions): void;
+  removeEventListener<K extends keyof ViewerEventMap>(type: K, listener: (this: ScrewBenderElement, ev: ViewerEventMap[K]) => unknown, options?: boolean | EventListenerOptions): void;
+  removeEventListener(type: string, listener: EventListenerOrEventListenerObject, options?: boolean | EventListenerOptions): void;
 }
 
 /** The attribute names the element watches. */

@@ -408,7 +408,11 @@ test(`${BACKEND}: a <screw-bender> figure seeks in seconds of its motion's key t
   try {
     await fig.goto(`${play.url}examples/course.html`);
     await fig.waitForFunction(() => customElements.get('screw-bender'));
-    await fig.evaluate(() => document.getElementById('fig-fourpoint').ready);
+    await fig.evaluate(() => {
+      const el = document.getElementById('fig-fourpoint');
+      el.scrollIntoView({ block: 'center' });
+      return el.ready;
+    });
     await fig.evaluate((t) => {
       const el = document.getElementById('fig-fourpoint');
       el.document = { ...el.document, times: t };

@@ -23,7 +23,11 @@ test('no WebGPU and no WebGL: each figure says it needs WebGPU or WebGL2', async
     await page.waitForFunction(() => customElements.get('screw-bender'));
     const figs = await page.evaluate(async () => {
       const els = [...document.querySelectorAll('screw-bender')];
-      await Promise.all(els.map((e) => e.ready));
+      // Figures start lazily near the viewport: every one is started here.
+      await Promise.all(els.map((e) => {
+        e.setAttribute('loading', 'eager');
+        return e.ready;
+      }));
       return els.map((e) => ({
         id: e.id,
         message: e.shadowRoot.querySelector('.msg').textContent,

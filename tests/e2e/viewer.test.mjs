@@ -49,7 +49,11 @@ async function open(path) {
   page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
   await page.goto(`${play.url}${path}`);
   await page.waitForFunction(() => customElements.get('screw-bender'));
-  await page.evaluate(() => Promise.all([...document.querySelectorAll('screw-bender')].map((e) => e.ready)));
+  // Figures start lazily, near the viewport; these tests want every figure of the page started.
+  await page.evaluate(() => Promise.all([...document.querySelectorAll('screw-bender')].map((e) => {
+    e.setAttribute('loading', 'eager');
+    return e.ready;
+  })));
   return { page, problems };
 }
 
@@ -185,6 +189,7 @@ test('persist="key": the figure restores its saved motion from that key and save
       ] }, options: { scheme: 'fourpoint', levels: 2, j: 0, rules: 'direct' } };
       localStorage.setItem('course.fig', JSON.stringify(saved));
       const el = document.createElement('screw-bender');
+      el.setAttribute('loading', 'eager');
       el.setAttribute('scene', 'circle4');
       el.setAttribute('persist', 'course.fig');
       el.setAttribute('editable', '');
@@ -313,6 +318,7 @@ test('bad attributes and sources: a message naming attribute and value in that f
       const out = [];
       for (const [name, value] of list) {
         const el = document.createElement('screw-bender');
+        el.setAttribute('loading', 'eager');
         const events = [];
         el.addEventListener('error', (e) => events.push(e.detail));
         el.setAttribute(name, value);
@@ -323,6 +329,7 @@ test('bad attributes and sources: a message naming attribute and value in that f
       }
       // Inline JSON that is not JSON.
       const el = document.createElement('screw-bender');
+      el.setAttribute('loading', 'eager');
       const events = [];
       el.addEventListener('error', (e) => events.push(e.detail));
       const s = document.createElement('script');
@@ -374,6 +381,7 @@ test('a src motion file loads; figures created and removed 50 times leave no err
   try {
     const loaded = await page.evaluate(async () => {
       const el = document.createElement('screw-bender');
+      el.setAttribute('loading', 'eager');
       el.setAttribute('src', 'two-poses.json');
       document.querySelector('main').append(el);
       await el.ready;
@@ -392,6 +400,7 @@ test('a src motion file loads; figures created and removed 50 times leave no err
       ] };
       const payload = encodeHash({ version: 1, document: doc, options: { scheme: 'jarek', levels: 3, j: 0.5, rules: 'direct' }, view: { strobe: 12 } });
       const el = document.createElement('screw-bender');
+      el.setAttribute('loading', 'eager');
       el.setAttribute('share', `https://example.org/screwbender/#s=${payload}`);
       document.querySelector('main').append(el);
       await el.ready;
@@ -410,6 +419,7 @@ test('a src motion file loads; figures created and removed 50 times leave no err
         const els = [];
         for (let k = 0; k < 10; k++) {
           const el = document.createElement('screw-bender');
+          el.setAttribute('loading', 'eager');
           el.setAttribute('scene', k % 2 ? 'circle4' : 'l_cycle_rotated');
           el.setAttribute('autoplay', '');
           box.append(el);
@@ -480,7 +490,10 @@ test('phones (320 and 390 px, touch): the control bar shows play, scrubber and a
       page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
       await page.goto(`${play.url}${COURSE}`);
       await page.waitForFunction(() => customElements.get('screw-bender'));
-      await page.evaluate(() => Promise.all([...document.querySelectorAll('screw-bender')].map((e) => e.ready)));
+      await page.evaluate(() => Promise.all([...document.querySelectorAll('screw-bender')].map((e) => {
+        e.setAttribute('loading', 'eager');
+        return e.ready;
+      })));
       /** The boxes of figure `id`'s bar parts and the time label's text, width and colours. */
       const parts = (id) =>
         page.evaluate((i) => {

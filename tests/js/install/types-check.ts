@@ -73,5 +73,24 @@ figEl.addEventListener('change', (e) => console.log(e.detail.poses.length, e.det
 figEl.addEventListener('error', (e) => console.log(e.detail.attribute, e.detail.message));
 // @ts-expect-error: not a controls value
 mount(document.createElement('div'), { controls: 'most' });
+// The media-element API, the camera, pictures, and their events.
+figEl.currentTime = 1.5;
+figEl.playbackRate = -1;
+figEl.loop = false;
+figEl.play({ repetitions: 2 });
+const paused: boolean = figEl.paused;
+const duration: number = fig.duration;
+figEl.addEventListener('camera-change', (e) => console.log(e.detail.source === 'user', e.detail.camera.yaw));
+figEl.addEventListener('timeupdate', (e) => console.log(e.detail.t));
+figEl.addEventListener('ended', () => console.log(figEl.currentTime));
+if (figEl.camera) figEl.camera = { ...figEl.camera, projection: 'orthographic' };
+const picture: Promise<Blob> = fig.toBlob({ type: 'image/png', scale: 2, transparent: true });
+const still: string = figEl.toDataURL({ type: 'image/jpeg', quality: 0.9 });
+mount(document.createElement('div'), { loading: 'eager', poster: 'poster.png', alt: 'A screw motion', touchAction: 'pan-y' });
+// @ts-expect-error: not a projection
+figEl.camera = { yaw: 0, pitch: 0, distance: 5, target: [0, 0, 0], projection: 'fisheye' };
+// @ts-expect-error: not a loading value
+mount(document.createElement('div'), { loading: 'later' });
+console.log(paused, duration, picture, still);
 
 console.log(x, w, scheme, refined.length, matrices.length, speed, pitch, firstShape, mats.length, stride, start, end, closed);

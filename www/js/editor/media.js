@@ -3,9 +3,8 @@
 //
 // PNG: the view drawn again at 1× or 2× its drawing buffer (2× is drawn at twice the size, lines
 // twice as wide, not scaled up) and copied in the same task (Viewer.snapshot: a WebGPU canvas is
-// readable only until its frame is presented). A transparent background comes from two frames,
-// on black and on white: where they differ the background shows through (alpha = 1 − the
-// difference), and the colour is the black frame's divided by alpha.
+// readable only until its frame is presented); a transparent background as view/picture.js
+// makes it.
 //
 // Video: one cycle of the motion at FPS frames per second of the motion's own time (the
 // timeline's seconds): frame i shows time i / FPS, is drawn, and goes to a WebCodecs
@@ -17,6 +16,7 @@
 // motion). cycle() is the one place this part touches the playback.
 import { download } from './files.js';
 import { webmFile } from './webm.js';
+import { picture } from '../view/picture.js';
 
 /** Frames per second of the video. */
 export const FPS = 30;
@@ -28,9 +28,6 @@ const VIDEO_CODECS = ['vp8', 'vp09.00.10.08'];
 const KEY_EVERY = 2 * FPS;
 /** Frames waiting in the encoder before the next one is drawn (bounds the memory held). */
 const MAX_QUEUE = 4;
-/** Background of the transparent picture's two frames (sRGB). */
-const BLACK = [0, 0, 0];
-const WHITE = [1, 1, 1];
 
 /** A file name from a title: lower case, words joined by '-', nothing a file system refuses. */
 export function fileBase(title) {
@@ -51,38 +48,6 @@ export function fileBase(title) {
 function cycle(app) {
   const { start, end } = app.viewer.playhead();
   return { duration: end - start, show: (t) => app.seekTime(start + t) };
-}
-
-/** A 2-D canvas holding a copy of `source` (drawn in the same task as the frame). */
-function copyOf(source) {
-  const c = document.createElement('canvas');
-  c.width = source.width;
-  c.height = source.height;
-  c.getContext('2d', { willReadFrequently: true }).drawImage(source, 0, 0);
-  return c;
-}
-
-/** The picture of the two frames on black and on white with the background made transparent. */
-function unmatte(onBlack, onWhite) {
-  const { width: w, height: h } = onBlack;
-  const ctx = onBlack.getContext('2d', { willReadFrequently: true });
-  const black = ctx.getImageData(0, 0, w, h);
-  const white = onWhite.getContext('2d', { willReadFrequently: true }).getImageData(0, 0, w, h).data;
-  const d = black.data;
-  for (let i = 0; i < d.length; i += 4) {
-    // Per channel white − black = 255 (1 − alpha); the mean of the three is the least noisy.
-    const diff = (white[i] - d[i] + white[i + 1] - d[i + 1] + white[i + 2] - d[i + 2]) / 3;
-    const a = Math.max(0, Math.min(255, 255 - diff));
-    if (a > 0) {
-      const k = 255 / a;
-      d[i] = Math.min(255, d[i] * k);
-      d[i + 1] = Math.min(255, d[i + 1] * k);
-      d[i + 2] = Math.min(255, d[i + 2] * k);
-    }
-    d[i + 3] = a;
-  }
-  ctx.putImageData(black, 0, 0);
-  return onBlack;
 }
 
 export default {
@@ -106,9 +71,7 @@ export default {
       }
       let out;
       try {
-        const frames = [];
-        app.viewer.snapshot(scale, transparent ? [BLACK, WHITE] : [null], (canvas) => frames.push(copyOf(canvas)));
-        out = transparent ? unmatte(frames[0], frames[1]) : frames[0];
+        out = picture(app.viewer, { scale, transparent, gizmo: true });
       } catch (e) {
         app.showError(`The picture could not be made: ${e.message}`);
         return null;

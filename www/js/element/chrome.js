@@ -1,13 +1,20 @@
-// A figure's chrome: its shadow tree (canvas, control bar, message, caption), the bar's
-// listeners and display, and the keys of a focused figure. Built node by node (no HTML strings,
-// no inline style), so a strict CSP suffices.
+// A figure's chrome: its shadow tree (canvas, control bar, message, caption, pose labels, live
+// region, poster and print still), the bar's listeners and display, and the keys of a focused
+// figure. Built node by node (no HTML strings, no inline style), so a strict CSP suffices.
+//
+// Keys are a guest's: a key the figure acts on stops there (propagation and default), every
+// other key reaches the page as if the figure were not there, and Tab and Escape (with nothing
+// selected) take the focus out of the figure. The bar's own controls keep the keys they act on
+// (a range's arrows, a button's Space) from the page too, so a slide deck does not turn its
+// slide while the reader scrubs.
 
 /**
  * The figure's shadow tree in `host` (emptied first): the canvas, the control bar, the message
  * and the caption slot, with the stylesheet. Returns {root, el} (el: the parts by name).
  */
 export function buildChrome(host) {
-  const root = host.shadowRoot ?? host.attachShadow({ mode: 'open' });
+  // Manual slot assignment: labels.js sends each child to the caption or to its pose's label.
+  const root = host.shadowRoot ?? host.attachShadow({ mode: 'open', slotAssignment: 'manual' });
   root.replaceChildren();
   const link = document.createElement('link');
   link.rel = 'stylesheet';
@@ -28,7 +35,12 @@ export function buildChrome(host) {
   };
   const schemes = [['bspline', 'B-spline'], ['fourpoint', '4-point'], ['jarek', 'Jarek']];
   fig.append(
-    node('canvas', { tabindex: '0', part: 'canvas', 'aria-label': '3-D figure of a rigid motion' }),
+    // The 3-D view's box: the canvas, with the poster, the print still and the labels over it.
+    node('div', { class: 'view' },
+      node('canvas', { tabindex: '0', part: 'canvas', role: 'application', 'aria-label': DEFAULT_NAME }),
+      node('img', { class: 'poster', part: 'poster', alt: '', hidden: true }),
+      node('div', { class: 'still', hidden: true }),
+      node('div', { class: 'labels', part: 'labels' })),
     node('div', { class: 'bar', part: 'controls' },
       node('button', { class: 'play', type: 'button', 'aria-label': 'Play', text: '▶' }),
       node('input', { class: 'scrub', type: 'range', min: '0', max: '1000', value: '0', 'aria-label': 'Playback time' }),
@@ -41,6 +53,7 @@ export function buildChrome(host) {
         node('button', { class: 'frame', type: 'button', title: 'Frame all (A)', text: 'Frame' }))),
     node('div', { class: 'msg', role: 'alert', hidden: true }),
     node('div', { class: 'caption' }, node('slot')),
+    node('div', { class: 'live', role: 'status', 'aria-live': 'polite', 'aria-atomic': 'true' }),
   );
   root.append(link, fig);
   const el = {
@@ -54,13 +67,37 @@ export function buildChrome(host) {
     levels: fig.querySelector('.levels'),
     frame: fig.querySelector('.frame'),
     msg: fig.querySelector('.msg'),
+    poster: fig.querySelector('.poster'),
+    still: fig.querySelector('.still'),
+    caption: fig.querySelector('.caption slot'),
+    labels: fig.querySelector('.labels'),
+    live: fig.querySelector('.live'),
   };
   return { root, el };
 }
 
+/** The canvas's accessible name without an `alt`. */
+export const DEFAULT_NAME = '3-D figure of a rigid motion';
+
+/** Keys that each kind of the bar's controls acts on (kept from the page). */
+const BAR_KEYS = {
+  INPUT: ['ArrowLeft', 'ArrowRight', 'ArrowUp', 'ArrowDown', 'Home', 'End', 'PageUp', 'PageDown'],
+  BUTTON: [' ', 'Enter'],
+  SELECT: ['ArrowUp', 'ArrowDown', 'ArrowLeft', 'ArrowRight', 'Home', 'End', ' ', 'Enter'],
+};
+
 /** The control bar's listeners (on the figure's own elements only). */
 export function bindChrome(fig) {
-  const { play, scrub, scheme, levels, frame } = fig.el;
+  const { bar, play, scrub, scheme, levels, frame } = fig.el;
+  bar.addEventListener('keydown', (e) => {
+    if (e.ctrlKey || e.metaKey || e.altKey) return;
+    if (e.target.tagName === 'INPUT' && e.key === ' ') {
+      // Space on a slider plays or pauses, as on the canvas (a slider has no use for it).
+      e.preventDefault();
+      e.stopPropagation();
+      fig.guard(() => (fig.playing ? fig.pause() : fig.play()));
+    } else if (BAR_KEYS[e.target.tagName]?.includes(e.key)) e.stopPropagation();
+  });
   play.addEventListener('click', () => fig.guard(() => (fig.playing ? fig.pause() : fig.play())));
   scrub.addEventListener('input', () =>
     fig.guard(() => {
@@ -72,27 +109,38 @@ export function bindChrome(fig) {
   );
   scheme.addEventListener('change', () => fig.guard(() => fig.setOptions({ scheme: scheme.value, j: null })));
   levels.addEventListener('input', () => fig.guard(() => fig.setOptions({ levels: Number(levels.value) })));
-  frame.addEventListener('click', () => fig.guard(() => fig.viewer?.frameAll()));
+  frame.addEventListener('click', () => fig.guard(() => fig.viewer?.frameAll('user')));
 }
 
-/** Keys, only while the canvas has the focus (the listener is on the canvas). */
+/**
+ * Keys, only while the canvas has the focus (the listener is on the canvas): Space plays or
+ * pauses, A / Home frames, the arrows step to the previous or next key pose (editable: select
+ * it), W / E the gizmo mode (editable), Escape deselects, else leaves the figure. A key taken
+ * stops here; any other (and any with Ctrl, Meta or Alt) goes on to the page untouched.
+ */
 export function onKey(fig, e) {
-  if (!fig.viewer || !fig.model.motion) return;
+  if (!fig.viewer || !fig.model.motion || e.ctrlKey || e.metaKey || e.altKey) return;
   const k = e.key;
   const n = fig.model.motion.poseCount;
   let handled = true;
   if (k === ' ') fig.playing ? fig.pause() : fig.play();
-  else if (k === 'a' || k === 'Home') fig.viewer.frameAll();
-  else if (fig.editable && (k === 'ArrowRight' || k === 'ArrowLeft')) {
+  else if (k === 'a' || k === 'A' || k === 'Home') fig.viewer.frameAll('user');
+  else if (k === 'ArrowRight' || k === 'ArrowLeft') {
     const s = fig.model.selected;
-    fig.select(k === 'ArrowRight' ? (s + 1) % n : (s - 1 + n) % n);
+    if (fig.editable) fig.select(k === 'ArrowRight' ? (s + 1) % n : (s - 1 + n) % n);
+    else fig.stepKey(k === 'ArrowRight' ? 1 : -1);
   } else if (fig.editable && (k === 'w' || k === 'e')) {
     fig.model.mode = k === 'w' ? 'translate' : 'rotate';
     fig.viewer.rebuildGizmo();
     fig.viewer.requestDraw();
-  } else if (fig.editable && k === 'Escape') fig.select(-1);
-  else handled = false;
-  if (handled) e.preventDefault();
+  } else if (k === 'Escape') {
+    if (fig.model.selected >= 0) fig.select(-1);
+    else e.target.blur();
+  } else handled = false;
+  if (handled) {
+    e.preventDefault();
+    e.stopPropagation();
+  }
 }
 
 /** The control bar shows the playing state and the motion's scheme and levels. */
@@ -125,4 +173,5 @@ export function timeChanged(fig, { t, u, start, end }) {
   fig.el.time.textContent = formatTime(t);
   fig.el.scrub.setAttribute('aria-valuetext', `${t.toFixed(2)} seconds`);
   fig.emit('time', { t, u, start, end });
+  fig.emit('timeupdate', { t, u, start, end });
 }

@@ -1,4 +1,5 @@
 // The editing of an editable figure (`editable`): its pointer tool.
+import { describePose } from './playback.js';
 import { beginPoseDrag, dragTarget, hoverPoseTool, redrawPoseDrag, setDragPose } from '../view/pose-drag.js';
 
 /**
@@ -26,6 +27,7 @@ export function editTool(fig) {
     if (d.moved) {
       fig.viewer.rebuild();
       fig.persist();
+      fig.say(describePose(fig.model.motion, d.index).replace(' at ', ' moved to '));
       fig.emit('change', { poses: Float64Array.from(fig.model.motion.poses()), index: d.index });
     }
     fig.viewer.rebuildGizmo();

@@ -1,15 +1,20 @@
 // One figure: the viewer (view/viewer.js) on a canvas in a shadow root, with its chrome, its
 // source and its options; what the element <screw-bender> and mount() (screw-bender.js) drive.
 // Its parts: options.js (names and checks), sources.js (where the motion comes from, the opt-in
-// saved copy), chrome.js (shadow tree, control bar, keys), edit-tool.js (editing), wasm.js (the
-// module instance all figures share).
+// saved copy), chrome.js (shadow tree, control bar, keys), edit-tool.js (editing), labels.js
+// (labels on poses), showing.js (lazy start, poster, hidden slides, print), playback.js (the
+// media-element API, the camera as state, pictures), wasm.js (the module instance all figures
+// share).
 import { Viewer, newModel } from '../view/viewer.js';
-import { bindChrome, buildChrome, onKey, refreshChrome, timeChanged } from './chrome.js';
+import { DEFAULT_NAME, bindChrome, buildChrome, onKey, refreshChrome, timeChanged } from './chrome.js';
 import { editTool } from './edit-tool.js';
+import { Labels } from './labels.js';
 import {
-  CONTROLS, DEFAULT_SHOW, LAYERS, LAYER_FIELD, MAX_STROBE, OptionError, THEMES, bool, cameraView, number, oneOf,
+  CONTROLS, DEFAULT_SHOW, LAYERS, LAYER_FIELD, MAX_STROBE, OptionError, THEMES, TOUCH, bool, cameraView, number, oneOf,
   subdivisionOptions,
 } from './options.js';
+import { Playback, describePose, schemeName } from './playback.js';
+import { drawWhenShown, forget, printable, showPoster, whenNear } from './showing.js';
 import { fetchSource, persist, restorePersisted } from './sources.js';
 import { loadWasm, serially } from './wasm.js';
 
@@ -29,6 +34,8 @@ export class Figure {
     this.root = root;
     this.el = el;
     bindChrome(this);
+    this.labels = new Labels(this);
+    this.playback = new Playback(this);
   }
 
   // ---------------------------------------------------------------- start and stop
@@ -36,7 +43,12 @@ export class Figure {
   /** Starts the wasm module and the viewer (once); resolves when the first motion is drawn. */
   start(options) {
     this.opts = { ...options };
+    printable(this);
+    this.guard(() => this.applyChrome());
     this.ready = this.guard(async () => {
+      showPoster(this);
+      await whenNear(this);
+      if (this.disposed) return;
       const w = await loadWasm();
       if (this.disposed) return;
       this.wasm = w;
@@ -48,8 +60,12 @@ export class Figure {
         what: 'this figure',
         warn: () => {},
         onTime: (u, a, b, playhead) => this.timeChanged(playhead),
-        onPlay: () => this.refreshChrome(),
+        onPlay: (on) => this.playback.playing(on),
+        onEnded: () => this.playback.ended(),
+        onCamera: (source) => this.playback.cameraMoved(source),
+        onDraw: () => this.drew(),
       });
+      drawWhenShown(viewer);
       this.viewer = viewer;
       try {
         await serially(() => (this.disposed ? null : viewer.start()));
@@ -68,10 +84,7 @@ export class Figure {
       this.el.canvas.addEventListener('keydown', (e) => this.guard(() => this.onKey(e)));
       this.el.fig.dataset.backend = this.viewer.backend;
       this.viewer.bindPointer(this.editable ? this.editTool() : { click: () => {} });
-      this.observer = new IntersectionObserver((entries) => {
-        for (const e of entries) this.viewer?.setVisible(e.isIntersecting);
-      });
-      this.observer.observe(this.host);
+      this.viewer.setVisible(this.onScreen !== false);
       await this.load();
     });
     return this.ready;
@@ -81,8 +94,11 @@ export class Figure {
   dispose() {
     this.disposed = true;
     this.generation++;
+    this.wake?.();
     this.observer?.disconnect();
     this.observer = null;
+    this.labels.dispose();
+    forget(this);
     this.drag?.session?.free();
     this.drag = null;
     this.viewer?.dispose();
@@ -119,13 +135,29 @@ export class Figure {
     return bool(this.opts.editable);
   }
 
+  /** After each frame: the poster goes at the first, the labels follow the view. */
+  drew() {
+    if (!this.drawn) {
+      this.drawn = true;
+      showPoster(this);
+    }
+    this.labels.place();
+  }
+
+  /** Says `text` in the figure's polite live region (what changed, in words). */
+  say(text) {
+    this.el.live.textContent = text;
+  }
+
   // ---------------------------------------------------------------- options
 
   /** Changes options (a partial object); a change of source reloads, the rest applies in place. */
   setOptions(patch) {
     const before = this.opts;
     this.opts = { ...this.opts, ...patch };
-    if (!this.viewer) return this.ready;
+    if ('loading' in patch && patch.loading === 'eager') this.wake?.();
+    if ('poster' in patch) showPoster(this);
+    if (!this.viewer) return this.guard(() => this.applyChrome());
     const reload = ['scene', 'src', 'share', 'inline'].some((k) => k in patch && patch[k] !== before[k]);
     if ('editable' in patch && bool(patch.editable) !== bool(before.editable)) {
       // The pointer listeners live on the canvas: a fresh canvas takes the new tool.
@@ -134,6 +166,7 @@ export class Figure {
       this.el.canvas.replaceWith(fresh);
       this.el.canvas = fresh;
       this.observer?.disconnect();
+      this.observer = null;
       this.viewer.dispose();
       this.viewer = null;
       return this.start(this.opts);
@@ -154,6 +187,7 @@ export class Figure {
     const show = String(o.show ?? DEFAULT_SHOW).trim().split(/\s+/).filter(Boolean);
     for (const s of show) if (!LAYERS.includes(s)) throw new OptionError('show', o.show, `unknown layer ${s} (layers: ${LAYERS.join(', ')})`);
     const cam = o.camera != null && o.camera !== '' ? cameraView(o.camera) : null;
+    this.applyChrome();
     if (model.motion && Object.keys(sub).length) {
       const old = model.motion.options();
       try {
@@ -167,8 +201,11 @@ export class Figure {
     if (strobe !== null) model.view.strobe = strobe;
     for (const l of LAYERS) model.view[LAYER_FIELD[l]] = show.includes(l);
     if (model.view.strobe === 0) model.view.showStrobe = false;
-    model.anim.speed = speed;
-    model.anim.loop = o.loop == null ? true : bool(o.loop);
+    // A full apply (a load) sets the rate and loop from the options; a patch only what it names
+    // (playbackRate and loop set as properties stay).
+    const full = patch === this.opts;
+    if (full || 'speed' in patch) model.anim.speed = speed;
+    if (full || 'loop' in patch) model.anim.loop = o.loop == null ? true : bool(o.loop);
     this.el.fig.dataset.controls = controls;
     this.el.fig.dataset.theme = theme;
     // The 3-D view's background and line colours follow the chrome.
@@ -183,10 +220,26 @@ export class Figure {
         this.viewer.cameraMoved();
       }
       this.viewer.rebuild();
-      if ('autoplay' in patch && patch !== this.opts) this.viewer.setPlaying(bool(o.autoplay));
+      if ('autoplay' in patch && !full) this.viewer.setPlaying(bool(o.autoplay));
+      if (!full && Object.keys(sub).length) {
+        const m = model.motion.options();
+        this.say(`${schemeName(m)}, ${m.levels} level${m.levels === 1 ? '' : 's'}`);
+      }
     }
     this.clearMessage();
     this.refreshChrome();
+  }
+
+  /**
+   * The options of the chrome alone, which apply before the figure starts: `alt` (the canvas's
+   * accessible name) and `touch-action` (what a touch on the unfocused figure leaves to the page).
+   */
+  applyChrome() {
+    const o = this.opts;
+    const touch = o['touch-action'] != null && o['touch-action'] !== '' ? oneOf('touch-action', o['touch-action'], TOUCH) : 'pan-y';
+    this.el.fig.dataset.touch = touch;
+    const alt = o.alt != null && String(o.alt).trim() !== '' ? String(o.alt) : DEFAULT_NAME;
+    if (this.el.canvas.getAttribute('aria-label') !== alt) this.el.canvas.setAttribute('aria-label', alt);
   }
 
   // ---------------------------------------------------------------- sources
@@ -239,6 +292,7 @@ export class Figure {
     }
     this.viewer.setPlaying(bool(this.opts.autoplay));
     this.viewer.updateAnim();
+    this.playback.loaded();
   }
 
   // ---------------------------------------------------------------- persistence (opt-in)
@@ -266,12 +320,13 @@ export class Figure {
     return this.model.anim.playing;
   }
 
-  play() {
-    if (this.viewer && this.model.motion) this.viewer.setPlaying(true);
+  /** Plays (playback.js: `repetitions` passes, else as loop says). */
+  play(opts) {
+    this.playback.play(opts);
   }
 
   pause() {
-    if (this.viewer && this.model.motion) this.viewer.setPlaying(false);
+    this.playback.pause();
   }
 
   /**
@@ -279,13 +334,18 @@ export class Figure {
    * motion.times[i], else at i s; a cycle wraps, an open motion holds its end poses).
    */
   seek(t) {
-    if (!this.viewer || !this.model.motion) return;
-    this.viewer.seekTime(number('seek', t, -1e9, 1e9));
+    this.playback.seek(t);
+  }
+
+  /** Steps the playhead to the next (dir 1) or previous (-1) key pose's time (the arrow keys). */
+  stepKey(dir) {
+    this.playback.stepKey(dir);
   }
 
   select(k) {
     this.model.selected = k;
     this.viewer.rebuildControls();
+    this.say(k >= 0 ? `${describePose(this.model.motion, k)} selected` : 'No pose selected');
     this.emit('select', { index: k });
   }
 

@@ -4,7 +4,7 @@
 /** Attributes the element watches (each maps onto an option of mount()). */
 export const ATTRIBUTES = [
   'scene', 'src', 'share', 'scheme', 'levels', 'j', 'rules', 'strobe', 'show', 'autoplay', 'loop',
-  'speed', 'editable', 'controls', 'camera', 'theme', 'persist',
+  'speed', 'editable', 'controls', 'camera', 'theme', 'persist', 'alt', 'loading', 'poster', 'touch-action',
 ];
 /** Layers of the `show` option, and those shown by default. */
 export const LAYERS = ['strobe', 'control', 'trajectories', 'polyscrew', 'polygon', 'triads', 'grid'];
@@ -17,6 +17,8 @@ const SCHEMES = ['bspline', 'fourpoint', 'jarek', 'j'];
 const RULES = ['direct', 'split'];
 export const CONTROLS = ['none', 'minimal', 'full'];
 export const THEMES = ['light', 'dark'];
+/** What a touch on a figure without the focus leaves to the page (`touch-action`). */
+export const TOUCH = ['pan-y', 'pan-x', 'none'];
 /** Named camera views: yaw and pitch in degrees. */
 const VIEWS = { iso: [-60, 34], front: [-90, 5], side: [0, 5], top: [-90, 89] };
 /** Most strobe copies a figure draws. */

@@ -75,12 +75,18 @@ export function startGizmoDrag(viewer, part, pose, pt) {
   return startDrag(part, pose, viewer.camera, ray(viewer, pt), pt, isLocal(viewer));
 }
 
-/** Page position (CSS px) of scene point p, or null behind the camera. */
-export function toPage(viewer, p) {
+/** Canvas position (CSS px, from its top left) of scene point p, or null behind the camera. */
+export function toCanvas(viewer, p) {
   const { cssW, cssH } = viewer.pixelSize();
   const s = project(viewer.camera.viewProj(), p, cssW, cssH);
+  return s ? { x: s[0], y: s[1] } : null;
+}
+
+/** Page position (CSS px) of scene point p, or null behind the camera. */
+export function toPage(viewer, p) {
+  const s = toCanvas(viewer, p);
   const r = viewer.canvas.getBoundingClientRect();
-  return s ? { x: s[0] + r.left, y: s[1] + r.top } : null;
+  return s ? { x: s.x + r.left, y: s.y + r.top } : null;
 }
 
 /** Page position of control pose k's handle. */

@@ -10,6 +10,7 @@
 //   viewer.meshesChanged(); viewer.rebuild(); viewer.frameAll();
 //   viewer.bindPointer(tool);       // camera gestures; `tool` (optional) takes presses on content
 //   viewer.setVisible(false);       // off screen: no frames drawn (an IntersectionObserver's call)
+//   viewer.isShown = () => bool;    // optional: false skips drawing (a hidden slide, opacity 0)
 //   viewer.dispose();               // stops the loop and observers, frees the renderer's GPU data
 //
 // `wasm` is the initialised wasm-bindgen module (Renderer, Motion, DragSession, scenes). The
@@ -44,7 +45,9 @@ export function newModel(scene = '') {
     mode: 'translate', // gizmo: 'translate' | 'rotate'
     // Playback: u the parameter shown, t its time in seconds (tu: the u that t belongs to;
     // unknown t is derived from u by playTime).
-    anim: { playing: false, u: 0, t: undefined, tu: undefined, speed: 1, loop: true, visible: false },
+    // speed: seconds of motion time per real second (negative plays backwards); passes: the
+    // passes left to play before playback ends (null: as loop and closed say).
+    anim: { playing: false, u: 0, t: undefined, tu: undefined, speed: 1, loop: true, visible: false, passes: null },
     imported: null, // {kind: 'obj', data: text} or {kind: 'gltf', data: base64}
     hover: null, // gizmo part under the pointer
     hoverPose: undefined, // control pose under the pointer (-1: none)
@@ -57,12 +60,15 @@ export class Viewer {
    * options: model (default newModel()); webgl2: true to skip WebGPU; warn(message): non-fatal
    * problems (a backend fallback, drags without live update); onTime(u, a, b, playhead): the
    * animated object moved (u in the parameter interval [a, b]; playhead as playhead() gives it,
-   * in seconds); onPlay(playing): playback started or stopped; wheelNeedsFocus: true to let
+   * in seconds); onPlay(playing): playback started or stopped; onEnded(): playback stopped at
+   * an end by itself (an open motion without loop, or the last of `anim.passes`); onCamera(source):
+   * the camera moved ('user': a gesture or key, 'api': code); onDraw(): a frame was drawn (the
+   * last frame's view-projection is `vp`); wheelNeedsFocus: true to let
    * wheel events over an unfocused canvas scroll the page (an embedded figure), false to zoom
    * always (the playground, whose view fills the page); what: the subject of the no-graphics
    * message ('the playground', 'this figure').
    */
-  constructor(canvas, wasm, { model = newModel(), webgl2 = false, warn, onTime, onPlay, wheelNeedsFocus = false, what = 'the playground' } = {}) {
+  constructor(canvas, wasm, { model = newModel(), webgl2 = false, warn, onTime, onPlay, onEnded, onCamera, onDraw, wheelNeedsFocus = false, what = 'the playground' } = {}) {
     this.canvas = canvas;
     this.wasm = wasm;
     this.model = model;
@@ -71,6 +77,11 @@ export class Viewer {
     const timeHook = onTime ?? (() => {});
     this.onTime = (u, a, b) => timeHook(u, a, b, this.playhead());
     this.onPlay = onPlay ?? (() => {});
+    const none = () => {};
+    this.onEnded = onEnded ?? none;
+    this.onCamera = onCamera ?? none;
+    this.onDraw = onDraw ?? none;
+    this.isShown = () => true;
     this.wheelNeedsFocus = wheelNeedsFocus;
     this.what = what;
     this.scenes = wasm.scenes();
@@ -193,22 +204,30 @@ export class Viewer {
     // Nothing to draw until the model has a motion (the loop runs from start()).
     if (!motion) return;
     if (anim.playing) {
-      // Real time: t advances in seconds (times the speed); the object shows u = p(t).
+      // Real time: t advances in seconds (times the speed, which may be negative); the object
+      // shows u = p(t). Past an end, playback wraps while passes remain (a cycle or a looping
+      // open motion without a pass count wraps always), else it stops at that end.
       const dt = this.lastNow ? Math.min(0.5, (now - this.lastNow) / 1000) : 0;
       const [a, b] = motion.timeDomain();
       let t = this.playTime() + dt * anim.speed;
-      if (t > b) {
-        if (motion.closed || anim.loop) t = a + ((t - a) % (b - a));
-        else {
-          t = b;
+      if (t > b || t < a) {
+        const wrap = anim.passes == null ? motion.closed || anim.loop : anim.passes > 1;
+        if (wrap) {
+          if (anim.passes != null) anim.passes--;
+          t = a + ((((t - a) % (b - a)) + (b - a)) % (b - a));
+        } else {
+          t = t > b ? b : a;
+          anim.passes = null;
+          this.showTime(t);
           this.setPlaying(false);
+          this.onEnded();
         }
       }
-      this.showTime(t);
+      if (anim.playing) this.showTime(t);
       this.dirty = true;
     }
     this.lastNow = now;
-    if (this.dirty) this.draw();
+    if (this.dirty && this.isShown()) this.draw();
   }
 
   draw() {
@@ -228,6 +247,7 @@ export class Viewer {
     this.stats.renderMs = t2 - t1;
     this.stats.frameMs = t2 - t0;
     this.frames++;
+    this.onDraw();
   }
 
   // ---------------------------------------------------------------- playback in seconds
@@ -336,20 +356,24 @@ export class Viewer {
 
   // ---------------------------------------------------------------- camera
 
-  /** Frames the control poses (with a margin). */
-  frameAll() {
+  /** Frames the control poses (with a margin); `source` as cameraMoved's. */
+  frameAll(source = 'api') {
     const { lo, hi } = this.drawing.bounds();
     const pad = 1.2;
     const { cssW, cssH } = this.pixelSize();
     this.camera.aspect = cssW / Math.max(1, cssH);
     this.camera.frame(lo.map((x) => x - pad), hi.map((x) => x + pad));
-    this.cameraMoved();
+    this.cameraMoved(source);
   }
 
-  /** After the camera moved: handles keep their size on screen, so they are rebuilt. */
-  cameraMoved() {
+  /**
+   * After the camera moved: handles keep their size on screen, so they are rebuilt. `source`:
+   * 'user' for a gesture or key of the reader, 'api' (default) for code (onCamera hears both).
+   */
+  cameraMoved(source = 'api') {
     if (this.model.motion) this.drawing.rebuildHandles();
     this.requestDraw();
+    this.onCamera(source);
   }
 
   // ---------------------------------------------------------------- drawing (see drawing.js)
@@ -413,6 +437,10 @@ export class Viewer {
 
   toPage(p) {
     return picking.toPage(this, p);
+  }
+
+  toCanvas(p) {
+    return picking.toCanvas(this, p);
   }
 
   screenOfPose(k) {

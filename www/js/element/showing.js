@@ -1,0 +1,120 @@
+// When a figure starts and when it draws, for pages of many figures, slide decks and print:
+// - loading: "lazy" (the default) starts a figure (wasm module, renderer, motion) only when it
+//   comes within NEAR of the viewport, "eager" at once; a `poster` image shows until the first
+//   frame is drawn;
+// - a started figure draws only while it is near the viewport (the IntersectionObserver) and
+//   rendered visibly (not on a hidden slide: display, visibility or opacity, checkVisibility);
+// - print (print media or beforeprint): each started figure shows a still picture of its
+//   current frame, a 2-D canvas, which prints where a WebGPU or WebGL canvas prints blank.
+//   The print listeners are the figures' only ones outside their shadow trees: one set for the
+//   page (added with the first figure, removed with the last), and they only take pictures.
+import { picture } from '../view/picture.js';
+import { oneOf } from './options.js';
+
+/** How near the viewport a lazy figure starts (and a started one keeps drawing). */
+const NEAR = '200px 0px';
+const LOADING = ['lazy', 'eager'];
+
+/** The `loading` option (checked): 'lazy' or 'eager'. */
+export const loadingOf = (o) => (o.loading == null || o.loading === '' ? 'lazy' : oneOf('loading', o.loading, LOADING));
+
+/**
+ * Watches `fig`'s host with an IntersectionObserver (once): resolves fig.near when it nears the
+ * viewport and tells the viewer whether to draw. Returns a promise that resolves when the
+ * figure may start (at once for loading="eager" or a bad value, which fig.fail names).
+ */
+export function whenNear(fig) {
+  let loading = 'lazy';
+  try {
+    loading = loadingOf(fig.opts);
+  } catch (e) {
+    fig.fail('loading', e.message, fig.opts.loading);
+  }
+  if (!fig.observer) {
+    fig.observer = new IntersectionObserver(
+      (entries) => {
+        fig.onScreen = entries[entries.length - 1].isIntersecting;
+        if (fig.onScreen) fig.wake?.();
+        fig.viewer?.setVisible(fig.onScreen);
+      },
+      { rootMargin: NEAR },
+    );
+    fig.observer.observe(fig.host);
+  }
+  if (loading === 'eager' || fig.onScreen) return Promise.resolve();
+  return new Promise((resolve) => {
+    fig.wake = () => {
+      fig.wake = null;
+      resolve();
+    };
+  });
+}
+
+/** Draws only while the canvas is rendered visibly (a hidden slide's figure stops). */
+export function drawWhenShown(viewer) {
+  viewer.isShown = () =>
+    typeof viewer.canvas.checkVisibility !== 'function' ||
+    viewer.canvas.checkVisibility({ opacityProperty: true, visibilityProperty: true });
+}
+
+/** Shows the poster (the `poster` option, a URL) until the first frame; none without it. */
+export function showPoster(fig) {
+  const { poster } = fig.el;
+  const url = fig.opts.poster;
+  if (!url || fig.drawn) {
+    poster.hidden = true;
+    poster.removeAttribute('src');
+    return;
+  }
+  try {
+    poster.src = new URL(String(url), document.baseURI).href;
+    poster.hidden = false;
+  } catch {
+    fig.fail('poster', 'not a URL', url);
+  }
+}
+
+// ---------------------------------------------------------------- print
+
+const printing = new Set();
+let media = null;
+const before = () => still(true);
+const after = () => still(false);
+const change = (e) => still(e.matches);
+
+function still(on) {
+  for (const fig of printing) {
+    const box = fig.el.still;
+    box.replaceChildren();
+    box.hidden = true;
+    if (!on || !fig.viewer?.renderer || !fig.model.motion) continue;
+    try {
+      const c = picture(fig.viewer);
+      c.setAttribute('part', 'still');
+      box.append(c);
+      box.hidden = false;
+    } catch {
+      // No picture: the figure prints as the browser prints its canvas.
+    }
+  }
+}
+
+/** Takes part in printing: a still picture of `fig` in print media (until forget). */
+export function printable(fig) {
+  if (!printing.size) {
+    window.addEventListener('beforeprint', before);
+    window.addEventListener('afterprint', after);
+    media = window.matchMedia('print');
+    media.addEventListener('change', change);
+  }
+  printing.add(fig);
+}
+
+/** No longer takes part in printing (a disposed figure). */
+export function forget(fig) {
+  if (!printing.delete(fig) || printing.size) return;
+  window.removeEventListener('beforeprint', before);
+  window.removeEventListener('afterprint', after);
+  media?.removeEventListener('change', change);
+  media = null;
+}
