@@ -13,10 +13,10 @@
 // controls (none | minimal | full), camera (iso | front | side | top, or "yaw pitch [distance]"
 // in degrees and scene units), theme (light | dark), persist (a localStorage key; without it the
 // figure never touches storage). Properties: document, options, motion (read-only), backend,
-// ready (a Promise); methods play(), pause(), seek(t) (seconds); events change {poses}, select
-// {index}, time {t, u, start, end} (seconds and parameter), error {attribute, value, message}
-// (they do not bubble out of the figure as exceptions: every failure is a message inside the
-// figure plus an `error` event).
+// ready (a Promise); methods play(), pause(), seek(t) (seconds); events change {poses, index}
+// (it bubbles, as the native change event does), select {index}, time {t, u, start, end}
+// (seconds and parameter), error {attribute, value, message} (failures do not escape the figure
+// as exceptions: every failure is a message inside the figure plus an `error` event).
 //
 // Good guest manners: one wasm module instance for all figures (a module-level promise); no
 // listener outside the figure's own shadow tree; the wheel zooms only while the figure has the
@@ -37,10 +37,18 @@ export { ATTRIBUTES, LAYERS } from './options.js';
  */
 export function mount(element, options = {}) {
   const { document: doc, ...rest } = options;
-  const fig = new Figure(element, (type, detail) => element.dispatchEvent(new CustomEvent(type, { detail })));
+  const fig = new Figure(element, emitter(element));
   if (doc !== undefined) rest.inline = JSON.stringify(doc);
   fig.start(rest);
   return handleOf(fig);
+}
+
+/**
+ * Dispatches a figure's events on `target`. `change` bubbles, as the native change event does:
+ * frameworks that delegate it to their root (Svelte 5's `onchange`) only see it so.
+ */
+function emitter(target) {
+  return (type, detail) => target.dispatchEvent(new CustomEvent(type, { detail, bubbles: type === 'change' }));
 }
 
 function handleOf(fig) {
@@ -86,9 +94,22 @@ export class ScrewBenderElement extends HTMLElement {
   connectedCallback() {
     // Moving the element in the page (disconnect then connect) keeps its figure.
     if (this.figure) return;
-    this.figure = new Figure(this, (type, detail) => this.dispatchEvent(new CustomEvent(type, { detail })));
+    // Properties set before this class was defined are own properties that hide the accessors:
+    // passed on to them. Frameworks (React, Vue, Svelte) set properties before they connect.
+    for (const name of ['document', 'options']) {
+      if (Object.prototype.hasOwnProperty.call(this, name)) {
+        const value = this[name];
+        delete this[name];
+        this[name] = value;
+      }
+    }
+    this.figure = new Figure(this, emitter(this));
     this.handle = handleOf(this.figure);
-    this.figure.start(optionsOf(this));
+    const { document: doc, options } = this.pending ?? {};
+    this.pending = null;
+    const opts = { ...optionsOf(this), ...options };
+    if (doc != null) Object.assign(opts, { inline: JSON.stringify(doc), src: null, share: null, scene: null });
+    this.figure.start(opts);
   }
 
   disconnectedCallback() {
@@ -116,7 +137,10 @@ export class ScrewBenderElement extends HTMLElement {
   }
 
   set document(doc) {
+    // Before the figure starts (a property set by a framework before it connects the element),
+    // kept for the start.
     if (this.handle) this.handle.document = doc;
+    else this.pending = { ...this.pending, document: doc };
   }
 
   get options() {
@@ -125,6 +149,7 @@ export class ScrewBenderElement extends HTMLElement {
 
   set options(patch) {
     if (this.handle) this.handle.options = patch;
+    else this.pending = { ...this.pending, options: { ...this.pending?.options, ...patch } };
   }
 
   get motion() {
