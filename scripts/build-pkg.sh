@@ -203,7 +203,10 @@ JS
     "$REPO_ROOT/node_modules/.bin/esbuild" "$f" --minify --format=esm --log-level=warning --outfile="$f.min"
     mv "$f.min" "$f"
   done < <(find "$viewer/js" -name '*.js' -print0)
-  cp npm/viewer.js npm/viewer.d.ts "$PKG_DIR/"
+  # The element's types (viewer.d.ts, element-types.d.ts), its entries in React's, Vue's and
+  # Svelte's typings, and its Custom Elements Manifest (package.json's "customElements" field).
+  cp npm/viewer.js npm/viewer.d.ts npm/element-types.d.ts npm/react.d.ts npm/vue.d.ts npm/svelte.d.ts \
+    npm/custom-elements.json "$PKG_DIR/"
 fi
 
 header "package files"

@@ -34,6 +34,8 @@ tarball=$REPO_ROOT/artifacts/npm/screwbender-$version.tgz
 
 header "package contents and size"
 expected="package/README.md
+package/custom-elements.json
+package/element-types.d.ts
 package/full/node.js
 package/full/screwbender.d.ts
 package/full/screwbender.js
@@ -41,12 +43,15 @@ package/full/screwbender_bg.wasm
 package/full/screwbender_bg.wasm.d.ts
 package/node.js
 package/package.json
+package/react.d.ts
 package/screwbender.d.ts
 package/screwbender.js
 package/screwbender_bg.wasm
 package/screwbender_bg.wasm.d.ts
+package/svelte.d.ts
 package/viewer.d.ts
-package/viewer.js"
+package/viewer.js
+package/vue.d.ts"
 found=$(tar tzf "$tarball" | grep -v -E '^package/LICENSE|^package/viewer/' | LC_ALL=C sort)
 if [[ $found != "$expected" ]]; then
   die "tarball files differ from the expected list:"$'\n'"$found"

@@ -54,7 +54,12 @@ export function mount(element, options = {}) {
   return new FigureHandle(fig);
 }
 
-const emitter = (el) => (type, detail) => el.dispatchEvent(new CustomEvent(type, { detail }));
+/**
+ * Dispatches a figure's events on `target`. `change` bubbles, as the native change event does:
+ * frameworks that delegate it to their root (Svelte 5's `onchange`) only see it so.
+ */
+const emitter = (target) => (type, detail) =>
+  target.dispatchEvent(new CustomEvent(type, { detail, bubbles: type === 'change' }));
 
 /** A figure's script API: what mount() returns, and what <screw-bender> forwards to. */
 export class FigureHandle {
@@ -191,6 +196,15 @@ export class ScrewBenderElement extends HTMLElement {
   }
 
   connectedCallback() {
+    // Properties set before this class was defined are own properties that hide the accessors
+    // (frameworks set properties on elements they create before the module defines them):
+    // handed on to the accessors.
+    for (const name of Object.keys(this)) {
+      if (name === 'handle' || name === 'started' || !(name in ScrewBenderElement.prototype)) continue;
+      const value = this[name];
+      delete this[name];
+      this[name] = value;
+    }
     // Moving the element in the page (disconnect then connect) keeps its figure.
     if (this.handle.figure.disposed) this.renew();
     if (this.started) return;

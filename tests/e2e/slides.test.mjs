@@ -1,0 +1,271 @@
+// The reveal.js deck www/examples/slides.html: figures on several slides, picked and dragged with
+// real mouse events under the deck's scaling (a transform: ×1.1 at 1280×800, ×0.37 at 390×844),
+// under CSS zoom and in fullscreen; a figure on a hidden slide draws nothing until its slide is
+// shown; a focused figure keeps the keys it uses from the deck (ArrowRight, Space, Escape) while
+// unfocused keys turn the slides; reveal's print view shows every figure as a picture.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import zlib from 'node:zlib';
+import { EXPECTED_BACKEND, shotPath, startPlayground } from './lib.mjs';
+
+const DECK = 'examples/slides.html';
+const SLIDE = { title: 0, screw: 1, edit: 2, compare: 3 };
+
+let play;
+before(async () => {
+  play = await startPlayground();
+});
+after(async () => {
+  await play?.close();
+});
+
+/** Opens the deck at `viewport` (slide `h`), collecting errors; waits for that slide's figures. */
+async function openDeck({ viewport = { width: 1280, height: 800 }, h = 0, query = '' } = {}) {
+  const context = await play.browser.newContext({ viewport });
+  const page = await context.newPage();
+  const problems = [];
+  page.on('console', (m) => {
+    if (m.type() === 'error') problems.push(`console: ${m.text()}`);
+  });
+  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  await page.goto(`${play.url}${DECK}${query}${query ? '' : `#/${h}`}`);
+  await page.waitForFunction(() => window.deck?.isReady() && customElements.get('screw-bender'));
+  if (!query) await showSlide(page, h);
+  return {
+    page,
+    problems,
+    close: () => context.close(),
+  };
+}
+
+/** Goes to slide `h` and waits until its figures drew two more frames. */
+async function showSlide(page, h) {
+  await page.evaluate((i) => {
+    window.deck.slide(i);
+    // Narrow screens get reveal's scroll view (slides one under the other): the slide's figure
+    // is scrolled to.
+    if (window.deck.isScrollView()) document.querySelectorAll('.reveal .slides section')[i].querySelector('screw-bender')?.scrollIntoView({ block: 'center' });
+  }, h);
+  // reveal's slide transition (a transform) ends before the positions are read.
+  await page.waitForFunction(() => !document.querySelector('.reveal .slides section.present')?.getAnimations?.({ subtree: true }).some((a) => a.playState === 'running'));
+  await page.waitForTimeout(900);
+  await page.evaluate(async () => {
+    const figs = [...document.querySelectorAll('.reveal .slides section.present screw-bender')];
+    await Promise.all(figs.map((f) => f.ready));
+    const start = figs.map((f) => f.viewer.frames);
+    for (const f of figs) f.viewer.requestDraw();
+    await new Promise((res) => {
+      const tick = () => (figs.every((f, k) => f.viewer.frames >= start[k] + 2) ? res() : (figs.forEach((f) => f.viewer.requestDraw()), requestAnimationFrame(tick)));
+      requestAnimationFrame(tick);
+    });
+  });
+}
+
+/**
+ * Where control pose k of figure `id` is on screen, computed from the canvas's box as the browser
+ * lays it out (getBoundingClientRect, which includes every transform and zoom) and the pose's
+ * projection as a fraction of the canvas: independent of the size the figure measured last.
+ */
+function poseOnScreen(page, id, k) {
+  return page.evaluate(([i, kk]) => {
+    const v = document.getElementById(i).viewer;
+    const p = v.screenOfPose(kk);
+    const { cssW, cssH } = v.pixelSize();
+    const r = v.canvas.getBoundingClientRect();
+    return { x: r.left + ((p.x - r.left) / cssW) * r.width, y: r.top + ((p.y - r.top) / cssH) * r.height, scale: r.width / v.canvas.offsetWidth };
+  }, [id, k]);
+}
+
+/** Records the select and change events of figure `id` into window.__events. */
+function recordEvents(page, id) {
+  return page.evaluate((i) => {
+    window.__events = [];
+    const el = document.getElementById(i);
+    el.addEventListener('select', (e) => window.__events.push({ type: 'select', index: e.detail.index }));
+    el.addEventListener('change', (e) => window.__events.push({ type: 'change', index: e.detail.index }));
+  }, id);
+}
+
+/**
+ * Clicks control pose 1 of the editable figure (it must be selected), then drags it by (dx, dy)
+ * screen pixels: the pose follows the pointer (its handle ends within a few pixels of where the
+ * drag ended), and the deck stays on its slide.
+ */
+async function pickAndDrag(page, label, { dx = 60, dy = -40 } = {}) {
+  const id = 'fig-edit';
+  await recordEvents(page, id);
+  const h = await poseOnScreen(page, id, 1);
+  await page.mouse.click(h.x, h.y);
+  await page.waitForFunction(() => window.__events.some((e) => e.type === 'select'), null, { timeout: 5000 }).catch(() => {});
+  const picked = await page.evaluate(() => window.__events);
+  assert.deepEqual(picked, [{ type: 'select', index: 1 }], `${label}: a click on pose 1 (at ${h.x.toFixed(1)}, ${h.y.toFixed(1)}; scale ${h.scale.toFixed(2)}) selects it`);
+  // A click on the canvas's empty corner deselects; a drag that starts on an unselected pose moves
+  // it in the view plane (the gizmo of a selected one would hold it to an axis).
+  const corner = await page.evaluate((i) => {
+    const r = document.getElementById(i).viewer.canvas.getBoundingClientRect();
+    return { x: r.left + 0.04 * r.width, y: r.top + 0.06 * r.height };
+  }, id);
+  await page.mouse.click(corner.x, corner.y);
+  await page.waitForFunction(() => window.__events.length >= 2, null, { timeout: 5000 }).catch(() => {});
+  assert.deepEqual(await page.evaluate(() => window.__events.slice(1)), [{ type: 'select', index: -1 }], `${label}: a click beside the poses deselects`);
+  await page.evaluate(() => {
+    window.__events = [];
+  });
+  const from = await poseOnScreen(page, id, 1);
+  await page.mouse.move(from.x, from.y);
+  await page.mouse.down();
+  for (let k = 1; k <= 10; k++) await page.mouse.move(from.x + (dx * k) / 10, from.y + (dy * k) / 10);
+  await page.mouse.up();
+  await page.waitForFunction(() => window.__events.some((e) => e.type === 'change'), null, { timeout: 5000 }).catch(() => {});
+  const events = await page.evaluate(() => window.__events);
+  assert.deepEqual(events.map((e) => e.type), ['select', 'change'], `${label}: the drag changes the motion`);
+  assert.equal(events[1].index, 1);
+  const to = await poseOnScreen(page, id, 1);
+  const miss = Math.hypot(to.x - (from.x + dx), to.y - (from.y + dy));
+  assert.ok(miss < 6, `${label}: the pose follows the pointer (ends ${miss.toFixed(1)} px from it)`);
+  assert.equal(await page.evaluate(() => window.deck.getIndices().h), SLIDE.edit, `${label}: the slide stays`);
+}
+
+test('the deck: figures on their slides on the expected backend; a figure on a hidden slide draws nothing until shown', async () => {
+  const deck = await openDeck();
+  const { page } = deck;
+  try {
+    assert.equal(await page.evaluate(() => document.getElementById('fig-title').backend), EXPECTED_BACKEND);
+    assert.equal(await page.evaluate(() => document.querySelectorAll('.reveal screw-bender').length), 5);
+    const framesOf = () => page.evaluate(() => document.getElementById('fig-edit').viewer?.frames ?? 0);
+    const f0 = await framesOf();
+    await page.waitForTimeout(800);
+    assert.equal(await framesOf(), f0, 'the figure on slide 3 draws nothing while slide 1 is shown');
+    await showSlide(page, SLIDE.edit);
+    assert.ok((await framesOf()) >= f0 + 2, 'shown, it draws');
+    await page.screenshot({ path: shotPath('slides/deck-edit.png') });
+    assert.deepEqual(deck.problems, []);
+  } finally {
+    await deck.close();
+  }
+});
+
+test('picking and drags under the deck\'s scaling: ×1.1 at 1280×800, ×0.37 at 390×844, and under CSS zoom', async () => {
+  for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 }]) {
+    const deck = await openDeck({ viewport, h: SLIDE.edit });
+    try {
+      const scale = await deck.page.evaluate(() => window.deck.getScale());
+      assert.ok(Math.abs(scale - 1) > 0.05, `the deck is scaled (${scale})`);
+      await pickAndDrag(deck.page, `${viewport.width}×${viewport.height}, deck scale ${scale}`);
+      await deck.page.screenshot({ path: shotPath(`slides/deck-${viewport.width}x${viewport.height}.png`) });
+      assert.deepEqual(deck.problems, []);
+    } finally {
+      await deck.close();
+    }
+  }
+  // CSS zoom on the deck (as reveal.js itself scaled slides up to version 5, and as pages zoom).
+  const deck = await openDeck({ h: SLIDE.edit });
+  try {
+    await deck.page.evaluate(() => {
+      document.querySelector('.reveal .slides').style.zoom = '0.8';
+    });
+    await showSlide(deck.page, SLIDE.edit);
+    await pickAndDrag(deck.page, 'zoom 0.8', { dx: 40, dy: 30 });
+    assert.deepEqual(deck.problems, []);
+  } finally {
+    await deck.close();
+  }
+});
+
+test('fullscreen (reveal\'s F key): the deck rescales and picking and drags still work', async () => {
+  const deck = await openDeck({ h: SLIDE.edit });
+  const { page } = deck;
+  try {
+    const before = await page.evaluate(() => window.deck.getScale());
+    await page.locator('#s-edit p').click();
+    await page.keyboard.press('f');
+    await page.waitForFunction(() => document.fullscreenElement !== null, null, { timeout: 5000 });
+    await page.waitForTimeout(600);
+    const inFull = await page.evaluate(() => ({ scale: window.deck.getScale(), w: innerWidth, h: innerHeight }));
+    await pickAndDrag(page, `fullscreen ${inFull.w}×${inFull.h}, deck scale ${before} → ${inFull.scale}`);
+    await page.evaluate(() => document.exitFullscreen());
+    assert.deepEqual(deck.problems, []);
+  } finally {
+    await deck.close();
+  }
+});
+
+test('deck keys: a focused figure keeps ArrowRight, Space and Escape from the deck; unfocused, ArrowRight turns the slide', async () => {
+  const deck = await openDeck({ h: SLIDE.edit });
+  const { page } = deck;
+  try {
+    await recordEvents(page, 'fig-edit');
+    const where = () => page.evaluate(() => ({ h: window.deck.getIndices().h, overview: window.deck.isOverview() }));
+    await page.locator('#fig-edit canvas').focus();
+    await page.keyboard.press('ArrowRight');
+    await page.waitForTimeout(300);
+    assert.deepEqual(await page.evaluate(() => window.__events), [{ type: 'select', index: 0 }], 'ArrowRight selects the first pose');
+    assert.deepEqual(await where(), { h: SLIDE.edit, overview: false }, 'after ArrowRight in the focused figure the slide is unchanged');
+    await page.keyboard.press(' ');
+    await page.waitForTimeout(300);
+    assert.equal(await page.locator('#fig-edit .play').getAttribute('aria-label'), 'Pause', 'Space plays the figure');
+    assert.deepEqual(await where(), { h: SLIDE.edit, overview: false }, 'Space does not turn the slide');
+    await page.keyboard.press(' ');
+    await page.keyboard.press('Escape');
+    await page.waitForTimeout(300);
+    assert.deepEqual(await where(), { h: SLIDE.edit, overview: false }, 'Escape in the figure does not open the overview');
+    // Focus leaves the figure (a click on the slide's text): the deck's keys are the deck's.
+    await page.locator('#s-edit p').click();
+    await page.keyboard.press('ArrowRight');
+    await page.waitForFunction((h) => window.deck.getIndices().h === h, SLIDE.compare, { timeout: 5000 });
+    assert.deepEqual(deck.problems, []);
+  } finally {
+    await deck.close();
+  }
+});
+
+/** The images of a PDF file: each image XObject's size and, decoded, the spread of its pixels. */
+function pdfImages(pdf) {
+  const text = pdf.toString('latin1');
+  const images = [];
+  const re = /<<((?:(?!>>\s*stream)[\s\S])*?\/Subtype\s*\/Image[\s\S]*?)>>\s*stream\r?\n/g;
+  let m;
+  while ((m = re.exec(text))) {
+    const dict = m[1];
+    const len = Number(dict.match(/\/Length\s+(\d+)/)?.[1]);
+    const w = Number(dict.match(/\/Width\s+(\d+)/)?.[1]);
+    const h = Number(dict.match(/\/Height\s+(\d+)/)?.[1]);
+    const start = m.index + m[0].length;
+    const bytes = pdf.subarray(start, start + len);
+    let spread = null;
+    if (/\/FlateDecode/.test(dict) && !/\/DecodeParms/.test(dict)) {
+      try {
+        const px = zlib.inflateSync(bytes);
+        // Samples per pixel from the size (the colour space may be an ICC profile's).
+        const n = Math.round(px.length / (w * h));
+        const lum = [];
+        for (let i = 0; i + n <= px.length; i += n * 7) lum.push(px.subarray(i, i + Math.min(n, 3)).reduce((a, b) => a + b, 0) * (3 / Math.min(n, 3)));
+        lum.sort((a, b) => a - b);
+        spread = lum[Math.floor(lum.length * 0.98)] - lum[Math.floor(lum.length * 0.02)];
+      } catch {
+        spread = null;
+      }
+    }
+    images.push({ w, h, jpeg: /\/DCTDecode/.test(dict), spread });
+  }
+  return images;
+}
+
+test('reveal\'s print view (?print-pdf): every figure prints as a picture of its frame', async () => {
+  const deck = await openDeck({ query: '?print-pdf' });
+  const { page } = deck;
+  try {
+    await page.waitForFunction(() => document.documentElement.classList.contains('reveal-print') || document.querySelector('.reveal.print-pdf, html.print-pdf'), null, { timeout: 10000 }).catch(() => {});
+    await page.emulateMedia({ media: 'print' });
+    await page.waitForTimeout(1500);
+    const pdf = await page.pdf({ width: '1000px', height: '700px', printBackground: true });
+    const images = pdfImages(pdf);
+    // A figure's picture is at least a quarter of its slide's width; a blank box has no image,
+    // or one of a single colour.
+    const pictures = images.filter((i) => i.w >= 250 && (i.jpeg || i.spread === null || i.spread > 60));
+    assert.ok(pictures.length >= 5, `five figures printed as pictures (images: ${JSON.stringify(images)})`);
+    assert.deepEqual(deck.problems, []);
+  } finally {
+    await deck.close();
+  }
+});
