@@ -42,7 +42,10 @@ const MIME = {
   '.d.ts': 'text/plain; charset=utf-8',
 };
 
-const COMMON_HEADERS = { 'Cache-Control': 'no-store', 'X-Content-Type-Options': 'nosniff' };
+// Any origin may read the files (as static hosts such as GitHub Pages allow): embed.html in a
+// `sandbox="allow-scripts"` iframe runs in an opaque origin, for which its own modules and wasm
+// are cross-origin requests.
+const COMMON_HEADERS = { 'Cache-Control': 'no-store', 'X-Content-Type-Options': 'nosniff', 'Access-Control-Allow-Origin': '*' };
 
 function send(res, status, body, headers = {}) {
   res.writeHead(status, { ...COMMON_HEADERS, 'Content-Type': 'text/plain; charset=utf-8', ...headers });

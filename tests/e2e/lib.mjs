@@ -127,6 +127,21 @@ export async function openPage(context, url, backend, { path = '' } = {}) {
   return { page, problems };
 }
 
+/**
+ * An init script (context.addInitScript(countStorage)) that records every storage call of each
+ * page and frame in its window.__storage (embedded figures must make none).
+ */
+export function countStorage() {
+  window.__storage = [];
+  for (const name of ['getItem', 'setItem', 'removeItem', 'clear', 'key']) {
+    const f = Storage.prototype[name];
+    Storage.prototype[name] = function (...args) {
+      window.__storage.push(`${name}(${args[0] ?? ''})`);
+      return f.apply(this, args);
+    };
+  }
+}
+
 /** Drags with real mouse events from `from` by (dx, dy) in `steps` moves; `during` runs mid-drag. */
 export async function mouseDrag(page, from, dx, dy, { steps = 8, during } = {}) {
   await page.mouse.move(from.x, from.y);

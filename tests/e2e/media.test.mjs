@@ -1,7 +1,6 @@
 // e2e-backends: webgpu webgl2 (PNG and video are read back from each backend's canvas)
 // End-to-end: pictures out of the playground (editor/media.js) — a real PNG download at 1× and
-// 2× (size, non-blank pixels, a transparent background), a real WebM video of one cycle (EBML
-// header, duration, frames), cancelling a recording, a browser without a video encoder — and the view
+// 2× (size, non-blank pixels, a transparent background; the videos are video-export.test.mjs) — and the view
 // (editor/viewpoint.js, editor/theme.js): camera presets, the orthographic projection with
 // picking by a real click, the dark theme (toggle and prefers-color-scheme on a first visit),
 // the menus at phone size.
@@ -86,55 +85,6 @@ function decodePng(bytes, bg) {
   }, { b64: Buffer.from(bytes).toString('base64'), bg });
 }
 
-/**
- * What a WebM file says of its time: `duration` (s) from the Duration element of its Info, and
- * `span` (s) from its blocks (the last block's time minus the first's, plus one frame at `fps`)
- * and their count. Walks the EBML elements, entering the Segment, Info and Clusters.
- */
-function webmTimes(bytes, fps) {
-  const MASTERS = new Set([0x18538067, 0x1549a966, 0x1f43b675]); // Segment, Info, Cluster
-  let pos = 0;
-  const vint = (keepMarker) => {
-    const first = bytes[pos];
-    let len = 1;
-    while (len <= 8 && !(first & (0x80 >> (len - 1)))) len++;
-    let v = keepMarker ? first : first & (0xff >> len);
-    for (let k = 1; k < len; k++) v = v * 256 + bytes[pos + k];
-    pos += len;
-    return v;
-  };
-  const uint = (at, n) => {
-    let v = 0;
-    for (let k = 0; k < n; k++) v = v * 256 + bytes[at + k];
-    return v;
-  };
-  let scale = 1e6; // ns per timecode unit (TimecodeScale's default)
-  let duration = NaN;
-  let cluster = 0;
-  let first = Infinity;
-  let last = -Infinity;
-  let blocks = 0;
-  while (pos < bytes.length) {
-    const id = vint(true);
-    const size = vint(false);
-    const start = pos;
-    if (MASTERS.has(id)) continue;
-    if (id === 0x2ad7b1) scale = uint(start, size);
-    else if (id === 0x4489) duration = size === 8 ? bytes.readDoubleBE(start) : bytes.readFloatBE(start);
-    else if (id === 0xe7) cluster = uint(start, size);
-    else if (id === 0xa3) {
-      pos = start;
-      vint(false); // track number
-      const t = cluster + bytes.readInt16BE(pos);
-      first = Math.min(first, t);
-      last = Math.max(last, t);
-      blocks++;
-    }
-    pos = start + size;
-  }
-  return { duration: (duration * scale) / 1e9, span: ((last - first) * scale) / 1e9 + 1 / fps, blocks };
-}
-
 const drawingBuffer = () => page.evaluate(() => window.screwbender.app.pixelSize());
 const readBytes = async (download) => fs.readFileSync(await download.path());
 
@@ -198,109 +148,6 @@ test('a bad picture request changes nothing and says why', async () => {
   const errors = await page.evaluate(() => window.screwbender.errors());
   assert.match(errors.at(-1), /scale: 3 is not 1 or 2/);
   assert.equal(await page.evaluate(() => JSON.stringify(window.screwbender.session())), before);
-});
-
-test('WebM: every frame of one cycle, EBML header, duration = the cycle, not blank', async () => {
-  // A small view: software encoding on a loaded machine takes its time.
-  await page.setViewportSize({ width: 480, height: 320 });
-  await waitFrames(page, 2);
-  // Retimed (key times in seconds, 0.4 s per span): the video follows the timeline's seconds.
-  const refused = await page.evaluate(() => window.screwbender.app.setTimes([0, 0.4, 0.8, 1.2, 1.6, 2.0, 2.4]));
-  assert.equal(refused, null);
-  const cycle = await page.evaluate(() => {
-    const { start, end } = window.screwbender.app.viewer.playhead();
-    return end - start;
-  });
-  assert.ok(Math.abs(cycle - 2.4) < 1e-12, `cycle ${cycle} s`);
-  // (The menu's button is clicked in the tests below, at the full size.)
-  let result;
-  const d = await downloadOf(async () => {
-    result = await page.evaluate(() => window.screwbender.app.parts.media.recordVideo());
-  });
-  assert.ok(d, `a video download (${JSON.stringify(result)})`);
-  assert.match(d.suggestedFilename(), /^[a-z0-9-]+\.webm$/);
-  const bytes = await readBytes(d);
-  assert.deepEqual([...bytes.subarray(0, 4)], [0x1a, 0x45, 0xdf, 0xa3], 'EBML header');
-  assert.ok(bytes.includes(Buffer.from('webm')), 'DocType webm');
-  // The cycle closes: 30 frames per second of it, the last one frame before the first again.
-  const FPS = 30;
-  const want = Math.round(cycle * FPS);
-  const times = webmTimes(bytes, FPS);
-  assert.equal(times.blocks, want, 'every frame is in the video');
-  // Frame times are whole milliseconds in the file.
-  const TOL = 1.5e-3;
-  assert.ok(Math.abs(times.duration - want / FPS) <= TOL, `Duration ${times.duration} s, cycle ${cycle} s`);
-  assert.ok(Math.abs(times.span - want / FPS) <= TOL, `blocks span ${times.span} s`);
-  // A real player reads it: its size is the view's, its duration the cycle's, a frame has the drawing.
-  const { w, h } = await drawingBuffer();
-  const video = await blank.evaluate(async ({ b64, bg }) => {
-    const blob = new Blob([Uint8Array.from(atob(b64), (ch) => ch.charCodeAt(0))], { type: 'video/webm' });
-    const v = document.createElement('video');
-    v.muted = true;
-    v.src = URL.createObjectURL(blob);
-    await new Promise((resolve, reject) => {
-      v.onloadeddata = resolve;
-      v.onerror = () => reject(new Error(`video error ${v.error?.code}`));
-    });
-    await new Promise((resolve) => {
-      v.onseeked = resolve;
-      v.currentTime = v.duration / 3;
-    });
-    const c = new OffscreenCanvas(v.videoWidth, v.videoHeight);
-    const g = c.getContext('2d');
-    g.drawImage(v, 0, 0);
-    const d = g.getImageData(0, 0, c.width, c.height).data;
-    let differ = 0;
-    for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - bg[0]) + Math.abs(d[i + 1] - bg[1]) + Math.abs(d[i + 2] - bg[2]) > 30) differ++;
-    return { width: v.videoWidth, height: v.videoHeight, duration: v.duration, differ: differ / (d.length / 4) };
-  }, { b64: bytes.toString('base64'), bg: LIGHT });
-  assert.deepEqual([video.width, video.height], [w & ~1, h & ~1], 'the view\'s size (even sides)');
-  assert.ok(Math.abs(video.duration - cycle) <= 0.05, `the player's duration ${video.duration} s`);
-  assert.ok(video.differ > 0.02, `a drawn frame: ${(video.differ * 100).toFixed(1)} % differs from the background`);
-  assert.equal(await page.locator('#rec').isHidden(), true);
-  assert.deepEqual(problems, []);
-  assert.equal(await page.evaluate(() => window.screwbender.app.setTimes(null)), null);
-  await page.setViewportSize({ width: 1280, height: 800 });
-  await waitFrames(page, 2);
-});
-
-test('cancelling a recording stops it and downloads nothing', async () => {
-  const anim = await page.evaluate(() => ({ u: window.screwbender.app.anim.u, playing: window.screwbender.app.anim.playing }));
-  let downloads = 0;
-  const count = () => downloads++;
-  page.on('download', count);
-  await menuClick('#m-video');
-  await page.waitForFunction(() => !document.getElementById('rec').hidden && document.getElementById('rec-progress').value > 0);
-  await page.click('#rec-cancel');
-  await page.waitForFunction(() => document.getElementById('rec').hidden);
-  // Nothing arrives afterwards either (the recorder's last data is dropped).
-  await page.waitForTimeout(1500);
-  page.off('download', count);
-  assert.equal(downloads, 0);
-  const after = await page.evaluate(() => ({ u: window.screwbender.app.anim.u, playing: window.screwbender.app.anim.playing }));
-  assert.deepEqual(after, anim, 'the playback as before');
-  assert.equal(await page.evaluate(() => window.screwbender.app.parts.media.recording), false);
-});
-
-test('without a video encoder: a clear message, nothing changes, no exception', async () => {
-  const before = await page.evaluate(() => JSON.stringify(window.screwbender.session()));
-  const errorsBefore = problems.length;
-  await page.evaluate(() => {
-    window.__enc = window.VideoEncoder;
-    window.VideoEncoder = undefined;
-  });
-  let downloads = 0;
-  const count = () => downloads++;
-  page.on('download', count);
-  await menuClick('#m-video');
-  await page.waitForFunction(() => /no video encoder/.test(window.screwbender.errors().at(-1) ?? ''));
-  await page.evaluate(() => (window.VideoEncoder = window.__enc));
-  page.off('download', count);
-  assert.equal(downloads, 0);
-  assert.equal(await page.locator('#rec').isHidden(), true);
-  assert.equal(await page.locator('#banner').isVisible(), true);
-  assert.equal(await page.evaluate(() => JSON.stringify(window.screwbender.session())), before);
-  assert.equal(problems.length, errorsBefore, problems.join('\n'));
 });
 
 const camera = () => page.evaluate(() => ({ ...window.screwbender.app.camera.toJSON() }));

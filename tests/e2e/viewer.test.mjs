@@ -6,7 +6,7 @@
 // figure, and figures come and go without errors or growing memory.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { EXPECTED_BACKEND, shotPath, startPlayground } from './lib.mjs';
+import { EXPECTED_BACKEND, countStorage, shotPath, startPlayground } from './lib.mjs';
 
 const COURSE = 'examples/course.html';
 const FIGURES = ['fig-screw', 'fig-fourpoint', 'fig-bspline', 'fig-jarek'];
@@ -25,15 +25,8 @@ before(async () => {
         return request.apply(this, args);
       };
     }
-    window.__storage = [];
-    for (const name of ['getItem', 'setItem', 'removeItem', 'clear', 'key']) {
-      const f = Storage.prototype[name];
-      Storage.prototype[name] = function (...args) {
-        window.__storage.push(`${name}(${args[0] ?? ''})`);
-        return f.apply(this, args);
-      };
-    }
   });
+  await play.context.addInitScript(countStorage);
 });
 after(async () => {
   await play?.close();

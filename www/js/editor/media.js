@@ -1,5 +1,5 @@
-// Pictures out of the 3-D view, for slides and handouts: a PNG screenshot and a WebM video of
-// one cycle of the motion, from the toolbar's View menu (editor/viewpoint.js).
+// Pictures out of the 3-D view, for slides and handouts: a PNG screenshot and an MP4 or WebM video
+// of one cycle of the motion, from the toolbar's View menu (editor/viewpoint.js).
 //
 // PNG: the view drawn again at 1× or 2× its drawing buffer (2× is drawn at twice the size, lines
 // twice as wide, not scaled up) and copied in the same task (Viewer.snapshot: a WebGPU canvas is
@@ -8,22 +8,48 @@
 //
 // Video: one cycle of the motion at FPS frames per second of the motion's own time (the
 // timeline's seconds): frame i shows time i / FPS, is drawn, and goes to a WebCodecs
-// VideoEncoder (VP8, else VP9) stamped i / FPS; editor/webm.js writes the WebM file. Every frame
-// is in the video, however long the machine takes to draw and encode it (a progress bar and a
-// Cancel button meanwhile). MediaRecorder on canvas.captureStream(0) was the first choice, but
-// it stamps frames by the wall clock, and headless Chromium's canvas track delivered none of 60
-// requested frames of the WebGL canvas (a 2-D copy: 43 frames spread over 7.4 s for 2 s of
-// motion). cycle() is the one place this part touches the playback.
+// VideoEncoder stamped i / FPS; mediabunny (vendor/mediabunny.min.mjs, vendored from npm by
+// scripts/serve.d/50-mediabunny.sh) muxes the encoded frames into the file. MP4 carries H.264 (what
+// PowerPoint and Keynote play); WebM carries VP8 or VP9. A browser without an H.264 encoder gets
+// WebM, with a message saying so. Every frame is in the video, however long the machine takes to
+// draw and encode it (a progress bar and a Cancel button meanwhile). MediaRecorder on
+// canvas.captureStream(0) was the first choice, but it stamps frames by the wall clock, and
+// headless Chromium's canvas track delivered none of 60 requested frames of the WebGL canvas (a
+// 2-D copy: 43 frames spread over 7.4 s for 2 s of motion). cycle() is the one place this part
+// touches the playback.
 import { download } from './files.js';
-import { webmFile } from './webm.js';
 import { picture } from '../view/picture.js';
+import {
+  BufferTarget, EncodedPacket, EncodedVideoPacketSource, Mp4OutputFormat, Output, WebMOutputFormat,
+} from '../../vendor/mediabunny.min.mjs';
 
 /** Frames per second of the video. */
 export const FPS = 30;
 /** Bit rate asked of the encoder (bits per second). */
 const VIDEO_BITS = 6e6;
-/** WebCodecs codecs tried in order (the first the encoder takes is used): VP8, VP9 profile 0. */
-const VIDEO_CODECS = ['vp8', 'vp09.00.10.08'];
+/** The video containers: file extension, MIME type and the codecs each carries. */
+export const VIDEO_FORMATS = {
+  mp4: { ext: 'mp4', mime: 'video/mp4', label: 'MP4 (H.264)' },
+  webm: { ext: 'webm', mime: 'video/webm', label: 'WebM (VP8 / VP9)' },
+};
+/**
+ * H.264 levels (the codec string's last byte) by the most macroblocks (16 × 16 pixels) a frame may
+ * have at that level: a decoder refuses a stream whose level is too low for its frame size.
+ */
+const AVC_LEVELS = [[3600, '1f'], [8192, '28'], [22080, '32'], [36864, '33'], [139264, '3c']];
+
+/**
+ * The WebCodecs codecs of `format` tried in order for a `width` × `height` video (the first the
+ * encoder takes is used), each with mediabunny's name of it: for MP4, H.264 at the lowest level
+ * that fits (Baseline, else High profile); for WebM, VP8, else VP9 profile 0.
+ */
+export function videoCodecs(format, width, height) {
+  if (format === 'webm') return [{ codec: 'vp8', mux: 'vp8' }, { codec: 'vp09.00.10.08', mux: 'vp9' }];
+  const mbs = Math.ceil(width / 16) * Math.ceil(height / 16);
+  const level = AVC_LEVELS.find(([most]) => mbs <= most)?.[1];
+  if (!level) return [];
+  return ['42', '64'].map((profile) => ({ codec: `avc1.${profile}00${level}`, mux: 'avc', avc: { format: 'avc' } }));
+}
 /** A key frame every this many frames (seeking in the video). */
 const KEY_EVERY = 2 * FPS;
 /** Frames waiting in the encoder before the next one is drawn (bounds the memory held). */
@@ -87,22 +113,32 @@ export default {
     }
 
     /**
-     * The encoder settings for a `width` × `height` video: { config } with the first codec of
-     * VIDEO_CODECS the browser encodes, or { why } when there is none.
+     * The encoder settings for a `width` × `height` video in `format` ('mp4' | 'webm'): { config,
+     * mux, format } with the first codec the browser encodes (an MP4 without an H.264 encoder
+     * becomes a WebM, and `fellBack` says why), or { why } when there is none.
      */
-    async function videoConfig(width, height) {
+    async function videoConfig(format, width, height) {
       if (typeof window.VideoEncoder !== 'function' || typeof window.VideoFrame !== 'function') {
         return { why: 'this browser has no video encoder (WebCodecs VideoEncoder)' };
       }
-      for (const codec of VIDEO_CODECS) {
-        const config = { codec, width, height, bitrate: VIDEO_BITS, framerate: FPS };
-        try {
-          if ((await VideoEncoder.isConfigSupported(config)).supported) return { config };
-        } catch {
-          // Not this codec: the next one.
+      const first = async (f) => {
+        for (const { codec, mux, avc } of videoCodecs(f, width, height)) {
+          const config = { codec, width, height, bitrate: VIDEO_BITS, framerate: FPS, ...(avc ? { avc } : {}) };
+          try {
+            if ((await VideoEncoder.isConfigSupported(config)).supported) return { config, mux, format: f };
+          } catch {
+            // Not this codec: the next one.
+          }
         }
+        return null;
+      };
+      const got = await first(format);
+      if (got) return got;
+      if (format === 'mp4') {
+        const webm = await first('webm');
+        if (webm) return { ...webm, fellBack: `this browser has no H.264 encoder for ${width} × ${height} video, which MP4 needs` };
       }
-      return { why: 'this browser encodes neither VP8 nor VP9 video' };
+      return { why: 'this browser encodes neither H.264 nor VP8 nor VP9 video' };
     }
 
     function showProgress(on, fraction = 0) {
@@ -112,41 +148,59 @@ export default {
       $('m-video').disabled = on;
     }
 
+    /** The video format chosen in the View menu ('mp4' unless WebM is checked). */
+    const chosenFormat = () => ($('m-video-webm')?.checked ? 'webm' : 'mp4');
+
     /**
-     * Records one cycle of the motion as a WebM video at FPS frames per second and downloads it.
-     * Resolves to { name, frames, duration, bytes }, or null when it could not start (a message
-     * says why; nothing changed), failed (a message) or was cancelled (nothing downloaded).
+     * Records one cycle of the motion as a video at FPS frames per second and downloads it:
+     * `format` 'mp4' (H.264; WebM where the browser has no H.264 encoder, with a message) or
+     * 'webm'. Resolves to { name, format, codec, frames, duration, bytes }, or null when it could
+     * not start (a message says why; nothing changed), failed (a message) or was cancelled
+     * (nothing downloaded).
      */
-    async function recordVideo() {
+    async function recordVideo({ format = chosenFormat() } = {}) {
       if (recording) return null;
+      if (!VIDEO_FORMATS[format]) {
+        app.showError(`Video format: ${JSON.stringify(format)} is not mp4 or webm`);
+        return null;
+      }
       const c = cycle(app);
       if (!(c.duration > 0 && Number.isFinite(c.duration))) {
         app.showError('No video: the motion has no duration.', 'warn');
         return null;
       }
-      // Even sides (what the VP8 and VP9 encoders take).
+      // Even sides (what the H.264, VP8 and VP9 encoders take).
       const { w, h } = app.pixelSize();
       const width = w & ~1;
       const height = h & ~1;
       let cancelled = false;
       recording = { cancel: () => (cancelled = true) };
-      const { config, why } = await videoConfig(width, height);
-      if (!config) {
+      const chosen = await videoConfig(format, width, height);
+      if (!chosen.config) {
         recording = null;
-        app.showError(`No video: ${why}. Try a recent Chrome, Edge or Firefox.`, 'warn');
+        app.showError(`No video: ${chosen.why}. Try a recent Chrome, Edge or Firefox.`, 'warn');
         return null;
       }
+      const { config, mux } = chosen;
+      const fmt = VIDEO_FORMATS[chosen.format];
       // A cycle ends where it began: its last frame is the one before the first again; an open
       // motion shows its end pose too.
       const steps = Math.max(1, Math.round(c.duration * FPS));
       const count = app.motion.closed ? steps : steps + 1;
-      const chunks = [];
+      const output = new Output({
+        // MP4: the index first (a player starts without reading the whole file).
+        format: chosen.format === 'mp4' ? new Mp4OutputFormat({ fastStart: 'in-memory' }) : new WebMOutputFormat(),
+        target: new BufferTarget(),
+      });
+      const source = new EncodedVideoPacketSource(mux);
+      output.addVideoTrack(source, { frameRate: FPS });
       let error = null;
+      // The encoder hands out frames in decode order, which is the order the muxer takes them in.
+      let muxed = Promise.resolve();
       const encoder = new VideoEncoder({
-        output: (chunk) => {
-          const data = new Uint8Array(chunk.byteLength);
-          chunk.copyTo(data);
-          chunks.push({ data, timestamp: chunk.timestamp, key: chunk.type === 'key' });
+        output: (chunk, meta) => {
+          const packet = EncodedPacket.fromEncodedChunk(chunk);
+          muxed = muxed.then(() => source.add(packet, meta)).catch((e) => (error ??= e));
         },
         error: (e) => (error ??= e),
       });
@@ -155,6 +209,7 @@ export default {
       if (playing) app.setPlaying(false);
       showProgress(true, 0);
       try {
+        await output.start();
         encoder.configure(config);
         for (let i = 0; i < count && !cancelled && !error; i++) {
           c.show(Math.min(i / FPS, c.duration));
@@ -171,11 +226,19 @@ export default {
           do await new Promise((resolve) => setTimeout(resolve, 0));
           while (encoder.encodeQueueSize > MAX_QUEUE && !cancelled && !error);
         }
-        if (!cancelled && !error) await encoder.flush();
+        if (!cancelled && !error) {
+          await encoder.flush();
+          await muxed;
+        }
+        if (!cancelled && !error) {
+          source.close();
+          await output.finalize();
+        }
       } catch (e) {
         error ??= e;
       } finally {
         if (encoder.state !== 'closed') encoder.close();
+        if (output.state !== 'finalized' && output.state !== 'canceled') await output.cancel().catch(() => {});
         recording = null;
         showProgress(false);
         app.anim.u = u;
@@ -189,20 +252,18 @@ export default {
         app.ui?.toast('Recording cancelled: no video saved.');
         return null;
       }
-      let bytes;
-      try {
-        if (error) throw error;
-        chunks.sort((a, b) => a.timestamp - b.timestamp);
-        bytes = webmFile({ codec: config.codec, width, height, durationMs: (count * 1000) / FPS, frames: chunks });
-      } catch (e) {
-        app.showError(`The video could not be recorded: ${e.message ?? e}`);
+      if (error) {
+        app.showError(`The video could not be recorded: ${error.message ?? error}`);
         return null;
       }
-      const name = `${fileBase(title())}.webm`;
-      download(name, bytes, 'video/webm');
+      const bytes = new Uint8Array(output.target.buffer);
+      const name = `${fileBase(title())}.${fmt.ext}`;
+      download(name, bytes, fmt.mime);
       const duration = count / FPS;
-      app.ui?.toast(`Saved ${name}: ${duration.toFixed(2)} s, ${count} frames at ${FPS} fps`);
-      return { name, frames: count, duration, bytes: bytes.length };
+      const saved = `Saved ${name}: ${duration.toFixed(2)} s, ${count} frames at ${FPS} fps`;
+      if (chosen.fellBack) app.showError(`No MP4: ${chosen.fellBack}. ${saved} (WebM) instead.`, 'warn');
+      else app.ui?.toast(saved);
+      return { name, format: chosen.format, codec: config.codec, frames: count, duration, bytes: bytes.length };
     }
 
     /** Stops the recording in progress without saving it. */

@@ -2,6 +2,7 @@
 import GUI from '../../vendor/lil-gui.esm.min.js';
 import { exportMotion, importFiles } from './files.js';
 import { presetName, presetSubtitle } from './presets.js';
+import { openShareDialog } from './share-dialog.js';
 
 /** The largest strobe count the panel offers. */
 const STROBE_MAX = 10000;
@@ -100,15 +101,7 @@ export function buildUi(app) {
     pasteJson: () => openPaste(),
     exportJson: () => app.exportJson(),
     importObj: () => $('obj-file').click(),
-    share: async () => {
-      const link = app.shareLink();
-      try {
-        await navigator.clipboard.writeText(link);
-        toast('Share link copied to the clipboard.');
-      } catch {
-        openPaste(link, 'Share link (copy it):');
-      }
-    },
+    share: () => openShareDialog(app),
     reset: () => app.loadPreset(app.view.scene),
   };
   const fFile = gui.addFolder('File');
@@ -122,7 +115,7 @@ export function buildUi(app) {
   fFile.add(actions, 'exportTrajectory').name('Export CSV (body-point path)');
   fFile.add(exportOpts, 'tolerance', { '1 µm': 1e-6, '10 µm': 1e-5, '0.1 mm': 1e-4, '1 mm': 1e-3, '1 cm': 1e-2 }).name('Export tolerance (1 unit = 1 m)');
   fFile.add(actions, 'importObj').name('Import mesh (OBJ, glTF)…');
-  fFile.add(actions, 'share').name('Copy share link');
+  fFile.add(actions, 'share').name('Share & embed…');
   fFile.add(actions, 'reset').name('Reset preset');
   fFile.close();
 

@@ -1,0 +1,134 @@
+// The offline figure's template (run by 60-offline.sh): www/pkg/offline/figure.html and its size
+// in www/pkg/offline/figure.json. The playground's share dialog (www/js/editor/share-dialog.js)
+// fills in the figure (a <screw-bender> with a share payload) and the title, and downloads it.
+//
+// The file is made of:
+// * the element's ES modules (www/js/element/screw-bender.js and what it imports, the wasm-bindgen
+//   glue among them) bundled by esbuild into one inline module script. Three files are changed on
+//   the way, each at one exact place (the build stops when a place is not found, so a change of
+//   those lines is noticed here and not in a broken download): element/modules.js loads the
+//   module from the page's inline bytes instead of pkg/; element/chrome.js links the stylesheet
+//   as a data: URL; view/drawing.js reads the Stanford bunny from the page (the dialog adds it
+//   only when the figure shows it).
+// * the wasm module, gzip-compressed (DecompressionStream unpacks it) and base64-encoded in a
+//   <script type="application/octet-stream"> element, which the browser never runs.
+// * a Content-Security-Policy that lets the page load nothing from any network (default-src
+//   'none'; the scripts by their hashes; fetch only of data: URLs).
+import crypto from 'node:crypto';
+import fs from 'node:fs';
+import path from 'node:path';
+import zlib from 'node:zlib';
+import { fileURLToPath } from 'node:url';
+import * as esbuild from 'esbuild';
+
+const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
+const WWW = path.join(ROOT, 'www');
+const OUT = path.join(WWW, 'pkg/offline');
+const WASM = path.join(WWW, 'pkg/screwbender_bg.wasm');
+
+/** Where the dialog puts the figure, the title and the bunny (each once in the template). */
+export const SLOTS = { figure: '<!--screwbender:figure-->', title: '<!--screwbender:title-->', bunny: '<!--screwbender:bunny-->' };
+
+/** Replaces the one occurrence of `from` in `text` (of `file`), or stops the build. */
+function replaceOnce(text, from, to, file) {
+  const at = text.indexOf(from);
+  if (at < 0 || text.indexOf(from, at + 1) >= 0) {
+    throw new Error(`60-offline: ${file} no longer has exactly one ${JSON.stringify(from)}; update scripts/serve.d/60-offline.mjs`);
+  }
+  return text.slice(0, at) + to + text.slice(at + from.length);
+}
+
+const css = fs.readFileSync(path.join(WWW, 'css/screw-bender.css'), 'utf8');
+const cssUrl = `data:text/css;base64,${Buffer.from(css).toString('base64')}`;
+
+const OFFLINE_MODULES = `
+import * as glue from '../../pkg/screwbender.js';
+
+/** The wasm module's bytes from the page: base64 of gzip (scripts/serve.d/60-offline.mjs). */
+async function wasmBytes() {
+  const text = document.getElementById('screwbender-wasm').textContent.trim();
+  const packed = await fetch('data:application/gzip;base64,' + text);
+  return new Response(packed.body.pipeThrough(new DecompressionStream('gzip'))).arrayBuffer();
+}
+
+export const loadMain = async () => {
+  const module_or_path = await wasmBytes();
+  return { ...glue, default: () => glue.default({ module_or_path }) };
+};
+export const loadGl = null;
+`;
+
+const offline = {
+  name: 'offline',
+  setup(build) {
+    build.onLoad({ filter: /[\\/]www[\\/]js[\\/](element|view)[\\/](modules|chrome|drawing)\.js$/ }, (args) => {
+      const rel = path.relative(WWW, args.path);
+      let text = fs.readFileSync(args.path, 'utf8');
+      if (rel.endsWith('modules.js')) text = OFFLINE_MODULES;
+      else if (rel.endsWith('chrome.js')) {
+        text = replaceOnce(text, "new URL('../../css/screw-bender.css', import.meta.url).href", JSON.stringify(cssUrl), rel);
+      } else if (rel.endsWith('drawing.js')) {
+        // No bunny in the page: a data: URL that fails to load, and the wedge stands in.
+        text = replaceOnce(
+          text,
+          "new URL('../../vendor/bunny.obj', import.meta.url)",
+          "((b) => (b ? 'data:text/plain;charset=utf-8,' + encodeURIComponent(b.textContent) : 'data:text/plain;base64,*'))(document.getElementById('screwbender-bunny'))",
+          rel,
+        );
+      }
+      return { contents: text, loader: 'js', resolveDir: path.dirname(args.path) };
+    });
+  },
+};
+
+const result = await esbuild.build({
+  entryPoints: [path.join(WWW, 'js/element/screw-bender.js')],
+  bundle: true,
+  minify: true,
+  format: 'esm',
+  platform: 'browser',
+  write: false,
+  legalComments: 'none',
+  logLevel: 'warning',
+  plugins: [offline],
+});
+// Inline script text must not close its element early.
+const js = result.outputFiles[0].text.replace(/<\/(script)/gi, '<\\/$1');
+
+const wasm = fs.readFileSync(WASM);
+const packed = zlib.gzipSync(wasm, { level: 9 }).toString('base64');
+
+const style = 'html,body{margin:0;height:100%}body{display:flex;flex-direction:column;background:#e8ecf1;font:14px/1.4 system-ui,-apple-system,"Segoe UI",sans-serif}screw-bender{flex:1 1 auto;min-height:0;aspect-ratio:auto}@media (prefers-color-scheme:dark){body{background:#1b1f27;color:#e6e9ef}}';
+const hash = (s) => `'sha256-${crypto.createHash('sha256').update(s).digest('base64')}'`;
+const csp = [
+  "default-src 'none'",
+  `script-src ${hash(js)} 'wasm-unsafe-eval'`,
+  `style-src ${hash(style)} data:`,
+  'connect-src data:',
+  'img-src data: blob:',
+  "base-uri 'none'",
+  "form-action 'none'",
+].join('; ');
+
+const html = `<!doctype html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<meta http-equiv="Content-Security-Policy" content="${csp}">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<meta name="generator" content="ScrewBender playground (offline figure)">
+<title>${SLOTS.title}</title>
+<style>${style}</style>
+</head>
+<body>
+${SLOTS.figure}
+${SLOTS.bunny}
+<script type="application/octet-stream" id="screwbender-wasm">${packed}</script>
+<script type="module">${js}</script>
+</body>
+</html>
+`;
+fs.mkdirSync(OUT, { recursive: true });
+fs.writeFileSync(path.join(OUT, 'figure.html'), html);
+fs.writeFileSync(path.join(OUT, 'figure.json'), `${JSON.stringify({ bytes: Buffer.byteLength(html), wasmBytes: wasm.length, scriptBytes: js.length })}\n`);
+console.log(`offline figure template: ${(Buffer.byteLength(html) / 1e6).toFixed(2)} MB (wasm ${(wasm.length / 1e6).toFixed(2)} MB → ${(packed.length / 1e6).toFixed(2)} MB base64 of gzip, script ${(js.length / 1e3).toFixed(0)} KB)`);
