@@ -7,8 +7,10 @@
 use glam::{DQuat, DVec2, DVec3};
 use serde::Serialize;
 
+pub(crate) mod hull;
 pub mod mesh;
 pub(crate) mod morph;
+pub(crate) mod pieces;
 
 use crate::pose::Pose;
 use crate::subdivision::scheme::Scheme;
