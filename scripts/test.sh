@@ -76,6 +76,7 @@ stage() {
 stage "rustfmt" cargo fmt --all -- --check
 stage "core has no web dependencies" ./scripts/check-core-deps.sh
 stage "no import circles" python3 scripts/check-imports.py
+stage "ARCHITECTURE.md's trees match the files" python3 scripts/check-architecture.py
 stage "clippy native (all targets)" cargo clippy --workspace --all-targets -- -D warnings
 stage "clippy $WASM_TARGET (core and web libs)" \
   cargo clippy -p screwbender -p screwbender-web --lib --target "$WASM_TARGET" -- -D warnings
