@@ -53,7 +53,7 @@ async function compare([before, after]) {
   const modules = [];
   for (const d of [before, after]) modules.push(await import(pathToFileURL(entry(d)).href));
   console.log(`node ${process.version}; before ${before}, after ${after}`);
-  const motions = modules.map((sb) => sb.Motion.fromScene('rb_sphere7'));
+  const motions = modules.map((sb) => (sb.Motion.fromPreset ? sb.Motion.fromPreset('rb_sphere7') : sb.Motion.fromScene('rb_sphere7')));
   const fit = (m) => m.quaternionSpline({ variableFrames: 4, samples: 2 });
   // The same fit in both builds: bit for bit, or (when a change reorders the arithmetic) the
   // largest relative change of the stage objectives and the iteration counts.
@@ -110,7 +110,7 @@ async function playground() {
   const sb = await import(pathToFileURL(path.join(pkg, 'screwbender.js')).href);
   await sb.default({ module_or_path: fs.readFileSync(path.join(pkg, 'screwbender_bg.wasm')) });
   console.log(`node ${process.version}, screwbender ${sb.version()} (www/pkg)`);
-  const m = sb.Motion.fromScene('rb_sphere7');
+  const m = (sb.Motion.fromPreset ? sb.Motion.fromPreset('rb_sphere7') : sb.Motion.fromScene('rb_sphere7'));
   // quaternionSpline builds the initial spline (no optimisation: cheap) and the optimised fit,
   // and samples EL and |q| `samples` times; with 2 samples the optimised fit is nearly all of it,
   // and that fit alone is what the Methods view's overlay (methodSample) costs.

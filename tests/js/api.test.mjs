@@ -117,13 +117,18 @@ describe('module', () => {
     });
   });
 
-  it('scenes: listed, typed, loadable', () => {
-    const list = sb.scenes();
+  it('the former preset names are aliases of the new ones', () => {
+    assert.deepEqual(sb.scenes(), sb.presets());
+    assert.equal(Motion.fromScene('circle4').toJson(), Motion.fromPreset('circle4').toJson());
+  });
+
+  it('presets: listed, typed, loadable', () => {
+    const list = sb.presets();
     assert.ok(list.length >= 10);
     const dts = readFileSync(new URL('screwbender.d.ts', entry), 'utf8');
-    const union = dts.match(/export type SceneId =([^;]*);/)[1];
+    const union = dts.match(/export type PresetId =([^;]*);/)[1];
     const typed = [...union.matchAll(/'([^']+)'/g)].map((x) => x[1]);
-    assert.deepEqual(list.map((s) => s.id), typed, 'SceneId in the .d.ts is out of date');
+    assert.deepEqual(list.map((s) => s.id), typed, 'PresetId in the .d.ts is out of date');
     const kinds = ['bar', 'block', 'cylinder', 'cone', 'sphere', 'starPrism', 'pendulum', 'wedge', 'triangle', 'iBeam', 'molecule'];
     for (const s of list) {
       for (const key of ['id', 'label', 'figure', 'description']) assert.equal(typeof s[key], 'string');
@@ -131,7 +136,7 @@ describe('module', () => {
       assert.ok(['bspline', 'fourpoint', 'jarek'].includes(s.scheme));
       assert.ok(Number.isInteger(s.levels) && s.poseCount >= 2);
       for (const shape of [s.shape, ...s.morphShapes]) assert.ok(kinds.includes(shape.kind), shape.kind);
-      const m = Motion.fromScene(s.id);
+      const m = Motion.fromPreset(s.id);
       assert.equal(m.poseCount, s.poseCount);
       assert.equal(m.closed, s.closed);
       assert.equal(m.name, s.id);
@@ -297,7 +302,7 @@ describe('Motion: construction and documents', () => {
   });
 
   it('loadJson / loadDocument keep the options', () => {
-    const m = Motion.fromScene('circle4');
+    const m = Motion.fromPreset('circle4');
     m.setLevels(2);
     m.loadJson(JSON.stringify(doc2()));
     assert.equal(m.poseCount, 3);
@@ -325,7 +330,7 @@ describe('Motion: editing', () => {
 
   it('setPose during a drag updates the refined motion locally, identical to a rebuild', () => {
     for (const closed of [true, false]) {
-      const m = Motion.fromScene('l_cycle_rotated');
+      const m = Motion.fromPreset('l_cycle_rotated');
       m.setClosed(closed);
       m.setLevels(4);
       m.subdivide(); // the refined motion exists: setPose takes the local path
@@ -410,7 +415,7 @@ describe('Motion: options', () => {
   });
 
   it('the J_s family contains the named schemes', () => {
-    const m = Motion.fromScene('bunny6');
+    const m = Motion.fromPreset('bunny6');
     m.setLevels(4);
     for (const [scheme, j, tol] of [['fourpoint', 0, 0], ['jarek', 0.5, 0], ['bspline', 1, 1e-12]]) {
       m.setScheme(scheme);
@@ -421,7 +426,7 @@ describe('Motion: options', () => {
   });
 
   it('4-point interpolates, B-spline does not; split rules differ from direct', () => {
-    const m = Motion.fromScene('l_cycle_rotated');
+    const m = Motion.fromPreset('l_cycle_rotated');
     const control = m.poses();
     const refined = m.subdivide();
     for (let i = 0; i < m.poseCount; i++) {
@@ -437,7 +442,7 @@ describe('Motion: options', () => {
 });
 
 describe('Motion: evaluation and typed-array layouts', () => {
-  const circle = () => Motion.fromScene('circle4');
+  const circle = () => Motion.fromPreset('circle4');
   const circlePose = (u) => {
     const a = (Math.PI / 2) * u;
     return [[3 * Math.cos(a), 3 * Math.sin(a), 0], rz(a)];
@@ -458,7 +463,7 @@ describe('Motion: evaluation and typed-array layouts', () => {
   });
 
   it('refinedMatrices: column-major, consistent with the poses', () => {
-    const m = Motion.fromScene('cylinder5');
+    const m = Motion.fromPreset('cylinder5');
     const poses = m.subdivide();
     const mats = m.refinedMatrices();
     assert.ok(mats instanceof Float32Array);
@@ -497,7 +502,7 @@ describe('Motion: evaluation and typed-array layouts', () => {
     }
     assert.deepEqual(m.sampleMatrices(8), sb.posesToMatrices(s));
     assert.equal(m.sample(0).length, 0);
-    const h = Motion.fromScene('helix_open');
+    const h = Motion.fromPreset('helix_open');
     const hs = h.sample(11);
     for (const k of [0, 3, 10]) {
       const u = k / 2;
@@ -524,7 +529,7 @@ describe('Motion: evaluation and typed-array layouts', () => {
   });
 
   it('sampleKinematics: 16 numbers per sample, same as kinematicsAt', () => {
-    const m = Motion.fromScene('bunny6');
+    const m = Motion.fromPreset('bunny6');
     const n = 12;
     const local = [0.5, -0.2, 0.1];
     const ks = m.sampleKinematics(n, local);
@@ -541,7 +546,7 @@ describe('Motion: evaluation and typed-array layouts', () => {
   });
 
   it('spanScrews: one per control span, for display', () => {
-    const m = Motion.fromScene('circle4');
+    const m = Motion.fromPreset('circle4');
     const screws = m.spanScrews();
     assert.equal(screws.length, 4);
     for (const s of screws) {
@@ -666,7 +671,7 @@ describe('bad input: clear Error, state unchanged', () => {
     throwsUnchanged(m, () => m.setOptions({ levels: 40 }), /^levels: the result would have/);
     assert.throws(() => new Motion(doc2(), { levels: 19 }), { message: /^levels: the result would have/ });
     // The cap depends on the pose count and on closed/open: those changes are checked too.
-    const ring = Motion.fromScene('circle4');
+    const ring = Motion.fromPreset('circle4');
     ring.loadDocument({ poses: [...ring.toDocument().poses, ...ring.toDocument().poses] });
     ring.setLevels(17); // 8 · 2^17 = 1048576 poses: exactly the limit
     assert.equal(ring.refinedCount, 1048576);
@@ -709,6 +714,7 @@ describe('bad input: clear Error, state unchanged', () => {
     throwsUnchanged(m, () => m.sample(2 ** 21), 'count: 2097152 is out of range (expected a whole number from 0 to 1048576)');
     throwsUnchanged(m, () => m.sampleMatrices(1.5), 'count: 1.5 is out of range (expected a whole number from 0 to 1048576)');
     throwsUnchanged(m, () => m.sampleKinematics('3'), 'count: expected a number, got string');
+    throwsUnchanged(m, () => Motion.fromPreset('nope'), /^preset: unknown value 'nope' \(expected l_cycle_parallel, /);
     throwsUnchanged(m, () => Motion.fromScene('nope'), /^scene: unknown value 'nope' \(expected l_cycle_parallel, /);
     throwsUnchanged(m, () => Motion.fromPoses([1, 2, 3]), /^poses: length 3 is out of range \(expected a multiple of 7/);
     throwsUnchanged(m, () => Motion.fromPoses([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0]), 'poses[1].rotation: zero quaternion');

@@ -189,7 +189,7 @@ describe('bad-input matrix: JS API', () => {
     }
     throwsUnchanged(m, () => m.setScheme('cubic'), "scheme: unknown value 'cubic' (expected bspline, fourpoint, jarek, j)");
     throwsUnchanged(m, () => m.setRules('v3'), "rules: unknown value 'v3' (expected direct, split)");
-    throwsError(() => Motion.fromScene('nope'), /^scene: unknown value 'nope' \(expected /);
+    throwsError(() => Motion.fromPreset('nope'), /^preset: unknown value 'nope' \(expected /);
   });
 
   it('levels beyond the cap', () => {

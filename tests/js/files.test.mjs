@@ -18,7 +18,7 @@ function samePoses(a, b, tol) {
 
 describe('Motion.exportFile', () => {
   it('writes a GLB with the adaptive keyframe count, and importMotionFile reads the control poses back', () => {
-    const m = Motion.fromScene('l_cycle_rotated');
+    const m = Motion.fromPreset('l_cycle_rotated');
     const f = m.exportFile({ format: 'glb' });
     assert.equal(f.fileName, 'l_cycle_rotated-motion.glb');
     assert.equal(f.mimeType, 'model/gltf-binary');
@@ -35,7 +35,7 @@ describe('Motion.exportFile', () => {
   });
 
   it('writes .gltf + .bin that import together (the JSON names the buffer)', () => {
-    const m = Motion.fromScene('helix_open');
+    const m = Motion.fromPreset('helix_open');
     const f = m.exportFile({ format: 'gltf', name: 'walk' });
     assert.equal(f.fileName, 'walk-motion.gltf');
     assert.equal(f.binName, 'walk-motion.bin');
@@ -49,7 +49,7 @@ describe('Motion.exportFile', () => {
   });
 
   it('writes CSV poses (finite rows) and a body-point trajectory; fixed rate gives fps × duration + 1 rows', () => {
-    const m = Motion.fromScene('circle4');
+    const m = Motion.fromPreset('circle4');
     const f = m.exportFile({ format: 'csv', fps: 10 });
     const lines = new TextDecoder().decode(f.data).trim().split('\n');
     assert.equal(lines.length - 1, f.sampleCount);
@@ -65,7 +65,7 @@ describe('Motion.exportFile', () => {
   });
 
   it('uses the given times (the last one is the cycle time back at pose 0)', () => {
-    const m = Motion.fromScene('circle4');
+    const m = Motion.fromPreset('circle4');
     const f = m.exportFile({ format: 'csv', fps: 2, times: [0, 1, 3, 4, 8] });
     assert.equal(f.sampleCount, 17);
     assert.throws(() => m.exportFile({ format: 'csv', times: [0, 1, 2] }), /times: 3 times given, expected 5/);
@@ -73,7 +73,7 @@ describe('Motion.exportFile', () => {
   });
 
   it('rejects bad settings with a message naming the setting, and the motion keeps working', () => {
-    const m = Motion.fromScene('circle4');
+    const m = Motion.fromPreset('circle4');
     const json = m.toJson();
     const bad = [
       [{ format: 'fbx' }, /format: unknown value 'fbx'/],

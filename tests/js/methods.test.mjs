@@ -5,7 +5,7 @@ import assert from 'node:assert/strict';
 import { describe, it } from 'node:test';
 import { sb } from './full-package.mjs';
 
-const { Motion, methods, scenes } = sb;
+const { Motion, methods, presets } = sb;
 
 describe('comparison methods', () => {
   it('lists every method with a title', () => {
@@ -16,8 +16,8 @@ describe('comparison methods', () => {
 
   it('runs every method on every preset: finite unit poses through the control poses, or a clear refusal', () => {
     const refusals = [];
-    for (const s of scenes()) {
-      const m = Motion.fromScene(s.id);
+    for (const s of presets()) {
+      const m = Motion.fromPreset(s.id);
       const n = m.poseCount;
       for (const { id, supportsClosed } of methods()) {
         let arr;
@@ -44,7 +44,7 @@ describe('comparison methods', () => {
   });
 
   it('compareMethods on C1 reproduces the papers’ claims', () => {
-    const m = Motion.fromScene('rb_sphere7');
+    const m = Motion.fromPreset('rb_sphere7');
     const t = m.compareMethods(['rb', 'slerp', 'decoupled', 'jarek', 'fourpoint']);
     const row = Object.fromEntries(t.rows.map((r) => [r.method, r]));
     // RB and Squad are C¹ in rotation; SLERP has angular-velocity jumps at every key.
@@ -57,7 +57,7 @@ describe('comparison methods', () => {
   });
 
   it('quaternionSpline reports stages, frames and a smaller Euler–Lagrange error', () => {
-    const m = Motion.fromScene('rb_sphere7');
+    const m = Motion.fromPreset('rb_sphere7');
     const r = m.quaternionSpline({ variableFrames: 4, samples: 300 });
     assert.equal(r.frameTimes.length, 4);
     assert.deepEqual(r.keyTimes, [0, 1, 2, 3, 4, 5, 6]);
@@ -69,7 +69,7 @@ describe('comparison methods', () => {
   });
 
   it('refuses bad input with a clear Error and keeps working', () => {
-    const m = Motion.fromScene('circle4');
+    const m = Motion.fromPreset('circle4');
     const json = m.toJson();
     const bad = [
       [() => m.methodSample('squad', 10), /method: unknown value 'squad'/],

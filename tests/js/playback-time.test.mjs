@@ -11,7 +11,7 @@ const { Motion } = sb;
 
 /** A preset motion, opened (`closed: false`) or as it is (a cycle). */
 function motion(closed = true) {
-  const m = Motion.fromScene('l_cycle_rotated');
+  const m = Motion.fromPreset('l_cycle_rotated');
   if (!closed) m.setClosed(false);
   return m;
 }

@@ -22,7 +22,7 @@ const rand = prng(SEED);
 const pick = (xs) => xs[Math.floor(rand() * xs.length)];
 const int = (n) => Math.floor(rand() * n);
 
-const SCENES = sb.scenes().map((s) => s.id);
+const PRESETS = sb.presets().map((s) => s.id);
 const H = Math.SQRT1_2;
 
 // ---- random values: valid ones, near-valid ones and garbage ----------------------------------
@@ -108,13 +108,13 @@ const moduleCalls = [
   ['new Motion', () => new Motion(document(), maybe(options))],
   ['Motion.fromJson', () => Motion.fromJson(json(), maybe(options))],
   ['Motion.fromPoses', () => Motion.fromPoses(posesArray(), maybe(() => rand() < 0.5), maybe(options))],
-  ['Motion.fromScene', () => Motion.fromScene(rand() < 0.7 ? pick(SCENES) : garbage())],
+  ['Motion.fromPreset', () => Motion.fromPreset(rand() < 0.7 ? pick(PRESETS) : garbage())],
   ['screw', () => sb.screw(pose(), maybe(number), pose())],
   ['screwPoses', () => sb.screwPoses(pose(), pose(), maybe(() => Array.from({ length: int(5) }, number)))],
   ['screwPairs', () => sb.screwPairs(posesArray(), posesArray(), maybe(() => Array.from({ length: int(4) }, number)))],
   ['screwInfo', () => sb.screwInfo(pose(), pose())],
   ['posesToMatrices', () => sb.posesToMatrices(posesArray())],
-  ['scenes', () => sb.scenes()],
+  ['presets', () => sb.presets()],
   ['limits', () => sb.limits()],
 ];
 
@@ -161,7 +161,7 @@ function healthy(m, where) {
 
 it(`random calls for ${SECONDS} s never panic and never corrupt a motion (seed ${SEED})`, () => {
   console.log(`# random-calls: seed ${SEED} (RANDOM_CALLS_SEED=${SEED} to reproduce), ${SECONDS} s`);
-  const motions = [Motion.fromScene(SCENES[0]), new Motion({ poses: [{ origin: [0, 0, 0], rotation: [1, 0, 0, 0] }, { origin: [2, 0, 0], rotation: [H, 0, 0, H] }] }, { levels: 2 })];
+  const motions = [Motion.fromPreset(PRESETS[0]), new Motion({ poses: [{ origin: [0, 0, 0], rotation: [1, 0, 0, 0] }, { origin: [2, 0, 0], rotation: [H, 0, 0, H] }] }, { levels: 2 })];
   const stats = { calls: 0, thrown: 0, ok: 0 };
   const end = Date.now() + SECONDS * 1000;
   let call = 0;
@@ -195,7 +195,7 @@ it(`random calls for ${SECONDS} s never panic and never corrupt a motion (seed $
     }
     // The module keeps working: every live motion, and a fresh one.
     for (const m of motions) healthy(m, `seed ${SEED}, after call ${call}`);
-    const probe = Motion.fromScene(pick(SCENES));
+    const probe = Motion.fromPreset(pick(PRESETS));
     healthy(probe, `seed ${SEED}, fresh motion after call ${call}`);
     probe.free();
   }

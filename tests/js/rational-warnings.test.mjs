@@ -46,7 +46,7 @@ function zigzag(n) {
 
 describe('Motion.warnings', () => {
   it('names every span of the four-pose circle with the split 4-point and Jarek rules', () => {
-    const m = Motion.fromScene('circle4');
+    const m = Motion.fromPreset('circle4');
     for (const scheme of ['fourpoint', 'jarek']) {
       m.setOptions({ scheme, rules: 'split' });
       const w = m.warnings();
@@ -59,12 +59,12 @@ describe('Motion.warnings', () => {
   });
 
   it('is empty for the direct rules, the B-spline and five or more poses', () => {
-    const m = Motion.fromScene('circle4');
+    const m = Motion.fromPreset('circle4');
     m.setOptions({ scheme: 'fourpoint', rules: 'direct' });
     assert.deepEqual(m.warnings(), []);
     m.setOptions({ scheme: 'bspline', rules: 'split' });
     assert.deepEqual(m.warnings(), []);
-    const six = Motion.fromScene('l_cycle_rotated');
+    const six = Motion.fromPreset('l_cycle_rotated');
     six.setOptions({ scheme: 'jarek', rules: 'split' });
     assert.deepEqual(six.warnings(), []);
   });
@@ -100,7 +100,7 @@ describe('Motion.rational and Motion.rationalFromTriangles', () => {
 
   it('fit a raw triangle sequence as the CLI does, and (19) straightens the last segment', () => {
     // The triangle placed by the poses of `triangle7`, read off at the keys (t = 0 … 6).
-    const m = Motion.fromScene('triangle7');
+    const m = Motion.fromPreset('triangle7');
     const n = m.poseCount;
     const r = m.rational({ continuity: 'c0', samples: n });
     const data = [];
@@ -130,7 +130,7 @@ describe('Motion.rational and Motion.rationalFromTriangles', () => {
   });
 
   it('refuses bad input with a clear Error and leaves the motion unchanged', () => {
-    const m = Motion.fromScene('circle4');
+    const m = Motion.fromPreset('circle4');
     const before = m.toJson();
     assert.throws(() => m.rational(), (e) => e instanceof Error && /C0 only/.test(e.message));
     assert.throws(() => m.rational({ end: 20 }), (e) => e instanceof Error && /options\.end/.test(e.message));
@@ -147,7 +147,7 @@ describe('Motion.rational and Motion.rationalFromTriangles', () => {
 
 describe('Motion.barrBaseline', () => {
   it('reaches R–B’s objective from below on scene C1, as the CLI measures', () => {
-    const m = Motion.fromScene('rb_sphere7');
+    const m = Motion.fromPreset('rb_sphere7');
     if (m.closed) m.setClosed(false);
     const b = m.barrBaseline();
     const rb = m.quaternionSpline({ samples: 2 }).stages.at(-1).objective;
@@ -161,7 +161,7 @@ describe('Motion.barrBaseline', () => {
   });
 
   it('refuses a cycle with a clear Error', () => {
-    const m = Motion.fromScene('circle4');
+    const m = Motion.fromPreset('circle4');
     assert.throws(() => m.barrBaseline(), (e) => e instanceof Error && /open sequences only/.test(e.message));
   });
 });

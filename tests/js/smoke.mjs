@@ -34,7 +34,7 @@ export function runSmoke(sb) {
   });
 
   check('circle4: subdivide + known pose', () => {
-    const m = sb.Motion.fromScene('circle4');
+    const m = sb.Motion.fromPreset('circle4');
     try {
       const refined = m.subdivide();
       if (!(refined instanceof Float64Array) || refined.length !== 4 * 32 * 7) {
@@ -54,7 +54,7 @@ export function runSmoke(sb) {
   });
 
   check('l_cycle_rotated: 4-point interpolates', () => {
-    const m = sb.Motion.fromScene('l_cycle_rotated');
+    const m = sb.Motion.fromPreset('l_cycle_rotated');
     try {
       m.setLevels(6);
       const refined = m.subdivide();
@@ -73,7 +73,7 @@ export function runSmoke(sb) {
   });
 
   check('helix_open: every scheme reproduces the helix', () => {
-    const m = sb.Motion.fromScene('helix_open');
+    const m = sb.Motion.fromPreset('helix_open');
     try {
       for (const scheme of ['bspline', 'fourpoint', 'jarek']) {
         m.setScheme(scheme);
@@ -90,7 +90,7 @@ export function runSmoke(sb) {
   });
 
   check('bad input throws and leaves the motion unchanged', () => {
-    const m = sb.Motion.fromScene('pendulum');
+    const m = sb.Motion.fromPreset('pendulum');
     try {
       const before = m.toJson();
       let message = '';

@@ -99,12 +99,12 @@ function largestError(motion, tracks, points, count) {
 
 describe('Motion.keyframeTracks in three.js', () => {
   const cases = [
-    { name: 'open preset', make: () => Motion.fromScene('triangle7'), tolerance: 1e-3 },
-    { name: 'cycle', make: () => Motion.fromScene('l_cycle_rotated'), tolerance: 5e-4 },
+    { name: 'open preset', make: () => Motion.fromPreset('triangle7'), tolerance: 1e-3 },
+    { name: 'cycle', make: () => Motion.fromPreset('l_cycle_rotated'), tolerance: 5e-4 },
     {
       name: 'key times and a key velocity',
       make: () => {
-        const m = Motion.fromScene('l_cycle_rotated');
+        const m = Motion.fromPreset('l_cycle_rotated');
         const n = m.poseCount + (m.closed ? 1 : 0);
         m.setTimes(Array.from({ length: n }, (_, i) => 0.5 + i * i * 0.4));
         m.setVelocities(Array.from({ length: m.poseCount }, (_, i) => (i === 1 ? 0 : null)));
@@ -142,7 +142,7 @@ describe('Motion.keyframeTracks in three.js', () => {
   }
 
   it('takes the radius from points (default 1), and a tighter tolerance gives more keys', () => {
-    const motion = Motion.fromScene('triangle7');
+    const motion = Motion.fromPreset('triangle7');
     const points = new Float32Array([0, 0, 0, 3, 4, 0, -1, 0, 0]);
     assert.equal(motion.keyframeTracks({ points }).radius, 5);
     assert.equal(motion.keyframeTracks({ points: [0, 0, 2] }).radius, 2);
@@ -161,7 +161,7 @@ describe('Motion.keyframeTracks in three.js', () => {
   });
 
   it('refuses bad options naming them, and leaves the motion unchanged', () => {
-    const motion = Motion.fromScene('triangle7');
+    const motion = Motion.fromPreset('triangle7');
     const before = motion.toJson();
     const bad = [
       [{ tolerance: -1 }, /tolerance/],

@@ -9,7 +9,7 @@ const { Motion, importMotionFile, reducePoses, importedMesh, timingMap } = sb;
 
 describe('Motion key times and velocities', () => {
   it('are stored, drive timedKinematics and appear in the document; older documents are unchanged', () => {
-    const m = Motion.fromScene('l_cycle_rotated');
+    const m = Motion.fromPreset('l_cycle_rotated');
     const plain = m.toJson();
     assert.equal(m.times, undefined);
     assert.equal(m.velocities, undefined);
@@ -48,7 +48,7 @@ describe('Motion key times and velocities', () => {
   });
 
   it('refuses bad times and velocities with the element named, and changes nothing', () => {
-    const m = Motion.fromScene('circle4');
+    const m = Motion.fromPreset('circle4');
     m.setTimes([0, 1, 2, 3, 5]);
     const before = m.toJson();
     const bad = [
@@ -77,7 +77,7 @@ describe('Motion key times and velocities', () => {
 
 describe('exports name what they hold', () => {
   it('suggests -motion.glb, -poses.csv and -path.csv, and reports the radius the tolerance holds at', () => {
-    const m = Motion.fromScene('l_cycle_rotated');
+    const m = Motion.fromPreset('l_cycle_rotated');
     const glb = m.exportFile({ format: 'glb' });
     assert.equal(glb.fileName, 'l_cycle_rotated-motion.glb');
     assert.ok(glb.radius > 1 && glb.radius < 3, `radius ${glb.radius}`);
@@ -98,7 +98,7 @@ describe('exports name what they hold', () => {
 
 describe('dense imports and dropped glTF', () => {
   it('a CSV of samples has more than 64 poses; reducePoses keeps every k-th or a fit, and says how many', () => {
-    const m = Motion.fromScene('cylinder5');
+    const m = Motion.fromPreset('cylinder5');
     const csv = new TextDecoder().decode(m.exportFile({ format: 'csv' }).data);
     const doc = importMotionFile('cylinder5-poses.csv', csv);
     assert.ok(doc.poses.length > 64, `${doc.poses.length} poses`);
@@ -128,7 +128,7 @@ describe('dense imports and dropped glTF', () => {
   });
 
   it('a dropped GLB is titled by its scene and gives its mesh', () => {
-    const m = Motion.fromScene('pendulum');
+    const m = Motion.fromPreset('pendulum');
     const f = m.exportFile({ format: 'glb' });
     const doc = importMotionFile(f.fileName, f.data);
     assert.equal(doc.name, 'pendulum');
@@ -163,7 +163,7 @@ describe('random calls to the new functions', () => {
       () => timingMap(rand() < 0.7 ? increasing(5) : garbage(), 4, true, 7, rand() < 0.7 ? list(4) : garbage()),
       () => importedMesh('x.glb', rand() < 0.5 ? new Uint8Array([0x67, 0x6c, 0x54, 0x46, 2, 0, 0, 0]) : garbage()),
     ];
-    const m = Motion.fromScene('circle4');
+    const m = Motion.fromPreset('circle4');
     m.setLevels(3);
     let failures = 0;
     for (let i = 0; i < 3000; i++) {
@@ -179,7 +179,7 @@ describe('random calls to the new functions', () => {
       // The motion keeps evaluating after every call, with a valid timing.
       const k = m.timedKinematics(3);
       assert.ok(k.every(Number.isFinite));
-      if (m.poseCount > 12) m.loadJson(Motion.fromScene('circle4').toJson());
+      if (m.poseCount > 12) m.loadJson(Motion.fromPreset('circle4').toJson());
     }
     assert.ok(failures > 300 && failures < 2900, `${failures} of 3000 calls failed`);
   });

@@ -5,7 +5,7 @@
 import assert from 'node:assert/strict';
 import { Motion, methods, subdividePolygon, importMotionFile } from 'screwbender/full';
 
-const motion = Motion.fromScene('l_cycle_rotated');
+const motion = Motion.fromPreset('l_cycle_rotated');
 // three.js keyframe arrays: x,y,z per position, x,y,z,w unit quaternions, increasing times.
 const tracks = motion.keyframeTracks({ tolerance: 1e-3, radius: 1 });
 const keys = tracks.times.length;
