@@ -203,6 +203,9 @@ JS
     "$REPO_ROOT/node_modules/.bin/esbuild" "$f" --minify --format=esm --log-level=warning --outfile="$f.min"
     mv "$f.min" "$f"
   done < <(find "$viewer/js" -name '*.js' -print0)
+  # The figure's stylesheet too (its comments are for readers of www/css/).
+  "$REPO_ROOT/node_modules/.bin/esbuild" "$viewer/css/screw-bender.css" --minify --log-level=warning --outfile="$viewer/css/screw-bender.css.min"
+  mv "$viewer/css/screw-bender.css.min" "$viewer/css/screw-bender.css"
   cp npm/viewer.js npm/viewer.d.ts "$PKG_DIR/"
 fi
 
