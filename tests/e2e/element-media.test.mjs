@@ -5,18 +5,16 @@
 // toDataURL) at the asked size, 2× drawn (not scaled up), without the gizmo unless asked.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { EXPECTED_BACKEND, OPEN3, canvasBox, elementBrowser, figureFrames, pageHtml } from './element-lib.mjs';
+import { EXPECTED_BACKEND, OPEN3, canvasBox, figureFrames, openOnePage, pageHtml } from './element-lib.mjs';
 
 let b;
 let page;
 let problems;
 before(async () => {
-  b = await elementBrowser();
-  const html = pageHtml(`<main style="width: 800px">
+  ({ b, page, problems } = await openOnePage(pageHtml(`<main style="width: 800px">
 <screw-bender id="f" editable loading="eager" show="control trajectories grid triads">
 <script type="application/json">${JSON.stringify(OPEN3)}</script>Figure.</screw-bender>
-<button id="after">after</button></main>`);
-  ({ page, problems } = await b.open(html));
+<button id="after">after</button></main>`)));
   await page.evaluate(async () => {
     const el = document.getElementById('f');
     await el.ready;
