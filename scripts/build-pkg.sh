@@ -203,6 +203,9 @@ JS
     "$REPO_ROOT/node_modules/.bin/esbuild" "$f" --minify --format=esm --log-level=warning --outfile="$f.min"
     mv "$f.min" "$f"
   done < <(find "$viewer/js" -name '*.js' -print0)
+  # The figure's stylesheet too (its comments are for readers of www/css/).
+  "$REPO_ROOT/node_modules/.bin/esbuild" "$viewer/css/screw-bender.css" --minify --log-level=warning --outfile="$viewer/css/screw-bender.css.min"
+  mv "$viewer/css/screw-bender.css.min" "$viewer/css/screw-bender.css"
   # The element's types (viewer.d.ts, element-types.d.ts), its entries in React's, Vue's and
   # Svelte's typings, and its Custom Elements Manifest (package.json's "customElements" field).
   cp npm/viewer.js npm/viewer.d.ts npm/element-types.d.ts npm/react.d.ts npm/vue.d.ts npm/svelte.d.ts \

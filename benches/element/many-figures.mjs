@@ -1,8 +1,8 @@
 #!/usr/bin/env node
 // A page of 20 <screw-bender> figures (each in a 420 px section, 1280 × 800 viewport): the time
 // from navigation to the first figure drawn, how many figures started before any scrolling, and
-// the memory after scrolling through the whole page (JS heap after a GC, the wasm memory, the
-// renderer's process memory where Chromium reports it), for a www/ tree given as argument (to
+// the memory then and after scrolling through the whole page (JS heap after a GC, the wasm
+// memory; the processes' CPU time where Chromium reports it), for a www/ tree given as argument (to
 // compare two builds of the element) and a `loading` value.
 //
 //   node benches/element/many-figures.mjs [WWW_DIR] [lazy|eager|none]   # E2E_BACKEND as the e2e tests
@@ -43,16 +43,21 @@ try {
   const firstMs = Date.now() - t0;
   await page.waitForTimeout(1000);
   const startedAtFirst = await page.evaluate(() => [...document.querySelectorAll('screw-bender')].filter((e) => e.viewer).length);
+  const cdp = await page.context().newCDPSession(page);
+  const memory = async () => {
+    await cdp.send('HeapProfiler.collectGarbage');
+    const heap = (await cdp.send('Runtime.getHeapUsage')).usedSize;
+    const wasm = await page.evaluate(async () => (await (await import('../pkg/screwbender.js')).default()).memory.buffer.byteLength);
+    return `${(heap / 1e6).toFixed(2)} MB JS heap, ${(wasm / 1e6).toFixed(2)} MB wasm`;
+  };
+  const memoryAtFirst = await memory();
   // Scroll through: each figure into view, until it drew a frame.
   for (let k = 0; k < N; k++) {
     await page.evaluate((i) => document.getElementById(`m${i}`).scrollIntoView({ block: 'center' }), k);
     await page.waitForFunction((i) => document.getElementById(`m${i}`).viewer?.frames > 0, k, { timeout: 120000 });
   }
   await page.waitForTimeout(500);
-  const cdp = await page.context().newCDPSession(page);
-  await cdp.send('HeapProfiler.collectGarbage');
-  const heap = (await cdp.send('Runtime.getHeapUsage')).usedSize;
-  const wasm = await page.evaluate(async () => (await (await import('../pkg/screwbender.js')).default()).memory.buffer.byteLength);
+  const memoryAfter = await memory();
   const startedAfter = await page.evaluate(() => [...document.querySelectorAll('screw-bender')].filter((e) => e.viewer).length);
   let rss = null;
   try {
@@ -61,7 +66,7 @@ try {
   } catch {
     // Not every build reports it.
   }
-  console.log(JSON.stringify({ backend: BACKEND, www, loading, firstMs, startedAtFirst, startedAfter, heapMB: +(heap / 1e6).toFixed(2), wasmMB: +(wasm / 1e6).toFixed(2), processes: rss }));
+  console.log(JSON.stringify({ backend: BACKEND, www, loading, firstMs, startedAtFirst, memoryAtFirst, startedAfter, memoryAfter, processes: rss }));
 } finally {
   await browser.close();
   server.kill();

@@ -7,14 +7,13 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
 import { ROOT } from './lib.mjs';
-import { EXPECTED_BACKEND, OPEN3, canvasBox, elementBrowser, figureFrames, pageHtml } from './element-lib.mjs';
+import { EXPECTED_BACKEND, OPEN3, canvasBox, figureFrames, openOnePage, pageHtml } from './element-lib.mjs';
 
 let b;
 let page;
 let problems;
 before(async () => {
-  b = await elementBrowser();
-  const html = pageHtml(`<main style="width: 800px">
+  ({ b, page, problems } = await openOnePage(pageHtml(`<main style="width: 800px">
 <h1>Labels</h1>
 <screw-bender id="f" editable loading="eager" controls="full" alt="Three poses of a bar joined by the 4-point motion" scheme="fourpoint" levels="4">
 <script type="application/json">${JSON.stringify(OPEN3)}</script>
@@ -27,8 +26,7 @@ Figure 1. A caption.
 #f { --screw-bender-label-offset: 0px; }
 #f::part(label-2) { background: rgb(255, 236, 179); }
 </style>`,
-  });
-  ({ page, problems } = await b.open(html));
+  })));
   await page.evaluate(() => document.getElementById('f').ready);
   await figureFrames(page, '#f');
 });

@@ -43,6 +43,13 @@ export async function elementBrowser(contextOptions = {}) {
   return { play, open, close: () => play.close() };
 }
 
+/** One browser and one page of `html` for a whole test file: {b, page, problems} (close with b.close()). */
+export async function openOnePage(html) {
+  const b = await elementBrowser();
+  const { page, problems } = await b.open(html);
+  return { b, page, problems };
+}
+
 /** Waits until figure `sel` (a CSS selector) drew `n` more frames. */
 export async function figureFrames(page, sel, n = 2) {
   const start = await page.evaluate((s) => {

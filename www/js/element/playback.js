@@ -119,9 +119,11 @@ export class Playback {
     return this.fig.model.anim.loop;
   }
 
+  /** A boolean, or an attribute's string ("false" is false), as frameworks may pass either. */
   set loop(on) {
-    this.fig.opts.loop = !!on;
-    this.fig.model.anim.loop = !!on;
+    const b = typeof on === 'string' ? on !== 'false' : !!on;
+    this.fig.opts.loop = b;
+    this.fig.model.anim.loop = b;
   }
 
   /** Steps to the next (1) or previous (-1) key pose's time, wrapping on a cycle. */
@@ -161,8 +163,15 @@ export class Playback {
     return { yaw: c.yaw, pitch: c.pitch, distance: c.distance, target: [...c.target], projection: c.ortho ? 'orthographic' : 'perspective' };
   }
 
-  /** Sets the fields given (checked first: a bad one changes nothing); fires camera-change 'api'. */
+  /**
+   * Sets the fields given (checked first: a bad one changes nothing); fires camera-change 'api'.
+   * A string is the `camera` attribute's value (a named view or "yaw pitch [distance]").
+   */
   setCamera(s) {
+    if (typeof s === 'string') {
+      this.fig.setOptions({ camera: s });
+      return;
+    }
     if (!s || typeof s !== 'object') throw new OptionError('camera', s, 'expected an object {yaw, pitch, distance, target, projection}');
     const out = {};
     for (const key of Object.keys(s)) {

@@ -211,10 +211,13 @@ export class Viewer {
       const [a, b] = motion.timeDomain();
       let t = this.playTime() + dt * anim.speed;
       if (t > b || t < a) {
-        const wrap = anim.passes == null ? motion.closed || anim.loop : anim.passes > 1;
+        // A slow frame may cross more than one end (a high speed): each crossing is a pass.
+        const span = b - a;
+        const crossed = span > 0 ? Math.floor(t > b ? (t - a) / span : (b - t) / span) : Infinity;
+        const wrap = span > 0 && (anim.passes == null ? motion.closed || anim.loop : anim.passes > crossed);
         if (wrap) {
-          if (anim.passes != null) anim.passes--;
-          t = a + ((((t - a) % (b - a)) + (b - a)) % (b - a));
+          if (anim.passes != null) anim.passes -= crossed;
+          t = a + ((((t - a) % span) + span) % span);
         } else {
           t = t > b ? b : a;
           anim.passes = null;
