@@ -267,6 +267,15 @@ test('reveal\'s print view (?print-pdf): every figure prints as a picture of its
   const { page } = deck;
   try {
     await page.waitForFunction(() => document.documentElement.classList.contains('reveal-print') || document.querySelector('.reveal.print-pdf, html.print-pdf'), null, { timeout: 10000 }).catch(() => {});
+    // Every figure is scrolled to once (a lazy figure starts near the viewport) and draws.
+    await page.evaluate(async () => {
+      for (const f of document.querySelectorAll('screw-bender')) {
+        f.scrollIntoView({ block: 'center' });
+        await f.ready;
+        await new Promise((res) => requestAnimationFrame(() => requestAnimationFrame(res)));
+      }
+      window.scrollTo(0, 0);
+    });
     await page.emulateMedia({ media: 'print' });
     await page.waitForTimeout(1500);
     const pdf = await page.pdf({ width: '1000px', height: '700px', printBackground: true });
