@@ -7,9 +7,10 @@
 #   2. type-check the typed usage of each framework: tsc --strict (React 19 JSX), vue-tsc --strict
 #      with strictTemplates (Vue 3 templates), svelte-check (Svelte 5), each with files that must
 #      compile and @ts-expect-error / @vue-expect-error lines the typings must refuse;
-#   3. `vite build` each app (and React's again with NODE_ENV=development, where StrictMode mounts
-#      twice), then drive the builds in headless Chromium on both backends
-#      (tests/frameworks/apps.test.mjs).
+#   3. check npm/custom-elements.json against the element and the typings (manifest.test.mjs);
+#   4. `vite build` each app (and React's again with NODE_ENV=development, where StrictMode mounts
+#      twice), then drive the builds in headless Chromium (tests/frameworks/apps.test.mjs): all of
+#      it on WebGPU, and on WebGL2 the state reaching a drawn figure (the second renderer module).
 #
 #   E2E_BACKENDS=webgpu scripts/test.d/25-frameworks.sh   # one backend only
 set -euo pipefail
@@ -66,6 +67,9 @@ timed "npm ci (react, vue, svelte)" run_all "npm ci" "${NPM_CI[@]}"
 header "type checks (tsc, vue-tsc, svelte-check; in parallel)"
 timed "type checks" run_all "type check" npm run --silent typecheck
 
+header "the Custom Elements Manifest against the element and its typings"
+node --test tests/frameworks/manifest.test.mjs
+
 header "vite build (in parallel)"
 build() {
   ./node_modules/.bin/vite build --logLevel warn
@@ -78,7 +82,11 @@ timed "vite build" run_all "vite build" build
 
 for backend in ${E2E_BACKENDS:-webgpu webgl2}; do
   header "the apps in Chromium: $backend"
+  # On WebGL2 (the package's second renderer module, which the bundle must carry too), the apps'
+  # state reaching a drawn figure; everything else is the same on both backends.
+  pattern=()
+  [[ $backend == webgl2 ]] && pattern=(--test-name-pattern "state reaches the figure")
   FRAMEWORK_APPS=$work E2E_BACKEND=$backend timed "apps $backend" \
-    node --test --test-concurrency=1 tests/frameworks/apps.test.mjs
+    node --test --test-concurrency=1 "${pattern[@]}" tests/frameworks/apps.test.mjs
 done
 log "framework apps (React, Vue, Svelte): typed, built and driven"

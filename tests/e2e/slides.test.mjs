@@ -126,7 +126,7 @@ async function pickAndDrag(page, label, { dx = 60, dy = -40 } = {}) {
   assert.equal(await page.evaluate(() => window.deck.getIndices().h), SLIDE.edit, `${label}: the slide stays`);
 }
 
-test('the deck: figures on their slides on the expected backend; a figure on a hidden slide draws nothing until shown', async () => {
+test('the deck: figures on their slides on the expected backend; a figure on a hidden slide draws nothing until shown and stops when it leaves', async () => {
   const deck = await openDeck();
   const { page } = deck;
   try {
@@ -139,6 +139,11 @@ test('the deck: figures on their slides on the expected backend; a figure on a h
     await showSlide(page, SLIDE.edit);
     assert.ok((await framesOf()) >= f0 + 2, 'shown, it draws');
     await page.screenshot({ path: shotPath('slides/deck-edit.png') });
+    await page.evaluate(() => document.getElementById('fig-edit').play());
+    await showSlide(page, SLIDE.compare);
+    const f1 = await framesOf();
+    await page.waitForTimeout(800);
+    assert.equal(await framesOf(), f1, 'playing, it stops drawing when its slide leaves');
     assert.deepEqual(deck.problems, []);
   } finally {
     await deck.close();
@@ -209,6 +214,12 @@ test('deck keys: a focused figure keeps ArrowRight, Space and Escape from the de
     await page.keyboard.press('Escape');
     await page.waitForTimeout(300);
     assert.deepEqual(await where(), { h: SLIDE.edit, overview: false }, 'Escape in the figure does not open the overview');
+    // A key the figure does not use is the deck's, focused or not: O opens the overview.
+    await page.locator('#fig-edit canvas').focus();
+    await page.keyboard.press('o');
+    await page.waitForFunction(() => window.deck.isOverview(), null, { timeout: 5000 });
+    await page.keyboard.press('o');
+    await page.waitForFunction(() => !window.deck.isOverview(), null, { timeout: 5000 });
     // Focus leaves the figure (a click on the slide's text): the deck's keys are the deck's.
     await page.locator('#s-edit p').click();
     await page.keyboard.press('ArrowRight');
@@ -256,6 +267,15 @@ test('reveal\'s print view (?print-pdf): every figure prints as a picture of its
   const { page } = deck;
   try {
     await page.waitForFunction(() => document.documentElement.classList.contains('reveal-print') || document.querySelector('.reveal.print-pdf, html.print-pdf'), null, { timeout: 10000 }).catch(() => {});
+    // Every figure is scrolled to once (a lazy figure starts near the viewport) and draws.
+    await page.evaluate(async () => {
+      for (const f of document.querySelectorAll('screw-bender')) {
+        f.scrollIntoView({ block: 'center' });
+        await f.ready;
+        await new Promise((res) => requestAnimationFrame(() => requestAnimationFrame(res)));
+      }
+      window.scrollTo(0, 0);
+    });
     await page.emulateMedia({ media: 'print' });
     await page.waitForTimeout(1500);
     const pdf = await page.pdf({ width: '1000px', height: '700px', printBackground: true });

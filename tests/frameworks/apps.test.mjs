@@ -42,6 +42,13 @@ async function openApp(build, viewport = { width: 1280, height: 800 }) {
   const server = await serveDir(dir);
   const context = await browser.newContext({ viewport });
   await context.addInitScript(() => {
+    // Canvases made: one per figure made (mount() or the element), started or not.
+    window.__canvases = 0;
+    const create = Document.prototype.createElement;
+    Document.prototype.createElement = function (tag, ...rest) {
+      if (String(tag).toLowerCase() === 'canvas') window.__canvases++;
+      return create.call(this, tag, ...rest);
+    };
     window.__live = 0;
     for (const name of ['ResizeObserver', 'IntersectionObserver']) {
       const Base = window[name];
@@ -61,8 +68,10 @@ async function openApp(build, viewport = { width: 1280, height: 800 }) {
   });
   const page = await context.newPage();
   const problems = [];
+  // Warnings too (React's development build warns of props it does not understand), but not
+  // Chromium's own when WebGPU has no adapter (the WebGL2 runs).
   page.on('console', (m) => {
-    if (m.type() === 'error' || m.type() === 'warning') problems.push(`console ${m.type()}: ${m.text()}`);
+    if (m.type() === 'error' || (m.type() === 'warning' && m.text() !== 'No available adapters.')) problems.push(`console ${m.type()}: ${m.text()}`);
   });
   page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
   await page.goto(server.url);
@@ -192,8 +201,10 @@ for (const build of BUILDS) {
     const app = await openApp(build);
     const { page } = app;
     try {
-      // The main figure and the mount() one; StrictMode ran the latter's effect twice.
+      // The main figure and the mount() one; StrictMode ran the latter's effect twice (a figure
+      // made, destroyed and made again), which leaves one.
       await expectLive(page, 2, 'at the start');
+      assert.equal(await page.evaluate(() => window.__canvases), build.strict ? 3 : 2, 'figures made at the start');
       const canvases = await figure(page, () => document.querySelector('[data-testid=mounted]').shadowRoot.querySelectorAll('canvas').length);
       assert.equal(canvases, 1, 'one canvas in the mount() figure');
       const cdp = await page.context().newCDPSession(page);
