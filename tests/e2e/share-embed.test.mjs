@@ -226,6 +226,7 @@ test('Copy code: the <screw-bender> snippet in a blank page draws the same figur
     assert.equal(s.backend, EXPECTED_BACKEND);
     assert.equal(s.playing, true, 'autoplay');
     assert.equal(await p.evaluate(() => document.querySelector('screw-bender').shadowRoot.querySelector('.fig').dataset.controls), 'full');
+    await p.screenshot({ path: shotPath('share/snippet-page-1280x800.png') });
     assert.ok((await drawn(p, p.locator('screw-bender'))) > 0.05, 'the figure is drawn');
     // Keys of the focused figure: a real click gives it the focus, Space pauses and plays.
     const canvas = p.locator('screw-bender canvas');
@@ -295,6 +296,7 @@ test('Copy iframe: embed.html in a sandbox="allow-scripts" frame — opaque orig
     }
     await p.evaluate(() => (document.querySelector('iframe').style.cssText = 'border:0;width:800px;height:500px'));
     await p.waitForTimeout(300);
+    await p.screenshot({ path: shotPath('share/iframe-page-1280x800.png') });
     assert.ok((await drawn(p, p.locator('iframe'))) > 0.05, 'the figure is drawn');
     // A real drag on the frame's canvas orbits, a click focuses it, Space plays.
     const cb = await frame.locator('#figure canvas').boundingBox();
