@@ -466,6 +466,41 @@ test('Download .html: one file that works from file:// with the network blocked 
   assert.deepEqual(problems, []);
 });
 
+test('Download .html of the bunny preset: the Stanford bunny travels inside the file', async () => {
+  await page.evaluate(() => window.screwbender.app.loadPreset('bunny6'));
+  await page.waitForFunction(() => window.screwbender.app.viewer.drawing.bunny);
+  await openDialog();
+  const got = page.waitForEvent('download', { timeout: 60000 });
+  await page.click('#share-download');
+  const d = await got;
+  const file = shotPath(`share/${d.suggestedFilename()}`);
+  await d.saveAs(file);
+  await page.keyboard.press('Escape');
+  const html = fs.readFileSync(file, 'utf8');
+  assert.match(html, /<script type="text\/plain" id="screwbender-bunny">/);
+  const { context, p, network, pp } = await openOffline(file);
+  try {
+    await figureState(p);
+    // The mesh is read from the page (a data: URL), not from vendor/.
+    await p.waitForFunction(() => document.querySelector('screw-bender').viewer.drawing.bunny?.length > 1000, null, { timeout: 30000 });
+    assert.equal(await p.evaluate(() => document.querySelector('screw-bender').viewer.model.view.object), 'scene');
+    assert.deepEqual(network, []);
+    assert.deepEqual(pp.filter((m) => !/No available adapters/.test(m)), []);
+  } finally {
+    await context.close();
+  }
+  // Without the bunny, the file holds no mesh.
+  await page.evaluate(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  const other = page.waitForEvent('download', { timeout: 60000 });
+  await openDialog();
+  await page.click('#share-download');
+  const d2 = await other;
+  await page.keyboard.press('Escape');
+  assert.doesNotMatch(fs.readFileSync(await d2.path(), 'utf8'), /id="screwbender-bunny"/);
+  await page.evaluate(() => window.screwbender.app.undo());
+  await page.evaluate(() => window.screwbender.app.undo());
+});
+
 test('the dialog changes nothing in the playground', async () => {
   const now = await page.evaluate(() => window.screwbender.session());
   assert.deepEqual(now.document, session.document);
