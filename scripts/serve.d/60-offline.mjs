@@ -27,7 +27,7 @@ const OUT = path.join(WWW, 'pkg/offline');
 const WASM = path.join(WWW, 'pkg/screwbender_bg.wasm');
 
 /** Where the dialog puts the figure, the title and the bunny (each once in the template). */
-export const SLOTS = { figure: '<!--screwbender:figure-->', title: '<!--screwbender:title-->', bunny: '<!--screwbender:bunny-->' };
+const SLOTS = { figure: '<!--screwbender:figure-->', title: '<!--screwbender:title-->', bunny: '<!--screwbender:bunny-->' };
 
 /** Replaces the one occurrence of `from` in `text` (of `file`), or stops the build. */
 function replaceOnce(text, from, to, file) {

@@ -15,7 +15,8 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
-import { BACKEND, EXPECTED_BACKEND, countStorage, openPage, shotPath, startPlayground, waitFrames } from './lib.mjs';
+import path from 'node:path';
+import { BACKEND, EXPECTED_BACKEND, ROOT, countStorage, openPage, shotPath, startPlayground, waitFrames } from './lib.mjs';
 
 const DESKTOP = { width: 1280, height: 800 };
 const PHONE = { width: 390, height: 844 };
@@ -163,6 +164,17 @@ test('the dialog: opened and left by keyboard, focus kept inside, screenshots at
   await page.screenshot({ path: shotPath('share/dialog-1280x800.png') });
   const box = await page.locator('#share').boundingBox();
   assert.ok(box.x >= 0 && box.y >= 0 && box.x + box.width <= DESKTOP.width && box.y + box.height <= DESKTOP.height, `on screen: ${JSON.stringify(box)}`);
+  // axe (from npm, injected through the debugging protocol: the page's CSP refuses inline scripts).
+  await page.evaluate(fs.readFileSync(path.join(ROOT, 'node_modules/axe-core/axe.min.js'), 'utf8'));
+  for (const theme of ['light', 'dark']) {
+    await page.evaluate((t) => (window.screwbender.app.view.theme = t), theme);
+    const found = await page.evaluate(async () => {
+      const r = await window.axe.run(document.getElementById('share'), { resultTypes: ['violations'] });
+      return r.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => `${v.impact} ${v.id}: ${v.nodes.slice(0, 4).map((n) => n.target.join(' ')).join(', ')}`);
+    });
+    assert.deepEqual(found, [], `axe, ${theme} theme`);
+  }
+  await page.evaluate(() => (window.screwbender.app.view.theme = 'auto'));
   await page.keyboard.press('Escape');
   assert.equal(await page.locator('#share').isVisible(), false, 'Esc closes the dialog');
   assert.equal(await page.evaluate(() => document.activeElement.textContent.trim()), 'Share & embed…', 'the focus goes back to its button');
@@ -214,6 +226,7 @@ test('Copy code: the <screw-bender> snippet in a blank page draws the same figur
     assert.equal(s.backend, EXPECTED_BACKEND);
     assert.equal(s.playing, true, 'autoplay');
     assert.equal(await p.evaluate(() => document.querySelector('screw-bender').shadowRoot.querySelector('.fig').dataset.controls), 'full');
+    await p.screenshot({ path: shotPath('share/snippet-page-1280x800.png') });
     assert.ok((await drawn(p, p.locator('screw-bender'))) > 0.05, 'the figure is drawn');
     // Keys of the focused figure: a real click gives it the focus, Space pauses and plays.
     const canvas = p.locator('screw-bender canvas');
@@ -283,6 +296,7 @@ test('Copy iframe: embed.html in a sandbox="allow-scripts" frame — opaque orig
     }
     await p.evaluate(() => (document.querySelector('iframe').style.cssText = 'border:0;width:800px;height:500px'));
     await p.waitForTimeout(300);
+    await p.screenshot({ path: shotPath('share/iframe-page-1280x800.png') });
     assert.ok((await drawn(p, p.locator('iframe'))) > 0.05, 'the figure is drawn');
     // A real drag on the frame's canvas orbits, a click focuses it, Space plays.
     const cb = await frame.locator('#figure canvas').boundingBox();
@@ -360,17 +374,9 @@ test('the dialog at 390×844 by touch: on screen, targets ≥ 44 px, Copy by a t
     await p.goto(await page.inputValue('#share-link'));
     await p.evaluate(() => window.screwbender.ready);
     await p.evaluate(() => document.querySelector('#hint .close')?.click());
-    // The panel is folded away on a phone: its button, then File, then the entry.
-    const entry = p.locator('#panel button', { hasText: 'Share & embed…' });
-    if (!(await entry.isVisible())) {
-      const toggle = p.locator('#panel .lil-gui.lil-root > .lil-title');
-      if (await p.evaluate(() => window.screwbender.app.ui.gui._closed)) await toggle.tap();
-      const file = p.locator('#panel .lil-title', { hasText: /^File$/ });
-      await file.scrollIntoViewIfNeeded();
-      await file.tap();
-    }
-    await entry.scrollIntoViewIfNeeded();
-    await entry.tap();
+    // On a phone: the toolbar's View menu, then its Share & embed entry.
+    await p.locator('#t-view').tap();
+    await p.locator('#m-share').tap();
     await p.locator('#share').waitFor({ state: 'visible' });
     await p.waitForFunction(() => /MB|KB/.test(document.getElementById('share-download').textContent));
     await p.screenshot({ path: shotPath('share/dialog-390x844.png') });
@@ -390,6 +396,7 @@ test('the dialog at 390×844 by touch: on screen, targets ≥ 44 px, Copy by a t
     assert.match(await p.evaluate(() => navigator.clipboard.readText()), /^<iframe /);
     await p.locator('#share-close').tap();
     assert.equal(await p.locator('#share').isVisible(), false);
+    assert.equal(await p.evaluate(() => document.activeElement.id), 't-view', 'the focus goes back to the View button');
   } finally {
     await context.close();
   }
@@ -457,6 +464,41 @@ test('Download .html: one file that works from file:// with the network blocked 
     }
   }
   assert.deepEqual(problems, []);
+});
+
+test('Download .html of the bunny preset: the Stanford bunny travels inside the file', async () => {
+  await page.evaluate(() => window.screwbender.app.loadPreset('bunny6'));
+  await page.waitForFunction(() => window.screwbender.app.viewer.drawing.bunny);
+  await openDialog();
+  const got = page.waitForEvent('download', { timeout: 60000 });
+  await page.click('#share-download');
+  const d = await got;
+  const file = shotPath(`share/${d.suggestedFilename()}`);
+  await d.saveAs(file);
+  await page.keyboard.press('Escape');
+  const html = fs.readFileSync(file, 'utf8');
+  assert.match(html, /<script type="text\/plain" id="screwbender-bunny">/);
+  const { context, p, network, pp } = await openOffline(file);
+  try {
+    await figureState(p);
+    // The mesh is read from the page (a data: URL), not from vendor/.
+    await p.waitForFunction(() => document.querySelector('screw-bender').viewer.drawing.bunny?.length > 1000, null, { timeout: 30000 });
+    assert.equal(await p.evaluate(() => document.querySelector('screw-bender').viewer.model.view.object), 'scene');
+    assert.deepEqual(network, []);
+    assert.deepEqual(pp.filter((m) => !/No available adapters/.test(m)), []);
+  } finally {
+    await context.close();
+  }
+  // Without the bunny, the file holds no mesh.
+  await page.evaluate(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  const other = page.waitForEvent('download', { timeout: 60000 });
+  await openDialog();
+  await page.click('#share-download');
+  const d2 = await other;
+  await page.keyboard.press('Escape');
+  assert.doesNotMatch(fs.readFileSync(await d2.path(), 'utf8'), /id="screwbender-bunny"/);
+  await page.evaluate(() => window.screwbender.app.undo());
+  await page.evaluate(() => window.screwbender.app.undo());
 });
 
 test('the dialog changes nothing in the playground', async () => {

@@ -27,10 +27,10 @@ import {
 export const FPS = 30;
 /** Bit rate asked of the encoder (bits per second). */
 const VIDEO_BITS = 6e6;
-/** The video containers: file extension, MIME type and the codecs each carries. */
+/** The video containers: file extension and MIME type (videoCodecs below gives their codecs). */
 export const VIDEO_FORMATS = {
-  mp4: { ext: 'mp4', mime: 'video/mp4', label: 'MP4 (H.264)' },
-  webm: { ext: 'webm', mime: 'video/webm', label: 'WebM (VP8 / VP9)' },
+  mp4: { ext: 'mp4', mime: 'video/mp4' },
+  webm: { ext: 'webm', mime: 'video/webm' },
 };
 /**
  * H.264 levels (the codec string's last byte) by the most macroblocks (16 × 16 pixels) a frame may

@@ -26,6 +26,8 @@ const SLOT_BUNNY = '<!--screwbender:bunny-->';
 /** The preset whose object is the Stanford bunny (view/drawing.js), and where its mesh is. */
 const BUNNY_PRESET = 'bunny6';
 const BUNNY_URL = 'vendor/bunny.obj';
+/** What the Web page form gives (more is said when the object shown is not the bar). */
+const ELEMENT_NOTE = 'A <screw-bender> element with the motion inline: paste it into any HTML page.';
 /** Largest pitch the element's `camera` attribute takes, in degrees (element/options.js). */
 const MAX_PITCH_DEG = 89.9;
 
@@ -183,7 +185,7 @@ function build() {
       node('label', {}, autoplay, ' play on load')),
     section('share-link', 'Link', 'Opens the playground with this session.', link,
       node('button', { type: 'button', id: 'share-copy-link', text: 'Copy link' })),
-    section('share-element', 'Web page', 'A <screw-bender> element with the motion inline: paste it into any HTML page.', element,
+    section('share-element', 'Web page', ELEMENT_NOTE, element,
       node('button', { type: 'button', id: 'share-copy-element', text: 'Copy code' })),
     section('share-iframe', 'LMS page (iframe)', 'For Canvas, Moodle and editors that accept only an <iframe>: the figure alone.', iframe,
       node('button', { type: 'button', id: 'share-copy-iframe', text: 'Copy iframe' })),
@@ -264,6 +266,9 @@ function fill(app) {
   ui.link.value = app.shareLink();
   ui.element.value = elementSnippet(app, choices, new URL('js/element/screw-bender.js', page).href);
   ui.iframe.value = iframeSnippet(app, choices, page);
+  // The element draws an inline motion with the bar: say so when the playground shows another object.
+  ui.dlg.querySelector('#share-element-note').textContent =
+    ELEMENT_NOTE + (app.view.object === 'bar' ? '' : ' It shows the motion with a bar; the iframe and the offline file keep the object shown here.');
   ui.download.textContent = templateBytes ? `Download .html (${formatBytes(templateBytes)})` : 'Download .html';
 }
 

@@ -167,6 +167,10 @@ export function buildUi(app) {
   tool('t-redo', () => app.redo());
   tool('t-frame', () => app.frameAll());
   tool('t-help', () => toggleHelp());
+  tool('m-share', () => {
+    app.parts.viewpoint.menu.close();
+    openShareDialog(app, $('t-view'));
+  });
   tool('t-snap', () => app.setView('snap', !app.view.snap));
   $('help').querySelector('.help-close').onclick = () => toggleHelp(false);
   tool('t-dock', () => app.openView(app.view.dock ? '' : app.lastView ?? firstView()));
