@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use glam::DVec3;
 use screwbender::mesh::Mesh;
 use screwbender::{
-    export_motion, presets, ExportFormat, ExportSamples, ExportSettings, SamplingMode,
+    export_motion, presets, ExportFormat, ExportSamples, ExportSettings, PipMorph, SamplingMode,
     DEFAULT_TOLERANCE,
 };
 
@@ -111,7 +111,12 @@ pub fn export(args: &[String]) -> Result<Output, Failure> {
         .name
         .as_deref()
         .and_then(presets::preset)
-        .map(|sc| Mesh::from_shape(&sc.shape));
+        .map(|sc| Mesh::for_preset(&sc));
+    // A preset with one shape per control pose (A8) exports its morph.
+    let morph = doc
+        .name
+        .as_deref()
+        .and_then(|id| PipMorph::for_preset(id, doc.poses.len(), doc.closed));
     let out = o.output.as_deref();
     let (gltf_path, bin_path) = gltf_paths(out.unwrap_or("motion"));
     let bin_name = bin_path
@@ -131,6 +136,7 @@ pub fn export(args: &[String]) -> Result<Output, Failure> {
         point: o.point,
         control_nodes: o.control_nodes,
         mesh: mesh.as_ref(),
+        morph: morph.as_ref(),
         bin_name: &bin_name,
     };
     // A CSV is written row by row from the samples (to `-o` or standard output), never as

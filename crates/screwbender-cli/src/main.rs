@@ -75,8 +75,9 @@ EXPORT OPTIONS (also --scheme, --s, --rules, --levels, --open as above):
   --control-nodes    glb/gltf: also one empty node per control pose
   --verbose, -v      one summary line (sample count) on standard error
   -o, --output OUT   where to write (see above)
-The glTF asset animates the object (the preset's shape, else a box) and an empty node
-'control poses' whose keyframes are the control poses; 'import' reads that node back.
+The glTF asset animates the object (the preset's shape, else a box; pip_morph5 morphs
+between its shapes by morph targets) and an empty node 'control poses' whose keyframes are
+the control poses; 'import' reads that node back.
 
 IMPORT OPTIONS:
   --node NAME        the animated node whose keyframes are the poses (default: 'control poses'

@@ -43,7 +43,7 @@ export interface ExportSettings {
   point?: Vec3;
   /** glTF only: also one empty node per control pose. */
   controlNodes?: boolean;
-  /** glTF only: the object's mesh by name (`bar`, `block`, …, `scene:<id>`); default: the preset's object if the document is named after a preset, else a placeholder box. */
+  /** glTF only: the object's mesh by name (`bar`, `block`, …, `scene:<id>`); default: the preset's object if the document is named after a preset (the morphing shapes of a preset with one shape per pose, such as `pip_morph5`), else a placeholder box. */
   object?: string;
   /** glTF only: an imported mesh (OBJ text or glTF/GLB bytes), scaled to fit a cube of side `size`. */
   mesh?: { kind: 'obj' | 'gltf'; data: string | Uint8Array; size: number };
@@ -217,6 +217,14 @@ impl MotionHandle {
             )
             .into());
         }
+        // A preset with one shape per control pose (A8) exports its morph, unless another
+        // object or mesh is asked for.
+        let morph = match (&input.object, &imported, &doc.name) {
+            (None, None, Some(name)) => {
+                screwbender::PipMorph::for_preset(name, doc.poses.len(), doc.closed)
+            }
+            _ => None,
+        };
         // File names say what the file holds (a glTF motion, sampled poses, a path).
         let stem = input
             .name
@@ -245,6 +253,7 @@ impl MotionHandle {
                 point: input.point.map(DVec3::from_array),
                 control_nodes: input.control_nodes.unwrap_or(false),
                 mesh: imported.as_ref().or(named.as_ref()),
+                morph: morph.as_ref(),
                 bin_name: &bin_name,
             },
         )?;

@@ -149,7 +149,9 @@ pub use pose::{
 pub use presets::morph::{
     morph_mesh, morph_weights, BlendMesh, PipMorph, CREASE_COSINE, MORPH_RESOLUTION,
 };
-pub use presets::pieces::{ConvexPiece, PipShape, CONVEX_TOLERANCE, MAX_PIECES, MAX_PIECE_VERTICES};
+pub use presets::pieces::{
+    ConvexPiece, PipShape, CONVEX_TOLERANCE, MAX_PIECES, MAX_PIECE_VERTICES,
+};
 pub use screw::{
     screw, screw_paper, BasisPair, PaperScrew, Screw, ScrewKind, ScrewParameters, ANGLE_EPSILON,
     HALF_TURN_EPSILON, LENGTH_EPSILON, PAPER_CROSS_EPSILON,

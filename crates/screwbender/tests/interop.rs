@@ -70,6 +70,7 @@ fn export(motion: &ScrewBender, control: &[Pose], closed: bool, timing: &Timing)
         control_velocities: None,
         closed,
         mesh: Some(&mesh),
+        morph: None,
         tolerance: Some(DEFAULT_TOLERANCE),
         control_nodes: false,
     })

@@ -23,6 +23,9 @@ use screwbender::mesh::Mesh;
 #[wasm_bindgen(js_name = Renderer)]
 pub struct RendererHandle {
     inner: Renderer,
+    /// The PIP morph of the last scene asked for (scene id, cycle): its pairs of pieces are
+    /// combined once, then every frame and strobe copy only evaluates them.
+    morph: Option<(String, bool, screwbender::PipMorph)>,
 }
 
 /// The mesh for a mesh name (see [`Mesh::named`]), as a JS error when unknown.
@@ -44,7 +47,7 @@ impl RendererHandle {
         let inner = Renderer::init(canvas, allow_webgpu, width, height)
             .await
             .map_err(|e| JsError::new(&e))?;
-        Ok(RendererHandle { inner })
+        Ok(RendererHandle { inner, morph: None })
     }
 
     /// The active backend: `"WebGPU"` or `"WebGL2"`.
@@ -129,9 +132,10 @@ impl RendererHandle {
     }
 
     /// Puts in `slot` the morphing object of a scene with per-pose shapes (`morphShapes`, scene
-    /// A8) at motion parameter `u`: the Minkowski combination of the shapes' convex hulls with
-    /// the C¹ weights of [`screwbender::morph_weights`] (see [`screwbender::morph_mesh`]). Returns the
-    /// triangle count.
+    /// A8) at motion parameter `u`: Kaul & Rossignac's PIP morph ([`screwbender::PipMorph`]),
+    /// the union of the Minkowski combinations of the shapes' convex pieces with the C¹ blend
+    /// of [`screwbender::morph_weights`]; at a control pose that pose's shape exactly. Returns
+    /// the triangle count.
     #[wasm_bindgen(js_name = setMorphMesh)]
     pub fn set_morph_mesh(
         &mut self,
@@ -140,14 +144,18 @@ impl RendererHandle {
         closed: bool,
         u: f64,
     ) -> Result<usize, JsError> {
-        let s = screwbender::presets::preset(scene)
-            .ok_or_else(|| JsError::new(&format!("unknown scene {scene:?}")))?;
         if !u.is_finite() {
             return Err(JsError::new("u: not a finite number (NaN or infinity)"));
         }
-        let weights = screwbender::morph_weights(s.morph_shapes.len(), closed, u);
-        let mesh =
-            screwbender::morph_mesh(&s.morph_shapes, &weights, screwbender::MORPH_RESOLUTION)?;
+        let cached = matches!(&self.morph, Some((id, c, _)) if id == scene && *c == closed);
+        if !cached {
+            let s = screwbender::presets::preset(scene)
+                .ok_or_else(|| JsError::new(&format!("unknown scene {scene:?}")))?;
+            let morph = screwbender::PipMorph::from_shapes(&s.morph_shapes, closed)?;
+            self.morph = Some((scene.to_string(), closed, morph));
+        }
+        let (_, _, morph) = self.morph.as_ref().expect("set above");
+        let mesh = morph.mesh_at(u)?;
         self.inner.set_mesh(slot, &mesh, false);
         Ok(mesh.triangle_count())
     }

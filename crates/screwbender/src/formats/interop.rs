@@ -19,6 +19,7 @@ use crate::formats::gltf::import::{import_glb, import_gltf, NodeSelection, MAX_G
 use crate::formats::sampling::Deviation;
 use crate::formats::tracks::{sample_document, DocumentSamples, SamplingMode};
 use crate::presets::mesh::Mesh;
+use crate::presets::morph::PipMorph;
 use crate::subdivision::Subdivision;
 
 /// The file formats of [`export_motion`].
@@ -62,8 +63,8 @@ pub struct ExportSettings<'a> {
     /// The document's key velocities apply either way.
     pub times: Option<Vec<f64>>,
     /// Adaptive sampling of poses: the largest distance of the object's points from its local
-    /// origin, at which the tolerance is met; `None`: the mesh's ([`mesh_radius`]), else the
-    /// placeholder box's. (A CSV trajectory is bounded at its point instead.)
+    /// origin, at which the tolerance is met; `None`: the morph's ([`PipMorph::radius`]), the
+    /// mesh's ([`mesh_radius`]), else the placeholder box's. (A CSV trajectory is bounded at its point instead.)
     pub radius: Option<f64>,
     /// CSV only: write the trajectory of this body point instead of the poses.
     pub point: Option<DVec3>,
@@ -71,6 +72,9 @@ pub struct ExportSettings<'a> {
     pub control_nodes: bool,
     /// glTF only: the object's mesh (`None`: the placeholder box).
     pub mesh: Option<&'a Mesh>,
+    /// glTF only: a morphing object, one shape per control pose (replaces `mesh`; see
+    /// [`crate::formats::gltf::export`]).
+    pub morph: Option<&'a PipMorph>,
     /// glTF `.gltf` only: the file name the JSON uses for its buffer (`motion.bin`).
     pub bin_name: &'a str,
 }
@@ -85,6 +89,7 @@ impl Default for ExportSettings<'_> {
             point: None,
             control_nodes: false,
             mesh: None,
+            morph: None,
             bin_name: "motion.bin",
         }
     }
@@ -140,10 +145,13 @@ impl ExportSamples {
         }
         let radius = match settings.point {
             Some(_) => 0.0,
-            None => settings.radius.unwrap_or_else(|| match settings.mesh {
-                Some(mesh) => mesh_radius(mesh),
-                None => DVec3::from_array(PLACEHOLDER_HALF_EXTENTS).length(),
-            }),
+            None => settings
+                .radius
+                .unwrap_or_else(|| match (settings.morph, settings.mesh) {
+                    (Some(morph), _) => morph.radius(),
+                    (None, Some(mesh)) => mesh_radius(mesh),
+                    (None, None) => DVec3::from_array(PLACEHOLDER_HALF_EXTENTS).length(),
+                }),
         };
         let deviation = match settings.point {
             Some(p) => Deviation::Point(p),
@@ -209,6 +217,7 @@ pub fn export_motion(
                     .filter(|v| v.iter().any(Option::is_some)),
                 closed: doc.closed,
                 mesh: settings.mesh,
+                morph: settings.morph,
                 tolerance: match settings.sampling {
                     SamplingMode::Adaptive(t) => Some(t),
                     SamplingMode::FixedRate(_) => None,

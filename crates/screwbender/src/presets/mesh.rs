@@ -647,7 +647,34 @@ fn base64_decode(text: &str) -> Option<Vec<u8>> {
     Some(out)
 }
 
+/// The side of the cube the Stanford bunny is scaled to fit ([`Mesh::bunny`]), as the page
+/// shows it for preset `bunny6`.
+pub const BUNNY_SIZE: f64 = 1.2;
+
+/// The preset whose object is the paper's bunny (a wedge stands in without the `bunny` feature).
+pub const BUNNY_PRESET: &str = "bunny6";
+
 impl Mesh {
+    /// The Stanford bunny (feature `bunny`; origin and terms in the crate's
+    /// `assets/bunny.NOTICE`): 3,674 triangles, z up, centred, fitting a cube of side
+    /// [`BUNNY_SIZE`].
+    #[cfg(feature = "bunny")]
+    pub fn bunny() -> Mesh {
+        Mesh::from_obj(include_str!("../../assets/bunny.obj"))
+            .expect("the bundled bunny parses")
+            .normalized(BUNNY_SIZE)
+    }
+
+    /// The object of a preset: its [`Shape`]'s mesh, or for [`BUNNY_PRESET`] the Stanford bunny
+    /// when the crate is built with the `bunny` feature.
+    pub fn for_preset(scene: &presets::Preset) -> Mesh {
+        #[cfg(feature = "bunny")]
+        if scene.id == BUNNY_PRESET {
+            return Mesh::bunny();
+        }
+        Mesh::from_shape(&scene.shape)
+    }
+
     /// The mesh for a name: a named object ([`crate::presets::object_shape`]), a scene's own
     /// object (`scene:<id>`), the `k`-th morph shape of a scene (`morph:<id>:<k>`), or the
     /// gizmo parts `unit-sphere` / `unit-cone` (radius 1, cone apex at `z = +1`, base at

@@ -300,6 +300,17 @@ impl PipMorph {
         PipMorph::new(&pieces, closed)
     }
 
+    /// The morph of the preset named `id` when it has one shape per control pose (scene A8) and
+    /// the motion still has `pose_count` poses; `None` otherwise (a preset without shapes, an
+    /// unknown name, or a document whose poses were added or removed).
+    pub fn for_preset(id: &str, pose_count: usize, closed: bool) -> Option<PipMorph> {
+        let s = crate::presets::preset(id)?;
+        if s.morph_shapes.is_empty() || s.morph_shapes.len() != pose_count {
+            return None;
+        }
+        PipMorph::from_shapes(&s.morph_shapes, closed).ok()
+    }
+
     /// The number of shapes (one per control pose).
     pub fn shape_count(&self) -> usize {
         self.shapes.len()
@@ -313,6 +324,22 @@ impl PipMorph {
     /// The number of spans (`n` for a cycle, `n − 1` for an open morph, 0 for one shape).
     pub fn span_count(&self) -> usize {
         self.spans.len()
+    }
+
+    /// The pieces of shape `i` (each with `from = to`).
+    pub fn shape(&self, i: usize) -> &[BlendMesh] {
+        &self.shapes[i]
+    }
+
+    /// The largest distance of any shape's vertex from the local origin: every in-between
+    /// shape lies within it too (its points are convex combinations of the shapes' points).
+    pub fn radius(&self) -> f64 {
+        self.shapes
+            .iter()
+            .flatten()
+            .flat_map(|m| m.from.iter())
+            .map(|p| p.length())
+            .fold(0.0, f64::max)
     }
 
     /// The pieces of span `i` (every pair of pieces of shapes `i` and `i + 1`), `s` from 0 to 1.

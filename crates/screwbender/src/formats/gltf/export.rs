@@ -11,7 +11,15 @@
 //! * node 1, [`CONTROL_NODE_NAME`]: an empty node animated by animation 1, whose keyframes are
 //!   exactly the control poses at their knot times (a cycle repeats pose 0 at the end) — this is
 //!   what [`crate::import_gltf`] reads back by default;
-//! * optionally one empty node per control pose (`control pose i`), placed at the pose.
+//! * optionally one empty node per control pose (`control pose i`), placed at the pose;
+//! * for a morphing object ([`GltfMotion::morph`], scene A8) the object node has no mesh of its
+//!   own but one child per span of the morph (`<name> span i`), whose mesh is the PIP morph's
+//!   pieces of that span at blend 0 with one morph target, the displacement to blend 1 (every
+//!   pair of pieces keeps its triangles across the span, so the blend is exactly a morph
+//!   target's weight). Animation 0 then also keys each child's `weights` (`LINEAR`, the blend
+//!   at every sample and control time: exact there) and its `scale` (`STEP`, 1 during its span
+//!   and 0 elsewhere), so a player shows one span at a time and the object is each control
+//!   pose's shape at that pose's time.
 //!
 //! Both animations carry `extras.screwbender = {"loop": closed, "closed": closed, …}` (a cycle
 //! loops); the control poses' also carries the key velocities (`velocities`) when any is
@@ -30,6 +38,7 @@ use crate::formats::sampling::Sample;
 use crate::formats::tracks::consistent_rotations;
 use crate::pose::Pose;
 use crate::presets::mesh::Mesh;
+use crate::presets::morph::{BlendMesh, PipMorph};
 
 /// Default name of the animated object node.
 pub const OBJECT_NODE_NAME: &str = "object";
@@ -66,6 +75,9 @@ pub struct GltfMotion<'a> {
     pub closed: bool,
     /// The object's mesh; `None` draws a placeholder box ([`PLACEHOLDER_HALF_EXTENTS`]).
     pub mesh: Option<&'a Mesh>,
+    /// A morphing object (one shape per control pose), which replaces `mesh`: see the module
+    /// docs. Its shape count must equal the control poses'.
+    pub morph: Option<&'a PipMorph>,
     /// The tolerance the samples were made for, recorded in `extras` (`None` for fixed-rate).
     pub tolerance: Option<f64>,
     /// Also add one empty node per control pose.
@@ -160,6 +172,187 @@ impl Builder {
         })
     }
 
+    /// A mesh of one primitive: positions (with bounds), normals, `u32` indices.
+    fn mesh(&mut self, name: &str, mesh: &Mesh) -> json::Index<json::Mesh> {
+        let positions = f32s(&mesh.positions);
+        let normals: Vec<f32> = mesh
+            .normals
+            .iter()
+            .flat_map(|n| n.normalize_or(glam::DVec3::Z).to_array().map(|x| x as f32))
+            .collect();
+        use json::accessor::Type;
+        use json::buffer::Target;
+        let pos = self.accessor(
+            Data::F32(&positions),
+            Type::Vec3,
+            Some(Target::ArrayBuffer),
+            true,
+        );
+        let nor = self.accessor(
+            Data::F32(&normals),
+            Type::Vec3,
+            Some(Target::ArrayBuffer),
+            false,
+        );
+        let idx = self.accessor(
+            Data::U32(&mesh.indices),
+            Type::Scalar,
+            Some(Target::ElementArrayBuffer),
+            false,
+        );
+        let mut attributes = BTreeMap::new();
+        attributes.insert(Valid(json::mesh::Semantic::Positions), pos);
+        attributes.insert(Valid(json::mesh::Semantic::Normals), nor);
+        self.root.push(json::Mesh {
+            extensions: None,
+            extras: None,
+            name: Some(name.to_string()),
+            primitives: vec![json::mesh::Primitive {
+                attributes,
+                extensions: None,
+                extras: None,
+                indices: Some(idx),
+                material: None,
+                mode: Valid(json::mesh::Mode::Triangles),
+                targets: None,
+            }],
+            weights: None,
+        })
+    }
+
+    /// The pieces of one morph span as one mesh at blend 0 (no indices: every triangle has its
+    /// own corners) with one morph target, the displacement to blend 1.
+    fn blend_mesh(&mut self, name: &str, parts: &[BlendMesh]) -> json::Index<json::Mesh> {
+        let (mut from, mut to, mut normals) = (Vec::new(), Vec::new(), Vec::new());
+        for p in parts {
+            from.extend_from_slice(&p.from);
+            to.extend_from_slice(&p.to);
+            normals.extend_from_slice(&p.normals);
+        }
+        let base = f32s(&from);
+        let end = f32s(&to);
+        // The target's displacement in f32, so that base + displacement is the end position
+        // as closely as f32 allows.
+        let delta: Vec<f32> = end.iter().zip(&base).map(|(e, b)| e - b).collect();
+        let normals = f32s(&normals);
+        use json::accessor::Type;
+        use json::buffer::Target;
+        let pos = self.accessor(
+            Data::F32(&base),
+            Type::Vec3,
+            Some(Target::ArrayBuffer),
+            true,
+        );
+        let nor = self.accessor(
+            Data::F32(&normals),
+            Type::Vec3,
+            Some(Target::ArrayBuffer),
+            false,
+        );
+        let target = self.accessor(
+            Data::F32(&delta),
+            Type::Vec3,
+            Some(Target::ArrayBuffer),
+            true,
+        );
+        let mut attributes = BTreeMap::new();
+        attributes.insert(Valid(json::mesh::Semantic::Positions), pos);
+        attributes.insert(Valid(json::mesh::Semantic::Normals), nor);
+        self.root.push(json::Mesh {
+            extensions: None,
+            extras: raw(&js!({ "targetNames": ["blend"] })).ok(),
+            name: Some(name.to_string()),
+            primitives: vec![json::mesh::Primitive {
+                attributes,
+                extensions: None,
+                extras: None,
+                indices: None,
+                material: None,
+                mode: Valid(json::mesh::Mode::Triangles),
+                targets: Some(vec![json::mesh::MorphTarget {
+                    positions: Some(target),
+                    normals: None,
+                    tangents: None,
+                }]),
+            }],
+            weights: Some(vec![0.0]),
+        })
+    }
+
+    /// Adds to animation `anim` the morph's channels on the span nodes: `weights` (`LINEAR`,
+    /// the span's blend at each key) and `scale` (`STEP`: 1 while its span plays, else 0).
+    fn morph_channels(
+        &mut self,
+        anim: json::Index<json::Animation>,
+        spans: &[json::Index<json::Node>],
+        keys: &[(f64, f64)],
+        morph: &PipMorph,
+    ) -> Result<(), Error> {
+        use json::animation::{Channel, Interpolation, Property, Sampler, Target};
+        let times: Vec<f32> = keys.iter().map(|k| k.0 as f32).collect();
+        let input = self.accessor(Data::F32(&times), json::accessor::Type::Scalar, None, true);
+        let mut blends = Vec::with_capacity(keys.len());
+        for (t, u) in keys {
+            blends.push(
+                morph
+                    .blend_at(*u)
+                    .map_err(|e| e.within(&format!("morph key at time {t}")))?,
+            );
+        }
+        for (i, node) in spans.iter().enumerate() {
+            // The visible span at a key and its blend there; a span's blend is 0 before it and
+            // 1 after it, so that a player interpolating across a switch stays on the shape.
+            let weights: Vec<f32> = keys
+                .iter()
+                .zip(&blends)
+                .map(|((_, u), b)| match b {
+                    Some((j, s)) if *j == i => *s as f32,
+                    _ if *u < i as f64 => 0.0,
+                    _ => 1.0,
+                })
+                .collect();
+            let scales: Vec<f32> = blends
+                .iter()
+                .flat_map(|b| {
+                    let on = b.is_none_or(|(j, _)| j == i);
+                    [if on { 1.0 } else { 0.0 }; 3]
+                })
+                .collect();
+            let w_out = self.accessor(
+                Data::F32(&weights),
+                json::accessor::Type::Scalar,
+                None,
+                false,
+            );
+            let s_out = self.accessor(Data::F32(&scales), json::accessor::Type::Vec3, None, false);
+            let a = &mut self.root.animations[anim.value()];
+            for (out, path, interpolation) in [
+                (w_out, Property::MorphTargetWeights, Interpolation::Linear),
+                (s_out, Property::Scale, Interpolation::Step),
+            ] {
+                a.channels.push(Channel {
+                    sampler: json::Index::new(a.samplers.len() as u32),
+                    target: Target {
+                        extensions: None,
+                        extras: None,
+                        node: *node,
+                        path: Valid(path),
+                    },
+                    extensions: None,
+                    extras: None,
+                });
+                a.samplers.push(Sampler {
+                    extensions: None,
+                    extras: None,
+                    input,
+                    interpolation: Valid(interpolation),
+                    output: out,
+                });
+            }
+        }
+        Ok(())
+    }
+
     /// A `LINEAR` translation + rotation animation of `node` through `poses` at `times`.
     fn animation(
         &mut self,
@@ -168,7 +361,7 @@ impl Builder {
         times: &[f64],
         poses: &[Pose],
         extras: serde_json::Value,
-    ) -> Result<(), Error> {
+    ) -> Result<json::Index<json::Animation>, Error> {
         use json::animation::{Channel, Interpolation, Property, Sampler, Target};
         let times32: Vec<f32> = times.iter().map(|&t| t as f32).collect();
         let translations: Vec<f32> = poses
@@ -222,9 +415,33 @@ impl Builder {
             name: Some(name.to_string()),
             samplers: vec![sampler(t_out), sampler(r_out)],
         };
-        self.root.push(animation);
-        Ok(())
+        Ok(self.root.push(animation))
     }
+}
+
+/// Vectors as `f32` triples.
+fn f32s(v: &[glam::DVec3]) -> Vec<f32> {
+    v.iter()
+        .flat_map(|p| p.to_array().map(|x| x as f32))
+        .collect()
+}
+
+/// The morph's keys: every sample's `(time, u)` and every control time's `(time, i)`, sorted,
+/// one per `f32` time (a control time that a sample already has is kept once, as its knot).
+fn merge_keys(samples: &[(f64, f64)], knots: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    let mut all: Vec<(f64, f64, bool)> = samples
+        .iter()
+        .map(|&(t, u)| (t, u, false))
+        .chain(knots.iter().map(|&(t, u)| (t, u, true)))
+        .collect();
+    all.sort_by(|a, b| a.0.total_cmp(&b.0).then(b.2.cmp(&a.2)));
+    let mut out: Vec<(f64, f64)> = Vec::with_capacity(all.len());
+    for (t, u, _) in all {
+        if out.last().is_none_or(|l| (l.0 as f32) < (t as f32)) {
+            out.push((t, u));
+        }
+    }
+    out
 }
 
 fn raw(v: &serde_json::Value) -> Result<Box<serde_json::value::RawValue>, Error> {
@@ -321,7 +538,21 @@ impl GltfAsset {
             bin: Vec::new(),
         };
 
-        // The mesh.
+        if let Some(morph) = m.morph {
+            if morph.shape_count() != m.control.len() || morph.closed() != m.closed {
+                return Err(Error::new(
+                    "morph",
+                    ErrorKind::OutOfRange {
+                        value: format!("{} shapes", morph.shape_count()),
+                        expected: format!(
+                            "one shape per control pose ({}) and the motion's closure",
+                            m.control.len()
+                        ),
+                    },
+                ));
+            }
+        }
+        // The mesh (a morphing object's meshes hang below its node).
         let placeholder;
         let mesh = match m.mesh {
             Some(mesh) => mesh,
@@ -330,60 +561,39 @@ impl GltfAsset {
                 &placeholder
             }
         };
-        let positions: Vec<f32> = mesh
-            .positions
-            .iter()
-            .flat_map(|p| p.to_array().map(|x| x as f32))
-            .collect();
-        let normals: Vec<f32> = mesh
-            .normals
-            .iter()
-            .flat_map(|n| n.normalize_or(glam::DVec3::Z).to_array().map(|x| x as f32))
-            .collect();
-        use json::accessor::Type;
-        use json::buffer::Target;
-        let pos = b.accessor(
-            Data::F32(&positions),
-            Type::Vec3,
-            Some(Target::ArrayBuffer),
-            true,
-        );
-        let nor = b.accessor(
-            Data::F32(&normals),
-            Type::Vec3,
-            Some(Target::ArrayBuffer),
-            false,
-        );
-        let idx = b.accessor(
-            Data::U32(&mesh.indices),
-            Type::Scalar,
-            Some(Target::ElementArrayBuffer),
-            false,
-        );
-        let mut attributes = BTreeMap::new();
-        attributes.insert(Valid(json::mesh::Semantic::Positions), pos);
-        attributes.insert(Valid(json::mesh::Semantic::Normals), nor);
-        let mesh_index = b.root.push(json::Mesh {
-            extensions: None,
-            extras: None,
-            name: Some(name.clone()),
-            primitives: vec![json::mesh::Primitive {
-                attributes,
-                extensions: None,
-                extras: None,
-                indices: Some(idx),
-                material: None,
-                mode: Valid(json::mesh::Mode::Triangles),
-                targets: None,
-            }],
-            weights: None,
-        });
+        let mesh_index = match m.morph {
+            Some(_) => None,
+            None => Some(b.mesh(&name, mesh)),
+        };
 
         // The nodes.
         let poses: Vec<Pose> = m.samples.iter().map(|s| s.pose).collect();
-        let object = b
-            .root
-            .push(node_trs(name.clone(), &poses[0], Some(mesh_index)));
+        let object = b.root.push(node_trs(name.clone(), &poses[0], mesh_index));
+        let spans: Vec<json::Index<json::Node>> = match m.morph {
+            None => Vec::new(),
+            Some(morph) => {
+                let parts: Vec<&[BlendMesh]> = if morph.span_count() == 0 {
+                    vec![morph.shape(0)]
+                } else {
+                    (0..morph.span_count()).map(|i| morph.span(i)).collect()
+                };
+                let nodes: Vec<_> = parts
+                    .iter()
+                    .enumerate()
+                    .map(|(i, part)| {
+                        let span_name = format!("{name} span {i}");
+                        let mesh = b.blend_mesh(&span_name, part);
+                        b.root.push(json::Node {
+                            mesh: Some(mesh),
+                            name: Some(span_name),
+                            ..Default::default()
+                        })
+                    })
+                    .collect();
+                b.root.nodes[object.value()].children = Some(nodes.clone());
+                nodes
+            }
+        };
         let control_node = b
             .root
             .push(node_trs(CONTROL_NODE_NAME.into(), &m.control[0], None));
@@ -412,7 +622,17 @@ impl GltfAsset {
         if let Some(t) = m.tolerance {
             object_extras["tolerance"] = js!(t);
         }
-        b.animation(&name, object, &times, &poses, object_extras)?;
+        let anim = b.animation(&name, object, &times, &poses, object_extras)?;
+        if let Some(morph) = m.morph {
+            let knots: Vec<(f64, f64)> = m
+                .control_times
+                .iter()
+                .enumerate()
+                .map(|(i, t)| (t - offset, i as f64))
+                .collect();
+            let keys: Vec<(f64, f64)> = m.samples.iter().map(|s| (s.time - offset, s.u)).collect();
+            b.morph_channels(anim, &spans, &merge_keys(&keys, &knots), morph)?;
+        }
         let mut control_poses = m.control.to_vec();
         if m.closed {
             control_poses.push(m.control[0]);
@@ -533,6 +753,7 @@ mod tests {
             control_velocities: None,
             closed: true,
             mesh: None,
+            morph: None,
             tolerance: Some(1e-3),
             control_nodes: true,
         })
