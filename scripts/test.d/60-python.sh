@@ -34,8 +34,9 @@ fi
 
 rm -rf artifacts/python
 mkdir -p artifacts/python
-timed "maturin build --release" "$venv/bin/maturin" build --release --quiet \
-  -m python/pyproject.toml -o artifacts/python --interpreter "$venv/bin/python"
+# maturin reads python/pyproject.toml (which names the crate's Cargo.toml) from its directory.
+timed "maturin build --release" bash -c 'cd python && "$1" build --release --quiet \
+  -o ../artifacts/python --interpreter "$2"' _ "$venv/bin/maturin" "$venv/bin/python"
 wheel=$(ls artifacts/python/screwbender-*.whl)
 timed "pip install the wheel" "$venv/bin/pip" install --quiet --disable-pip-version-check \
   --force-reinstall --no-deps "$wheel"
