@@ -61,7 +61,7 @@ class Figure(anywidget.AnyWidget):
     triads grid"``); ``strobe`` (copies of the object); ``camera`` (``"iso"``, ``"front"``,
     ``"side"``, ``"top"`` or ``"yaw pitch [distance]"`` in degrees); ``autoplay``;
     ``controls`` (``"none"``, ``"minimal"``, ``"full"``); ``theme`` (``"light"``, ``"dark"``);
-    ``height`` in pixels.
+    ``height`` in pixels; ``backend`` ``"webgl2"`` to skip WebGPU.
 
     Exported pages: the figure's display data carries a static copy (``text/html``, the same as
     :meth:`to_html`), which ``jupyter nbconvert --to html`` uses when the notebook has no saved
@@ -92,6 +92,8 @@ class Figure(anywidget.AnyWidget):
     controls = traitlets.Unicode(None, allow_none=True).tag(sync=True)
     theme = traitlets.Unicode(None, allow_none=True).tag(sync=True)
     height = traitlets.Int(420).tag(sync=True)
+    #: ``None`` (WebGPU where the browser has a usable adapter, else WebGL2) or ``"webgl2"``.
+    backend = traitlets.Enum([None, "webgl2"], None, allow_none=True).tag(sync=True)
 
     def __init__(
         self,
@@ -194,7 +196,7 @@ class Figure(anywidget.AnyWidget):
 
     def _state_for_page(self) -> dict:
         keys = ["closed", "name", "scheme", "s", "levels", "rules", "editable", "show",
-                "strobe", "camera", "autoplay", "controls", "theme", "height"]
+                "strobe", "camera", "autoplay", "controls", "theme", "height", "backend"]
         state = {k: getattr(self, k) for k in keys}
         state["poses"] = _poses_to_json(self.poses, self)
         return state

@@ -15,7 +15,7 @@ import { mount } from '../../www/js/element/screw-bender.js';
 const SHARED = Symbol.for('screwbender.figure.mount');
 const shared = (globalThis[SHARED] ??= { mount });
 
-const OPTIONS = ['scheme', 's', 'levels', 'rules', 'show', 'strobe', 'camera', 'editable', 'autoplay', 'controls', 'theme'];
+const OPTIONS = ['scheme', 's', 'levels', 'rules', 'show', 'strobe', 'camera', 'editable', 'autoplay', 'controls', 'theme', 'backend'];
 
 /** The figure's option of a model value (`s` is the element's `j`; rules "split" there). */
 function figureOptions(model) {
@@ -56,6 +56,8 @@ function render({ model, el }) {
   if (height) host.style.height = `${height}px`;
   el.append(host);
   const handle = shared.mount(host, { ...figureOptions(model), document: documentOf(model) });
+  // The figure's handle (viewer, motion, play/pause) for scripts of the page and for tests.
+  host.figure = handle;
   // The poses the figure itself last sent: their echo from the kernel is not applied again.
   let sent = null;
 
@@ -64,14 +66,14 @@ function render({ model, el }) {
     if (sent && JSON.stringify(rows) === sent) return;
     const motion = handle.motion;
     const doc = documentOf(model);
-    if (motion && motion.poseCount() === rows.length && motion.closed() === doc.closed) {
+    if (motion && handle.viewer && motion.poseCount === rows.length && motion.closed === doc.closed) {
       // In place: the camera, the selection and the playhead stay.
       motion.loadDocument(doc);
-      handle.viewer?.rebuild();
-      host.dataset.posesVersion = String((Number(host.dataset.posesVersion) || 0) + 1);
+      handle.viewer.rebuild();
     } else {
       handle.document = doc;
     }
+    host.dataset.posesVersion = String((Number(host.dataset.posesVersion) || 0) + 1);
   };
   const onOptions = () => {
     handle.options = figureOptions(model);

@@ -42,6 +42,18 @@ fn rows(poses: &[Pose]) -> Vec<f64> {
     out
 }
 
+/// Runs `work` `reps` times and prints the seconds of each run on one line.
+fn print_times(reps: usize, mut work: impl FnMut() -> Vec<f64>) {
+    let times: Vec<String> = (0..reps)
+        .map(|_| {
+            let start = Instant::now();
+            std::hint::black_box(work());
+            start.elapsed().as_secs_f64().to_string()
+        })
+        .collect();
+    println!("{}", times.join(" "));
+}
+
 fn arg(args: &[String], i: usize) -> usize {
     args.get(i)
         .and_then(|a| a.parse().ok())
@@ -62,44 +74,19 @@ fn main() {
             let (n, levels, reps) = (arg(&args, 2), arg(&args, 3), arg(&args, 4));
             let control = poses(n, 1);
             let sub = Subdivision::new(Scheme::FourPoint, Rules::Direct, levels as u32);
-            let mut times = Vec::new();
-            for _ in 0..reps {
-                let start = Instant::now();
-                let refined = sub.apply(&control, true).expect("valid options");
-                let out = rows(&refined);
-                times.push(start.elapsed().as_secs_f64());
-                std::hint::black_box(out);
-            }
-            println!(
-                "{}",
-                times
-                    .iter()
-                    .map(|t| t.to_string())
-                    .collect::<Vec<_>>()
-                    .join(" ")
-            );
+            print_times(reps, || {
+                rows(&sub.apply(&control, true).expect("valid options"))
+            });
         }
         Some("screw") => {
             let (n, reps) = (arg(&args, 2), arg(&args, 3));
             let (a, b) = (poses(n, 2), poses(n, 3));
             let ts: Vec<f64> = (0..n).map(|k| k as f64 / n as f64).collect();
-            let mut times = Vec::new();
-            for _ in 0..reps {
-                let start = Instant::now();
+            print_times(reps, || {
                 let mut out = Vec::with_capacity(n);
                 Pose::blends(n, |k| (&a[k], ts[k], &b[k]), &mut out);
-                let out = rows(&out);
-                times.push(start.elapsed().as_secs_f64());
-                std::hint::black_box(out);
-            }
-            println!(
-                "{}",
-                times
-                    .iter()
-                    .map(|t| t.to_string())
-                    .collect::<Vec<_>>()
-                    .join(" ")
-            );
+                rows(&out)
+            });
         }
         _ => eprintln!(
             "usage: core_timing poses N SEED | subdivide POSES LEVELS REPS | screw PAIRS REPS"
