@@ -1,0 +1,195 @@
+//! Files: `Motion.load` (`.json`, `.csv`, `.glb`, `.gltf`, as `screwbender import`) and
+//! `Motion.export` (`.glb`, `.gltf` + `.bin`, `.csv`, `.json`, as `screwbender export`), through
+//! the core's importers and exporters.
+
+use std::path::Path;
+
+use glam::DVec3;
+use pyo3::exceptions::{PyFileNotFoundError, PyOSError, PyPermissionError, PyValueError};
+use pyo3::prelude::*;
+use screwbender::mesh::Mesh;
+use screwbender::{
+    export_motion, import_motion_file, scenes, Error, ErrorKind, ExportFormat, ExportSamples,
+    ExportSettings, MotionDocument, NodeSelection, SamplingMode, DEFAULT_TOLERANCE, MAX_GLTF_BYTES,
+};
+
+use crate::convert::detached;
+use crate::motion::State;
+
+/// An `OSError` of the matching subclass whose message names `path`.
+fn os_error(path: &Path, e: std::io::Error) -> PyErr {
+    let message = format!("{}: {e}", path.display());
+    match e.kind() {
+        std::io::ErrorKind::NotFound => PyFileNotFoundError::new_err(message),
+        std::io::ErrorKind::PermissionDenied => PyPermissionError::new_err(message),
+        _ => PyOSError::new_err(message),
+    }
+}
+
+/// A `ValueError` naming the file and the element inside it.
+fn file_error(path: &Path, e: Error) -> PyErr {
+    PyValueError::new_err(format!("{}: {e}", path.display()))
+}
+
+/// Reads a file of at most [`MAX_GLTF_BYTES`] (checked before reading).
+fn read_limited(path: &Path) -> PyResult<Vec<u8>> {
+    let meta = std::fs::metadata(path).map_err(|e| os_error(path, e))?;
+    if meta.len() > MAX_GLTF_BYTES as u64 {
+        return Err(PyValueError::new_err(format!(
+            "{}: {} bytes is larger than the limit of {MAX_GLTF_BYTES} bytes",
+            path.display(),
+            meta.len()
+        )));
+    }
+    std::fs::read(path).map_err(|e| os_error(path, e))
+}
+
+/// The control poses of the file at `path`; `node` / `nodes` pick glTF nodes as the CLI's
+/// `--node` / `--nodes`.
+pub fn load(
+    path: &Path,
+    node: Option<String>,
+    nodes: Option<Vec<String>>,
+) -> PyResult<MotionDocument> {
+    let selection =
+        match (node, nodes) {
+            (Some(_), Some(_)) => return Err(PyValueError::new_err(
+                "nodes: give either node (an animated node) or nodes (static transforms), not both",
+            )),
+            (Some(n), None) => NodeSelection::Animated(n),
+            (None, Some(ns)) => NodeSelection::Transforms(ns),
+            (None, None) => NodeSelection::Auto,
+        };
+    let bytes = read_limited(path)?;
+    let dir = path.parent().unwrap_or(Path::new(".")).to_path_buf();
+    // A `.gltf` names its buffers by relative URI: they are read beside it, and an I/O failure
+    // is reported inside the import's error (which names the buffer).
+    let mut resolve = |uri: &str| -> Result<Vec<u8>, Error> {
+        let buffer = dir.join(uri);
+        let parse = |message: String| Error::new(String::new(), ErrorKind::Parse { message });
+        let meta =
+            std::fs::metadata(&buffer).map_err(|e| parse(format!("{}: {e}", buffer.display())))?;
+        if meta.len() > MAX_GLTF_BYTES as u64 {
+            return Err(parse(format!(
+                "{}: larger than the limit of {MAX_GLTF_BYTES} bytes",
+                buffer.display()
+            )));
+        }
+        std::fs::read(&buffer).map_err(|e| parse(format!("{}: {e}", buffer.display())))
+    };
+    let name = path
+        .file_name()
+        .and_then(|f| f.to_str())
+        .unwrap_or_default()
+        .to_string();
+    import_motion_file(&name, &bytes, &mut resolve, &selection).map_err(|e| file_error(path, e))
+}
+
+/// The options of `Motion.export`.
+pub struct ExportOptions<'a> {
+    /// `glb`, `gltf`, `csv` or `json`; `None`: from the file name's extension.
+    pub format: Option<&'a str>,
+    /// Adaptive keyframes within this distance (default [`DEFAULT_TOLERANCE`]).
+    pub tolerance: Option<f64>,
+    /// Fixed-rate keyframes instead.
+    pub fps: Option<f64>,
+    /// CSV: the trajectory of this body point instead of the poses.
+    pub point: Option<DVec3>,
+    /// The radius the tolerance holds at.
+    pub radius: Option<f64>,
+    /// glTF: one empty node per control pose too.
+    pub control_nodes: bool,
+}
+
+/// The format asked for, or the one the extension of `path` names.
+fn format_of(path: &Path, format: Option<&str>) -> PyResult<Option<ExportFormat>> {
+    let name = match format {
+        Some(f) => f.to_ascii_lowercase(),
+        None => path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(|e| e.to_ascii_lowercase())
+            .unwrap_or_default(),
+    };
+    if name == "json" {
+        return Ok(None);
+    }
+    ExportFormat::parse(&name, "format").map(Some).map_err(|_| {
+        PyValueError::new_err(match format {
+            Some(f) => format!("format: unknown value '{f}' (expected glb, gltf, csv or json)"),
+            None => format!(
+                "format: cannot tell the format from the file name '{}' (use .glb, .gltf, .csv or .json, or give format=)",
+                path.display()
+            ),
+        })
+    })
+}
+
+/// Writes the motion of `state` to `path`; returns the number of samples written.
+pub fn export(py: Python<'_>, state: &State, path: &Path, o: &ExportOptions) -> PyResult<usize> {
+    let write = |p: &Path, data: &[u8]| std::fs::write(p, data).map_err(|e| os_error(p, e));
+    let Some(format) = format_of(path, o.format)? else {
+        write(path, state.doc.to_json().as_bytes())?;
+        return Ok(state.doc.poses.len());
+    };
+    if o.tolerance.is_some() && o.fps.is_some() {
+        return Err(PyValueError::new_err(
+            "fps: give either tolerance (adaptive sampling) or fps (fixed rate), not both",
+        ));
+    }
+    let mesh = state
+        .doc
+        .name
+        .as_deref()
+        .and_then(scenes::scene)
+        .map(|sc| Mesh::from_shape(&sc.shape));
+    let sampling = match o.fps {
+        Some(fps) => SamplingMode::FixedRate(fps),
+        None => SamplingMode::Adaptive(o.tolerance.unwrap_or(DEFAULT_TOLERANCE)),
+    };
+    let text = path.to_string_lossy().to_string();
+    let stem = [".gltf", ".glb", ".bin"]
+        .iter()
+        .find_map(|ext| text.strip_suffix(ext))
+        .unwrap_or(&text)
+        .to_string();
+    let (gltf_path, bin_path) = (format!("{stem}.gltf"), format!("{stem}.bin"));
+    let bin_name = Path::new(&bin_path)
+        .file_name()
+        .and_then(|f| f.to_str())
+        .unwrap_or("motion.bin")
+        .to_string();
+    let settings = ExportSettings {
+        format,
+        sampling,
+        times: None,
+        radius: o.radius,
+        point: o.point,
+        control_nodes: o.control_nodes,
+        mesh: mesh.as_ref(),
+        bin_name: &bin_name,
+    };
+    let sub = state.subdivision;
+    let doc = &state.doc;
+    let settings = &settings;
+    if format == ExportFormat::Csv {
+        let samples = detached(py, || ExportSamples::new(doc, sub, settings))?
+            .map_err(|e| file_error(path, e))?;
+        let mut out = Vec::new();
+        samples.write_csv(&mut out).map_err(|e| os_error(path, e))?;
+        write(path, &out)?;
+        return Ok(samples.sampled.samples.len());
+    }
+    let exported =
+        detached(py, || export_motion(doc, sub, settings))?.map_err(|e| file_error(path, e))?;
+    if format == ExportFormat::Gltf {
+        write(Path::new(&gltf_path), &exported.data)?;
+        write(
+            Path::new(&bin_path),
+            exported.bin.as_deref().unwrap_or_default(),
+        )?;
+    } else {
+        write(path, &exported.data)?;
+    }
+    Ok(exported.sample_count)
+}

@@ -1,0 +1,817 @@
+//! The `Motion` class: control poses (a cycle or an open sequence), their key timing and the
+//! subdivision options, and the smooth motion they define.
+//!
+//! Every change builds the new state, validates it completely (poses, options, timing, the
+//! memory guard [`screwbender::MAX_REFINED_POSES`]) and only then stores it, so after any raised
+//! error the object keeps its exact previous state. The refined motion is computed on first use
+//! (without the GIL) and cached until the next change.
+
+use std::path::Path;
+
+use glam::DVec3;
+use numpy::PyArrayDyn;
+use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyBool, PyDict, PyInt, PyType};
+use screwbender::{
+    scenes, Error, ErrorKind, Motion, MotionDocument, Pose, Rules, Scheme, ScrewBender, Subdivision,
+};
+
+use crate::convert::{
+    detached, flag, number, optional_number, optional_text, parameters, pose_from, pose_matrices,
+    pose_rows, poses_from, poses_to_array, text, to_array, value_error, POSE_STRIDE,
+};
+use crate::files;
+
+/// The default number of subdivision levels (as the CLI and the JS API).
+pub const DEFAULT_LEVELS: u32 = 5;
+
+/// What a `Motion` stores: always valid (see [`State::check`]).
+#[derive(Clone, Debug)]
+pub struct State {
+    /// The control poses, closedness, name and key timing.
+    pub doc: MotionDocument,
+    /// Scheme, rules and levels.
+    pub subdivision: Subdivision,
+}
+
+impl State {
+    /// Everything that can make a state unusable: option combinations, the memory guard (which
+    /// also refuses fewer than 2 poses) and the key timing.
+    fn check(&self) -> Result<(), Error> {
+        self.subdivision.validate()?;
+        self.subdivision
+            .output_len(self.doc.poses.len(), self.doc.closed)?;
+        self.doc.timing()?;
+        Ok(())
+    }
+}
+
+/// A rule set's name: `"direct"`, or `"split-then-tweak"` (also `"split"` and the core's
+/// aliases).
+pub fn parse_rules(name: &str) -> Result<Rules, Error> {
+    match name.to_ascii_lowercase().as_str() {
+        "split-then-tweak" => Ok(Rules::SplitTweak),
+        other => other.parse::<Rules>().map_err(|_| {
+            Error::new(
+                "rules",
+                ErrorKind::UnknownValue {
+                    value: name.to_string(),
+                    expected: "direct, split-then-tweak (also split)",
+                },
+            )
+        }),
+    }
+}
+
+/// A rule set's name as this package writes it.
+pub fn rules_name(rules: Rules) -> &'static str {
+    match rules {
+        Rules::Direct => "direct",
+        Rules::SplitTweak => "split-then-tweak",
+    }
+}
+
+/// A scheme's name as this package writes it (`"j"` for the J_s family; its parameter is `s`).
+pub fn scheme_name(scheme: Scheme) -> &'static str {
+    match scheme {
+        Scheme::BSpline => "bspline",
+        Scheme::FourPoint => "fourpoint",
+        Scheme::Jarek => "jarek",
+        Scheme::J(_) => "j",
+    }
+}
+
+/// The scheme of `scheme=` and `s=` (as the CLI's `--scheme` and `--s`: one or the other;
+/// `scheme="j"` with `s` names the J_s family explicitly). `current` is kept when neither is
+/// given.
+fn scheme_from(scheme: Option<&str>, s: Option<f64>, current: Scheme) -> Result<Scheme, Error> {
+    match (scheme, s) {
+        (Some(name), Some(s)) if name.eq_ignore_ascii_case("j") => Ok(Scheme::J(s)),
+        (Some(_), Some(_)) => Err(Error::new(
+            "s",
+            ErrorKind::Unsupported {
+                reason: "give either scheme or s (the J_s family), not both".into(),
+            },
+        )),
+        (Some(name), None) if name.eq_ignore_ascii_case("j") => Err(Error::new(
+            "s",
+            ErrorKind::Unsupported {
+                reason: "scheme \"j\" (the J_s family) needs its parameter s".into(),
+            },
+        )),
+        (Some(name), None) => name.parse::<Scheme>(),
+        (None, Some(s)) => Ok(Scheme::J(s)),
+        (None, None) => Ok(current),
+    }
+}
+
+/// A level count: a whole number ≥ 0 (a Python `int`, not a `bool` or a float).
+fn level_count(obj: &Bound<'_, PyAny>) -> PyResult<u32> {
+    if obj.is_instance_of::<PyBool>() || !obj.is_instance_of::<PyInt>() {
+        let numpy_int = obj
+            .py()
+            .import("numpy")?
+            .getattr("integer")
+            .and_then(|t| obj.is_instance(&t))
+            .unwrap_or(false);
+        if !numpy_int || obj.is_instance_of::<PyBool>() {
+            return Err(PyTypeError::new_err(format!(
+                "levels: expected a whole number ≥ 0, got a {}",
+                obj.get_type().name()?
+            )));
+        }
+    }
+    let text = obj.str()?.to_string();
+    obj.extract::<i64>()
+        .ok()
+        .and_then(|v| u32::try_from(v).ok())
+        .ok_or_else(|| {
+            value_error(Error::new(
+                "levels",
+                ErrorKind::OutOfRange {
+                    value: text,
+                    expected: "a whole number ≥ 0".into(),
+                },
+            ))
+        })
+}
+
+/// Key times: `None` or a 1-D array of numbers (validated against the poses later).
+fn times_from(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Vec<f64>>> {
+    match obj {
+        None => Ok(None),
+        Some(o) if o.is_none() => Ok(None),
+        Some(o) => {
+            let (times, shape) = parameters(o, "times")?;
+            if shape.len() != 1 {
+                return Err(PyValueError::new_err(format!(
+                    "times: shape {} is not (n,) (one time per key)",
+                    crate::convert::shape_text(&shape)
+                )));
+            }
+            Ok(Some(times))
+        }
+    }
+}
+
+/// Key velocities: `None`, or a sequence of numbers ≥ 0 and `None` (a free key).
+fn velocities_from(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Vec<Option<f64>>>> {
+    let Some(obj) = obj.filter(|o| !o.is_none()) else {
+        return Ok(None);
+    };
+    if obj.is_instance_of::<pyo3::types::PyString>() {
+        return Err(PyTypeError::new_err(
+            "velocities: expected a sequence of numbers and None, got a str",
+        ));
+    }
+    let items = obj.try_iter().map_err(|_| {
+        PyTypeError::new_err(format!(
+            "velocities: expected a sequence of numbers and None, got a {}",
+            obj.get_type()
+                .name()
+                .map(|n| n.to_string())
+                .unwrap_or_default()
+        ))
+    })?;
+    let mut out = Vec::new();
+    for (i, item) in items.enumerate() {
+        let item = item?;
+        if item.is_none() {
+            out.push(None);
+            continue;
+        }
+        if item.is_instance_of::<PyBool>() {
+            return Err(PyTypeError::new_err(format!(
+                "velocities[{i}]: expected a number or None, got a bool"
+            )));
+        }
+        let v: f64 = item.extract().map_err(|_| {
+            PyTypeError::new_err(format!(
+                "velocities[{i}]: expected a number or None, got a {}",
+                item.get_type()
+                    .name()
+                    .map(|n| n.to_string())
+                    .unwrap_or_default()
+            ))
+        })?;
+        out.push(Some(v));
+    }
+    Ok(Some(out))
+}
+
+/// A body point: `None` (the local origin) or 3 numbers.
+fn point_from(obj: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<Option<DVec3>> {
+    let Some(obj) = obj.filter(|o| !o.is_none()) else {
+        return Ok(None);
+    };
+    let (p, shape) = parameters(obj, name)?;
+    match p[..] {
+        [x, y, z] if shape.len() == 1 => Ok(Some(DVec3::new(x, y, z))),
+        _ => Err(PyValueError::new_err(format!(
+            "{name}: shape {} is not (3,) (x, y, z in the body's local frame)",
+            crate::convert::shape_text(&shape)
+        ))),
+    }
+}
+
+/// Control poses (a cycle or an open sequence) smoothed by screw subdivision.
+#[pyclass(module = "screwbender._screwbender", name = "Motion")]
+#[derive(Clone)]
+pub struct PyMotion {
+    state: State,
+    /// The refined poses of `state` alone, from `subdivide()` / `matrices()`.
+    refined: Option<Vec<Pose>>,
+    /// The refined motion with its span screws, for evaluation.
+    motion: Option<ScrewBender>,
+}
+
+impl PyMotion {
+    /// A motion of a checked state.
+    pub fn from_state(state: State) -> PyResult<PyMotion> {
+        state.check().map_err(value_error)?;
+        Ok(PyMotion {
+            state,
+            refined: None,
+            motion: None,
+        })
+    }
+
+    /// The current state.
+    pub fn state(&self) -> &State {
+        &self.state
+    }
+
+    /// Applies `change` to a copy of the state, validates the copy and only then stores it.
+    fn update(&mut self, change: impl FnOnce(&mut State) -> PyResult<()>) -> PyResult<()> {
+        let mut next = self.state.clone();
+        change(&mut next)?;
+        next.check().map_err(value_error)?;
+        self.state = next;
+        self.refined = None;
+        self.motion = None;
+        Ok(())
+    }
+
+    /// The refined poses (subdividing without the GIL if not done since the last change).
+    fn refined_poses(&mut self, py: Python<'_>) -> PyResult<&[Pose]> {
+        if self.motion.is_none() && self.refined.is_none() {
+            let State { doc, subdivision } = &self.state;
+            let poses =
+                detached(py, || subdivision.apply(&doc.poses, doc.closed))?.map_err(value_error)?;
+            self.refined = Some(poses);
+        }
+        match (&self.motion, &self.refined) {
+            (Some(m), _) => Ok(m.refined().poses()),
+            (None, Some(poses)) => Ok(poses),
+            (None, None) => Err(PyValueError::new_err("motion: not subdivided")),
+        }
+    }
+
+    /// The refined motion (built without the GIL if not done since the last change).
+    fn motion(&mut self, py: Python<'_>) -> PyResult<&ScrewBender> {
+        if self.motion.is_none() {
+            let State { doc, subdivision } = &self.state;
+            let motion = detached(py, || {
+                ScrewBender::new(doc.poses.clone(), doc.closed, *subdivision)
+            })?
+            .map_err(value_error)?;
+            self.refined = None;
+            self.motion = Some(motion);
+        }
+        self.motion
+            .as_ref()
+            .ok_or_else(|| PyValueError::new_err("motion: not subdivided"))
+    }
+}
+
+/// Builds a state from the constructor's arguments.
+#[allow(clippy::too_many_arguments)]
+fn state_from(
+    poses: Vec<Pose>,
+    closed: bool,
+    scheme: Option<&str>,
+    levels: Option<&Bound<'_, PyAny>>,
+    rules: &str,
+    s: Option<f64>,
+    times: Option<&Bound<'_, PyAny>>,
+    velocities: Option<&Bound<'_, PyAny>>,
+    name: Option<String>,
+    defaults: Subdivision,
+) -> PyResult<State> {
+    let scheme = scheme_from(scheme, s, defaults.scheme).map_err(value_error)?;
+    let rules = parse_rules(rules).map_err(value_error)?;
+    let levels = match levels {
+        Some(l) => level_count(l)?,
+        None => defaults.levels,
+    };
+    let times = times_from(times)?;
+    let velocities = velocities_from(velocities)?;
+    let subdivision = Subdivision::new(scheme, rules, levels);
+    // Options and the pose count first: the timing is defined for 2 poses or more.
+    subdivision.validate().map_err(value_error)?;
+    subdivision
+        .output_len(poses.len(), closed)
+        .map_err(value_error)?;
+    let mut doc = MotionDocument::new(poses, closed);
+    doc.name = name;
+    doc.set_timing(times, velocities).map_err(value_error)?;
+    Ok(State { doc, subdivision })
+}
+
+#[pymethods]
+impl PyMotion {
+    /// See the class docstring in `screwbender/__init__.pyi`.
+    #[new]
+    #[pyo3(signature = (poses, closed=None, scheme=None, levels=None, rules=None, s=None, times=None, velocities=None, name=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        poses: &Bound<'_, PyAny>,
+        closed: Option<&Bound<'_, PyAny>>,
+        scheme: Option<&Bound<'_, PyAny>>,
+        levels: Option<&Bound<'_, PyAny>>,
+        rules: Option<&Bound<'_, PyAny>>,
+        s: Option<&Bound<'_, PyAny>>,
+        times: Option<&Bound<'_, PyAny>>,
+        velocities: Option<&Bound<'_, PyAny>>,
+        name: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyMotion> {
+        let poses = poses_from(poses, "poses")?;
+        let closed = closed
+            .map(|c| flag(c, "closed"))
+            .transpose()?
+            .unwrap_or(true);
+        let defaults = Subdivision::new(Scheme::FourPoint, Rules::Direct, DEFAULT_LEVELS);
+        let (scheme, rules) = (
+            optional_text(scheme, "scheme")?,
+            optional_text(rules, "rules")?,
+        );
+        let (s, name) = (optional_number(s, "s")?, optional_text(name, "name")?);
+        PyMotion::from_state(state_from(
+            poses,
+            closed,
+            scheme.as_deref(),
+            levels,
+            rules.as_deref().unwrap_or("direct"),
+            s,
+            times,
+            velocities,
+            name,
+            defaults,
+        )?)
+    }
+
+    /// The preset `name` (see `presets()`), with the preset's scheme and levels unless given.
+    #[classmethod]
+    #[pyo3(signature = (name, *, closed=None, scheme=None, levels=None, rules=None, s=None, times=None, velocities=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn from_preset(
+        _cls: &Bound<'_, PyType>,
+        name: &str,
+        closed: Option<&Bound<'_, PyAny>>,
+        scheme: Option<&Bound<'_, PyAny>>,
+        levels: Option<&Bound<'_, PyAny>>,
+        rules: Option<&Bound<'_, PyAny>>,
+        s: Option<&Bound<'_, PyAny>>,
+        times: Option<&Bound<'_, PyAny>>,
+        velocities: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<PyMotion> {
+        let preset = scenes::scene(name).ok_or_else(|| {
+            value_error(Error::new(
+                "name",
+                ErrorKind::OutOfRange {
+                    value: format!("'{name}'"),
+                    expected: format!("a preset: {}", preset_names().join(", ")),
+                },
+            ))
+        })?;
+        let closed = closed.map(|c| flag(c, "closed")).transpose()?;
+        let defaults = Subdivision::new(preset.scheme, Rules::Direct, preset.levels);
+        let (scheme, rules) = (
+            optional_text(scheme, "scheme")?,
+            optional_text(rules, "rules")?,
+        );
+        let s = optional_number(s, "s")?;
+        PyMotion::from_state(state_from(
+            preset.poses,
+            closed.unwrap_or(preset.closed),
+            scheme.as_deref(),
+            levels,
+            rules.as_deref().unwrap_or("direct"),
+            s,
+            times,
+            velocities,
+            Some(preset.id.to_string()),
+            defaults,
+        )?)
+    }
+
+    /// A motion document from JSON text (the CLI's and the page's format).
+    #[classmethod]
+    fn from_json(_cls: &Bound<'_, PyType>, text: &str) -> PyResult<PyMotion> {
+        let doc = MotionDocument::from_json(text).map_err(value_error)?;
+        PyMotion::from_state(State {
+            doc,
+            subdivision: Subdivision::new(Scheme::FourPoint, Rules::Direct, DEFAULT_LEVELS),
+        })
+    }
+
+    /// Control poses from a `.json`, `.csv`, `.glb` or `.gltf` file (as `screwbender import`).
+    #[classmethod]
+    #[pyo3(signature = (path, *, node=None, nodes=None, closed=None))]
+    fn load(
+        _cls: &Bound<'_, PyType>,
+        path: std::path::PathBuf,
+        node: Option<String>,
+        nodes: Option<Vec<String>>,
+        closed: Option<bool>,
+    ) -> PyResult<PyMotion> {
+        let mut doc = files::load(&path, node, nodes)?;
+        if let Some(closed) = closed {
+            doc.set_closed(closed);
+        }
+        PyMotion::from_state(State {
+            doc,
+            subdivision: Subdivision::new(Scheme::FourPoint, Rules::Direct, DEFAULT_LEVELS),
+        })
+    }
+
+    /// The motion document as JSON text (two-space indent, one pose per line).
+    fn to_json(&self) -> String {
+        self.state.doc.to_json()
+    }
+
+    /// Writes the motion as `.glb`, `.gltf` (+ `.bin`), `.csv` or `.json` (as `screwbender
+    /// export`); returns the number of samples written (control poses for JSON).
+    #[pyo3(signature = (path, *, format=None, tolerance=None, fps=None, point=None, radius=None, control_nodes=false))]
+    #[allow(clippy::too_many_arguments)]
+    fn export(
+        &self,
+        py: Python<'_>,
+        path: std::path::PathBuf,
+        format: Option<&str>,
+        tolerance: Option<f64>,
+        fps: Option<f64>,
+        point: Option<&Bound<'_, PyAny>>,
+        radius: Option<f64>,
+        control_nodes: bool,
+    ) -> PyResult<usize> {
+        let point = point_from(point, "point")?;
+        let options = files::ExportOptions {
+            format,
+            tolerance,
+            fps,
+            point,
+            radius,
+            control_nodes,
+        };
+        files::export(py, &self.state, Path::new(&path), &options)
+    }
+
+    /// An independent copy.
+    fn copy(&self) -> PyMotion {
+        self.clone()
+    }
+
+    fn __copy__(&self) -> PyMotion {
+        self.clone()
+    }
+
+    fn __deepcopy__(&self, _memo: &Bound<'_, PyAny>) -> PyMotion {
+        self.clone()
+    }
+
+    fn __repr__(&self) -> String {
+        let s = &self.state;
+        let scheme = match s.subdivision.scheme {
+            Scheme::J(v) => format!("s={v}"),
+            other => format!("scheme='{}'", scheme_name(other)),
+        };
+        let name = s
+            .doc
+            .name
+            .as_ref()
+            .map(|n| format!(", name={n:?}"))
+            .unwrap_or_default();
+        format!(
+            "Motion({} poses, closed={}, {scheme}, levels={}, rules='{}'{name})",
+            s.doc.poses.len(),
+            if s.doc.closed { "True" } else { "False" },
+            s.subdivision.levels,
+            rules_name(s.subdivision.rules),
+        )
+    }
+
+    // ---- the document --------------------------------------------------------------------
+
+    /// The control poses, `(n, 7)`: `x y z qw qx qy qz` (unit quaternions).
+    #[getter]
+    fn get_poses<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        poses_to_array(py, &[self.state.doc.poses.len()], &self.state.doc.poses)
+    }
+
+    #[setter]
+    fn set_poses(&mut self, value: &Bound<'_, PyAny>) -> PyResult<()> {
+        let poses = poses_from(value, "poses")?;
+        self.update(|s| {
+            s.doc.poses = poses;
+            Ok(())
+        })
+    }
+
+    /// Control pose `i` as 7 numbers.
+    fn pose<'py>(&self, py: Python<'py>, i: isize) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let k = self.index(i)?;
+        poses_to_array(py, &[], &self.state.doc.poses[k..k + 1])
+    }
+
+    /// Replaces control pose `i` (`(7,)` or `(4, 4)`; negative `i` counts from the end).
+    fn set_pose(&mut self, i: isize, pose: &Bound<'_, PyAny>) -> PyResult<()> {
+        let k = self.index(i)?;
+        let pose = pose_from(pose, "pose")?;
+        self.update(|s| {
+            s.doc.poses[k] = pose;
+            Ok(())
+        })
+    }
+
+    /// Whether the poses form a cycle.
+    #[getter]
+    fn get_closed(&self) -> bool {
+        self.state.doc.closed
+    }
+
+    #[setter]
+    fn set_closed(&mut self, closed: &Bound<'_, PyAny>) -> PyResult<()> {
+        let closed = flag(closed, "closed")?;
+        self.update(|s| {
+            s.doc.set_closed(closed);
+            Ok(())
+        })
+    }
+
+    /// The document's name (a preset's id), or `None`.
+    #[getter]
+    fn get_name(&self) -> Option<String> {
+        self.state.doc.name.clone()
+    }
+
+    #[setter]
+    fn set_name(&mut self, name: Option<&Bound<'_, PyAny>>) -> PyResult<()> {
+        let name = optional_text(name, "name")?;
+        self.update(|s| {
+            s.doc.name = name;
+            Ok(())
+        })
+    }
+
+    /// Key times in seconds (`n` for an open motion, `n + 1` for a cycle), or `None` (one
+    /// second per span).
+    #[getter]
+    fn get_times(&self) -> Option<Vec<f64>> {
+        self.state.doc.times.clone()
+    }
+
+    #[setter]
+    fn set_times(&mut self, times: Option<&Bound<'_, PyAny>>) -> PyResult<()> {
+        let times = times_from(times)?;
+        self.update(|s| {
+            s.doc
+                .set_timing(times, s.doc.velocities.clone())
+                .map_err(value_error)
+        })
+    }
+
+    /// Key velocities (poses per second, `None` where free), or `None` (all free).
+    #[getter]
+    fn get_velocities(&self) -> Option<Vec<Option<f64>>> {
+        self.state.doc.velocities.clone()
+    }
+
+    #[setter]
+    fn set_velocities(&mut self, velocities: Option<&Bound<'_, PyAny>>) -> PyResult<()> {
+        let velocities = velocities_from(velocities)?;
+        self.update(|s| {
+            s.doc
+                .set_timing(s.doc.times.clone(), velocities)
+                .map_err(value_error)
+        })
+    }
+
+    // ---- the options -----------------------------------------------------------------------
+
+    /// The scheme: `"bspline"`, `"fourpoint"`, `"jarek"`, or `"j"` for the J_s family.
+    #[getter]
+    fn get_scheme(&self) -> &'static str {
+        scheme_name(self.state.subdivision.scheme)
+    }
+
+    #[setter]
+    fn set_scheme(&mut self, scheme: &Bound<'_, PyAny>) -> PyResult<()> {
+        let scheme = text(scheme, "scheme")?;
+        let current = self.state.subdivision.scheme;
+        let scheme = scheme_from(Some(&scheme), None, current).map_err(value_error)?;
+        self.update(|s| {
+            s.subdivision.scheme = scheme;
+            Ok(())
+        })
+    }
+
+    /// The J_s parameter of the scheme (`1` B-spline, `0` 4-point, `0.5` Jarek); setting it
+    /// selects the J_s family.
+    #[getter]
+    fn get_s(&self) -> f64 {
+        self.state.subdivision.scheme.j_parameter()
+    }
+
+    #[setter]
+    fn set_s(&mut self, s: &Bound<'_, PyAny>) -> PyResult<()> {
+        let s = number(s, "s")?;
+        self.update(|st| {
+            st.subdivision.scheme = Scheme::J(s);
+            Ok(())
+        })
+    }
+
+    /// The rule set: `"direct"` or `"split-then-tweak"` (also accepts `"split"`).
+    #[getter]
+    fn get_rules(&self) -> &'static str {
+        rules_name(self.state.subdivision.rules)
+    }
+
+    #[setter]
+    fn set_rules(&mut self, rules: &Bound<'_, PyAny>) -> PyResult<()> {
+        let rules = parse_rules(&text(rules, "rules")?).map_err(value_error)?;
+        self.update(|s| {
+            s.subdivision.rules = rules;
+            Ok(())
+        })
+    }
+
+    /// Subdivision levels (`0`: the plain polyscrew).
+    #[getter]
+    fn get_levels(&self) -> u32 {
+        self.state.subdivision.levels
+    }
+
+    #[setter]
+    fn set_levels(&mut self, levels: &Bound<'_, PyAny>) -> PyResult<()> {
+        let levels = level_count(levels)?;
+        self.update(|s| {
+            s.subdivision.levels = levels;
+            Ok(())
+        })
+    }
+
+    /// Warnings about the options on these poses (e.g. a span close to a half turn).
+    fn warnings(&self) -> Vec<String> {
+        let s = &self.state;
+        s.subdivision
+            .warnings(&s.doc.poses, s.doc.closed)
+            .iter()
+            .map(|w| w.to_string())
+            .collect()
+    }
+
+    // ---- the motion ------------------------------------------------------------------------
+
+    /// How many poses `subdivide()` returns.
+    #[getter]
+    fn refined_count(&self) -> PyResult<usize> {
+        let s = &self.state;
+        s.subdivision
+            .output_len(s.doc.poses.len(), s.doc.closed)
+            .map_err(value_error)
+    }
+
+    /// The parameter interval `(0, n)` for a cycle of `n` poses, `(0, m - 1)` for an open one.
+    #[getter]
+    fn domain(&self) -> (f64, f64) {
+        let n = self.state.doc.poses.len();
+        let spans = if self.state.doc.closed { n } else { n - 1 };
+        (0.0, spans as f64)
+    }
+
+    /// The refined poses, `(N, 7)`; refined pose `j` sits at `u = j / 2**levels`.
+    fn subdivide<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let poses = self.refined_poses(py)?;
+        let n = poses.len();
+        let rows = detached(py, || pose_rows(poses))?;
+        to_array(py, vec![n, POSE_STRIDE], rows)
+    }
+
+    /// The refined poses as homogeneous matrices, `(N, 4, 4)`.
+    fn matrices<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let poses = self.refined_poses(py)?;
+        let n = poses.len();
+        let m = detached(py, || pose_matrices(poses))?;
+        to_array(py, vec![n, 4, 4], m)
+    }
+
+    /// The poses at parameters `u` (a number: `(7,)`; an array: `u.shape + (7,)`). Cycles wrap
+    /// `u`; open motions extrapolate their end screws.
+    fn poses_at<'py>(
+        &mut self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let (us, shape) = parameters(u, "u")?;
+        let motion = self.motion(py)?;
+        let poses = detached(py, || {
+            us.iter().map(|&u| motion.pose_at(u)).collect::<Vec<_>>()
+        })?;
+        poses_to_array(py, &shape, &poses)
+    }
+
+    /// `count` poses at uniformly spaced parameters (a cycle's `[0, n)`, an open motion's
+    /// `[0, m - 1]` inclusive), `(count, 7)`.
+    fn sample<'py>(
+        &mut self,
+        py: Python<'py>,
+        count: usize,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        if count > screwbender::MAX_SAMPLES {
+            return Err(value_error(Error::new(
+                "count",
+                ErrorKind::OutOfRange {
+                    value: count.to_string(),
+                    expected: format!("at most {}", screwbender::MAX_SAMPLES),
+                },
+            )));
+        }
+        let motion = self.motion(py)?;
+        let poses = detached(py, || motion.sample(count))?;
+        poses_to_array(py, &[count], &poses)
+    }
+
+    /// Closed-form kinematics at `u` of the body point `point` (local coordinates, default the
+    /// origin): a dict of `u.shape + (3,)` arrays `position`, `velocity`, `acceleration`,
+    /// `angular_velocity`, `angular_acceleration` (world frame, per unit of `u`).
+    #[pyo3(signature = (u, point=None))]
+    fn kinematics<'py>(
+        &mut self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        point: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let (us, shape) = parameters(u, "u")?;
+        let local = point_from(point, "point")?.unwrap_or(DVec3::ZERO);
+        let motion = self.motion(py)?;
+        let columns = detached(py, || {
+            let mut columns: Vec<Vec<f64>> =
+                (0..5).map(|_| Vec::with_capacity(us.len() * 3)).collect();
+            for &u in &us {
+                let k = motion.refined().point_kinematics(u, local);
+                let values = [
+                    k.position,
+                    k.velocity,
+                    k.acceleration,
+                    k.angular_velocity,
+                    k.angular_acceleration,
+                ];
+                for (column, v) in columns.iter_mut().zip(values) {
+                    column.extend_from_slice(&v.to_array());
+                }
+            }
+            columns
+        })?;
+        let dict = PyDict::new(py);
+        let names = [
+            "position",
+            "velocity",
+            "acceleration",
+            "angular_velocity",
+            "angular_acceleration",
+        ];
+        let mut out_shape = shape.clone();
+        out_shape.push(3);
+        for (name, column) in names.iter().zip(columns) {
+            dict.set_item(name, to_array(py, out_shape.clone(), column)?)?;
+        }
+        Ok(dict)
+    }
+
+    /// The number of control poses.
+    fn __len__(&self) -> usize {
+        self.state.doc.poses.len()
+    }
+}
+
+impl PyMotion {
+    /// Control pose index `i` (negative counts from the end), or a named `IndexError`.
+    fn index(&self, i: isize) -> PyResult<usize> {
+        let n = self.state.doc.poses.len();
+        let k = if i < 0 { i + n as isize } else { i };
+        usize::try_from(k).ok().filter(|&k| k < n).ok_or_else(|| {
+            pyo3::exceptions::PyIndexError::new_err(format!(
+                "index: {i} is out of range (expected -{n} to {})",
+                n - 1
+            ))
+        })
+    }
+}
+
+/// The preset ids, in the order of the page's menu.
+pub fn preset_names() -> Vec<&'static str> {
+    scenes::scenes().iter().map(|s| s.id).collect()
+}

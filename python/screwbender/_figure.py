@@ -1,0 +1,244 @@
+"""The notebook figure :class:`Figure`: an anywidget whose front end is the project's own viewer
+(the ``<screw-bender>`` element's figure: WebGPU, with the WebGL2 fallback), bundled into
+``static/figure.js`` with the renderer's WebAssembly module.
+
+The wasm module is inlined in the widget's ES module (base64, about 6.4 MB in all) rather than
+sent as a separate buffer: anywidget has no asset mechanism for a ``.wasm`` file, and one
+self-contained module works unchanged wherever the widget is shown (JupyterLab, Notebook 7,
+VS Code) and in a static page (:meth:`Figure.to_html`), with no server, CDN or network. The
+module is sent with each figure; in the browser every figure uses the first one's wasm instance
+and WebGPU device.
+"""
+
+from __future__ import annotations
+
+
+import json
+import pathlib
+import uuid
+from typing import Any, Optional, Union
+
+import anywidget
+import numpy as np
+import traitlets
+
+from ._screwbender import Motion
+
+_BUNDLE = pathlib.Path(__file__).parent / "static" / "figure.js"
+
+
+def _poses_to_json(value: Any, widget: Any) -> Any:
+    return None if value is None else np.asarray(value, dtype=np.float64).tolist()
+
+
+def _poses_from_json(value: Any, widget: Any) -> Any:
+    return None if value is None else np.asarray(value, dtype=np.float64).reshape(-1, 7)
+
+
+def _bundle() -> str:
+    if not _BUNDLE.exists():
+        raise RuntimeError(
+            f"{_BUNDLE} is missing: this build of screwbender has no notebook figure "
+            "(build it with python/build-figure.sh before the wheel)"
+        )
+    return _BUNDLE.read_text(encoding="utf-8")
+
+
+class Figure(anywidget.AnyWidget):
+    """A live 3-D figure of a motion in a notebook, with two-way sync.
+
+    ``Figure(m_or_P, editable=True, scheme=..., levels=..., show=..., strobe=..., camera=...)``:
+    ``m_or_P`` is a :class:`Motion` (its poses and options) or a pose array (``(n, 7)`` or
+    ``(n, 4, 4)``). Setting ``fig.poses`` or an option from Python redraws the figure; dragging
+    a control pose in an ``editable`` figure updates ``fig.poses`` in the kernel and fires
+    ``fig.observe(callback, names="poses")``. ``fig.motion`` is the :class:`Motion` of what the
+    figure shows. Bad values raise ``ValueError`` / ``TypeError`` naming the option or pose, and
+    the figure keeps its state.
+
+    Options: ``closed``; ``scheme`` (``"bspline"``, ``"fourpoint"``, ``"jarek"``) or ``s`` (the
+    J_s family); ``levels`` (0 to 12 in the figure); ``rules`` (``"direct"``,
+    ``"split-then-tweak"``); ``show`` (layers: ``"strobe control trajectories polyscrew polygon
+    triads grid"``); ``strobe`` (copies of the object); ``camera`` (``"iso"``, ``"front"``,
+    ``"side"``, ``"top"`` or ``"yaw pitch [distance]"`` in degrees); ``autoplay``;
+    ``controls`` (``"none"``, ``"minimal"``, ``"full"``); ``theme`` (``"light"``, ``"dark"``);
+    ``height`` in pixels; ``backend`` ``"webgl2"`` to skip WebGPU.
+
+    Exported pages: the figure's display data carries a static copy (``text/html``, the same as
+    :meth:`to_html`), which ``jupyter nbconvert --to html`` uses when the notebook has no saved
+    widget state: the exported page draws the figure live from ``file://`` with no kernel and no
+    network (orbit, play, drag). It adds about 6.4 MB per figure to the notebook and the page;
+    set ``Figure.embed_static = False`` to leave it out.
+    """
+
+    _esm = _BUNDLE if _BUNDLE.exists() else "export default { render() {} };"
+
+    #: Whether the display data carries the static copy of the figure (see the class doc).
+    embed_static = True
+
+    poses = traitlets.Any(None, allow_none=True).tag(
+        sync=True, to_json=_poses_to_json, from_json=_poses_from_json
+    )
+    closed = traitlets.Bool(True).tag(sync=True)
+    name = traitlets.Unicode(None, allow_none=True).tag(sync=True)
+    scheme = traitlets.Unicode(None, allow_none=True).tag(sync=True)
+    s = traitlets.Float(None, allow_none=True).tag(sync=True)
+    levels = traitlets.Int(None, allow_none=True).tag(sync=True)
+    rules = traitlets.Unicode("direct").tag(sync=True)
+    editable = traitlets.Bool(True).tag(sync=True)
+    show = traitlets.Unicode(None, allow_none=True).tag(sync=True)
+    strobe = traitlets.Int(None, allow_none=True).tag(sync=True)
+    camera = traitlets.Unicode(None, allow_none=True).tag(sync=True)
+    autoplay = traitlets.Bool(False).tag(sync=True)
+    controls = traitlets.Unicode(None, allow_none=True).tag(sync=True)
+    theme = traitlets.Unicode(None, allow_none=True).tag(sync=True)
+    height = traitlets.Int(420).tag(sync=True)
+    #: ``None`` (WebGPU where the browser has a usable adapter, else WebGL2) or ``"webgl2"``.
+    backend = traitlets.Enum([None, "webgl2"], None, allow_none=True).tag(sync=True)
+
+    def __init__(
+        self,
+        m_or_P: Union[Motion, Any],
+        *,
+        editable: bool = True,
+        scheme: Optional[str] = None,
+        levels: Optional[int] = None,
+        show: Optional[str] = None,
+        strobe: Optional[int] = None,
+        camera: Optional[str] = None,
+        closed: Optional[bool] = None,
+        rules: Optional[str] = None,
+        s: Optional[float] = None,
+        **kwargs: Any,
+    ) -> None:
+        if isinstance(m_or_P, Motion):
+            m = m_or_P.copy()
+            if closed is not None:
+                m.closed = closed
+        else:
+            m = Motion(m_or_P, closed=True if closed is None else closed)
+        if scheme is not None:
+            m.scheme = scheme
+        if s is not None:
+            m.s = s
+        if rules is not None:
+            m.rules = rules
+        if levels is not None:
+            m.levels = levels
+        if strobe is not None and (isinstance(strobe, bool) or not isinstance(strobe, (int, np.integer)) or not 0 <= strobe <= 20000):
+            raise ValueError(f"strobe: {strobe!r} is out of range (expected a whole number 0 to 20000)")
+        self.errors: list = []
+        super().__init__(
+            poses=m.poses,
+            closed=m.closed,
+            name=m.name,
+            scheme=None if m.scheme == "j" else m.scheme,
+            s=m.s if m.scheme == "j" else None,
+            levels=m.levels,
+            rules=m.rules,
+            editable=editable,
+            show=show,
+            strobe=strobe,
+            camera=camera,
+            **kwargs,
+        )
+        self.on_msg(self._on_front_end_message)
+
+    # ---- validation: every change is checked as a Motion before it is taken ------------------
+
+    def _motion_with(self, **change: Any) -> Motion:
+        state = dict(
+            poses=self.poses, closed=self.closed, scheme=self.scheme, s=self.s,
+            levels=self.levels, rules=self.rules,
+        )
+        state.update(change)
+        if state["poses"] is None:
+            raise ValueError("poses: a figure needs control poses")
+        if state["s"] is not None:
+            state["scheme"] = None
+        return Motion(
+            state["poses"], closed=state["closed"], scheme=state["scheme"], s=state["s"],
+            levels=state["levels"], rules=state["rules"], name=self.name,
+        )
+
+    @traitlets.validate("poses")
+    def _valid_poses(self, proposal: Any) -> Any:
+        if self.poses is None:  # the constructor's value, checked there
+            return Motion(proposal["value"], closed=self.closed).poses
+        return self._motion_with(poses=proposal["value"]).poses
+
+    @traitlets.validate("scheme", "s", "levels", "rules", "closed")
+    def _valid_option(self, proposal: Any) -> Any:
+        if self.poses is not None:
+            name = proposal["trait"].name
+            change = {name: proposal["value"]}
+            if name == "scheme" and proposal["value"] is not None:
+                change["s"] = None
+            self._motion_with(**change)
+        return proposal["value"]
+
+    @traitlets.observe("scheme")
+    def _scheme_clears_s(self, change: Any) -> None:
+        if change["new"] is not None and self.s is not None:
+            self.s = None
+
+    # ---- what the figure shows -----------------------------------------------------------------
+
+    @property
+    def motion(self) -> Motion:
+        """The :class:`Motion` of the figure's poses and options (a copy)."""
+        return self._motion_with()
+
+    def _on_front_end_message(self, widget: Any, content: Any, buffers: Any) -> None:
+        if isinstance(content, dict) and content.get("type") == "error":
+            self.errors.append(content)
+
+    # ---- static pages --------------------------------------------------------------------------
+
+    def _state_for_page(self) -> dict:
+        keys = ["closed", "name", "scheme", "s", "levels", "rules", "editable", "show",
+                "strobe", "camera", "autoplay", "controls", "theme", "height", "backend"]
+        state = {k: getattr(self, k) for k in keys}
+        state["poses"] = _poses_to_json(self.poses, self)
+        return state
+
+    def to_html(self) -> str:
+        """A self-contained HTML fragment that draws this figure live in any page, with no
+        kernel and no network (opened from ``file://`` too): the figure's bundle and wasm
+        (about 6.4 MB) and its current poses and options. Changes in it stay in the page."""
+        code = _bundle().replace("</script", "<\\/script")
+        fig_id = f"screwbender-{uuid.uuid4().hex}"
+        state = json.dumps(self._state_for_page()).replace("</", "<\\/")
+        return (
+            f'<div id="{fig_id}" class="screwbender-static" style="width:100%"></div>\n'
+            f'<script type="module">{code}\n</script>\n'
+            '<script type="module">\n'
+            f"const state = {state};\n"
+            "const listeners = {};\n"
+            "const model = {\n"
+            "  get: (k) => state[k],\n"
+            "  set: (k, v) => { state[k] = v; },\n"
+            "  save_changes() {}, send() {},\n"
+            "  on: (e, f) => { (listeners[e] ??= []).push(f); },\n"
+            "  off() {},\n"
+            "};\n"
+            "const render = globalThis[Symbol.for('screwbender.figure.render')];\n"
+            f"render({{ model, el: document.getElementById({json.dumps(fig_id)}) }});\n"
+            "</script>\n"
+        )
+
+    def _repr_mimebundle_(self, **kwargs: Any) -> Any:
+        bundle = super()._repr_mimebundle_(**kwargs)
+        if not self.embed_static:
+            return bundle
+        data, metadata = bundle if isinstance(bundle, tuple) else (bundle, {})
+        data = dict(data)
+        data["text/html"] = self.to_html()
+        return data, metadata
+
+    def __repr__(self) -> str:
+        n = 0 if self.poses is None else len(self.poses)
+        return f"Figure({n} poses, closed={self.closed}, levels={self.levels}, editable={self.editable})"
+
+
+__all__ = ["Figure"]
+

@@ -1,0 +1,160 @@
+"""Type stubs of the extension module `screwbender._screwbender` (the Rust core, PyO3)."""
+
+import os
+from typing import Literal, Optional, Sequence, Tuple, TypedDict, Union
+
+import numpy as np
+import numpy.typing as npt
+
+#: Pose input: one pose ``(7,)`` (``x y z qw qx qy qz``) or ``(4, 4)``, or a batch ``(n, 7)`` /
+#: ``(n, 4, 4)``; any array-like of real numbers (floats or integers).
+PoseArray = npt.ArrayLike
+#: Parameters: a number or an array of numbers of any shape.
+Parameters = Union[float, npt.ArrayLike]
+FloatArray = npt.NDArray[np.float64]
+SchemeName = Literal["bspline", "fourpoint", "jarek", "j"]
+RulesName = Literal["direct", "split-then-tweak", "split"]
+PathLike = Union[str, "os.PathLike[str]"]
+
+__version__: str
+#: The most poses a subdivision may produce (the memory guard), 2**20.
+MAX_REFINED_POSES: int
+
+class Kinematics(TypedDict):
+    position: FloatArray
+    velocity: FloatArray
+    acceleration: FloatArray
+    angular_velocity: FloatArray
+    angular_acceleration: FloatArray
+
+class Motion:
+    """Control poses (a cycle or an open sequence) smoothed by screw subdivision.
+
+    ``poses``: ``(n, 7)`` rows ``x y z qw qx qy qz`` (unit quaternions, scalar first; within 1e-3
+    of unit norm they are normalised) or ``(n, 4, 4)`` homogeneous matrices (orthonormal within
+    1e-4, right-handed), ``n >= 2``. ``closed``: a cycle (the last pose joined back to the first)
+    or an open sequence. ``scheme``: ``"bspline"``, ``"fourpoint"`` (default) or ``"jarek"``;
+    or ``s=``, the J_s family's parameter (``0`` 4-point, ``0.5`` Jarek, ``1`` B-spline,
+    ``|s| <= 4``, direct rules only). ``levels``: subdivision steps (default 5; ``0`` is the plain
+    polyscrew). ``rules``: ``"direct"`` (the revised paper's) or ``"split-then-tweak"`` (the
+    first version's; also ``"split"``). ``times``: when each key is reached, in seconds (``n``
+    for an open motion, ``n + 1`` for a cycle); ``velocities``: the rate at each key in poses per
+    second, ``None`` where free (both used by ``export``).
+
+    Parameters ``u`` are in coarse units: control pose ``i`` sits at ``u = i``; refined pose
+    ``j`` at ``u = j / 2**levels``. Every setter validates the whole new state and raises
+    ``ValueError`` / ``TypeError`` naming the element; a refused change leaves the motion as it
+    was. The math runs without the GIL.
+    """
+
+    def __init__(
+        self,
+        poses: PoseArray,
+        closed: bool = True,
+        scheme: Optional[SchemeName] = None,
+        levels: Optional[int] = None,
+        rules: RulesName = "direct",
+        s: Optional[float] = None,
+        times: Optional[npt.ArrayLike] = None,
+        velocities: Optional[Sequence[Optional[float]]] = None,
+        name: Optional[str] = None,
+    ) -> None: ...
+    @classmethod
+    def from_preset(
+        cls,
+        name: str,
+        *,
+        closed: Optional[bool] = None,
+        scheme: Optional[SchemeName] = None,
+        levels: Optional[int] = None,
+        rules: RulesName = "direct",
+        s: Optional[float] = None,
+        times: Optional[npt.ArrayLike] = None,
+        velocities: Optional[Sequence[Optional[float]]] = None,
+    ) -> "Motion":
+        """The preset ``name`` (see ``presets()``), with the preset's scheme and levels unless given."""
+    @classmethod
+    def from_json(cls, text: str) -> "Motion":
+        """A motion document in the CLI's JSON format."""
+    @classmethod
+    def load(
+        cls,
+        path: PathLike,
+        *,
+        node: Optional[str] = None,
+        nodes: Optional[Sequence[str]] = None,
+        closed: Optional[bool] = None,
+    ) -> "Motion":
+        """Control poses from a ``.json``, ``.csv``, ``.glb`` or ``.gltf`` file (as ``screwbender import``)."""
+    def to_json(self) -> str:
+        """The motion document as JSON text."""
+    def export(
+        self,
+        path: PathLike,
+        *,
+        format: Optional[Literal["glb", "gltf", "csv", "json"]] = None,
+        tolerance: Optional[float] = None,
+        fps: Optional[float] = None,
+        point: Optional[npt.ArrayLike] = None,
+        radius: Optional[float] = None,
+        control_nodes: bool = False,
+    ) -> int:
+        """Writes the motion (format from the extension unless given; as ``screwbender export``);
+        returns the number of samples written."""
+    def copy(self) -> "Motion": ...
+    def __copy__(self) -> "Motion": ...
+    def __deepcopy__(self, memo: object) -> "Motion": ...
+    def __len__(self) -> int: ...
+    poses: FloatArray
+    """The control poses, ``(n, 7)``; assign ``(n, 7)`` or ``(n, 4, 4)``."""
+    def pose(self, i: int) -> FloatArray:
+        """Control pose ``i``, ``(7,)``."""
+    def set_pose(self, i: int, pose: PoseArray) -> None:
+        """Replaces control pose ``i`` (``(7,)`` or ``(4, 4)``)."""
+    closed: bool
+    name: Optional[str]
+    times: Optional[list[float]]
+    velocities: Optional[list[Optional[float]]]
+    scheme: SchemeName
+    """``"bspline"``, ``"fourpoint"``, ``"jarek"``, or ``"j"`` for the J_s family."""
+    s: float
+    """The J_s parameter of the scheme (``1`` B-spline, ``0`` 4-point, ``0.5`` Jarek); setting it selects the J_s family."""
+    rules: Literal["direct", "split-then-tweak"]
+    levels: int
+    def warnings(self) -> list[str]:
+        """Warnings about the options on these poses (e.g. a span close to a half turn)."""
+    @property
+    def refined_count(self) -> int:
+        """How many poses ``subdivide()`` returns."""
+    @property
+    def domain(self) -> Tuple[float, float]:
+        """``(0, n)`` for a cycle of ``n`` poses, ``(0, m - 1)`` for an open sequence."""
+    def subdivide(self) -> FloatArray:
+        """The refined poses, ``(N, 7)``."""
+    def matrices(self) -> FloatArray:
+        """The refined poses as homogeneous matrices, ``(N, 4, 4)``."""
+    def poses_at(self, u: Parameters) -> FloatArray:
+        """The poses at ``u``: ``(7,)`` for a number, ``u.shape + (7,)`` for an array."""
+    def sample(self, count: int) -> FloatArray:
+        """``count`` poses at uniformly spaced parameters, ``(count, 7)``."""
+    def kinematics(self, u: Parameters, point: Optional[npt.ArrayLike] = None) -> Kinematics:
+        """Closed-form kinematics at ``u`` of the body point ``point`` (local coordinates,
+        default the origin), world frame, per unit of ``u``: arrays of shape ``u.shape + (3,)``."""
+
+def screw(a: PoseArray, t: Parameters, b: PoseArray) -> FloatArray:
+    """``screw(a, t, b)``: the pose after the fraction ``t`` of the screw motion from ``a`` to ``b``
+    (``t = 0`` is ``a``, ``t = 1`` is ``b``, any real ``t`` extrapolates); equal to
+    ``a · exp(t · log(a⁻¹ b))`` (``modern_robotics.ScrewTrajectory``'s motion) and to dual
+    quaternion ScLERP.
+
+    ``a``, ``b``: one pose each (``(7,)`` or ``(4, 4)``) with ``t`` a number -> ``(7,)`` or an array
+    -> ``t.shape + (7,)`` (the logarithm computed once); or batches ``(n, 7)`` / ``(n, 4, 4)`` (one
+    side may be a single pose) with ``t`` a number or ``(n,)`` -> ``(n, 7)``, computed several at a
+    time on SIMD lanes, bit for bit the same as one at a time.
+    """
+
+def presets() -> list[str]:
+    """The preset ids for ``Motion.from_preset``."""
+
+def preset_descriptions() -> list[Tuple[str, str, str]]:
+    """``(id, label, description)`` of every preset."""

@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Stage: the Python package `screwbender` (python/, the PyO3 crate crates/screwbender-py).
+#
+# Installs a virtual environment in .venv/ (ignored) with the pinned python/requirements-dev.txt
+# (maturin, numpy, pytest, modern_robotics, pytransform3d, the notebook stack), builds the wheel
+# with maturin (release) into artifacts/python/, installs that wheel into the venv, and runs
+# pytest on python/tests: the CLI's poses bit for bit (the CLI is built here too, in release, so
+# it shares the core's build with the extension), the reference libraries, bad input, files,
+# the notebook figure, the course notebook and, when a figure bundle exists, JupyterLab in
+# headless Chromium.
+#
+#   PYTHON=python3.12 scripts/test.d/60-python.sh    # another interpreter (default python3)
+set -euo pipefail
+# shellcheck source=scripts/lib.sh
+source "$(dirname "${BASH_SOURCE[0]}")/../lib.sh"
+cd "$REPO_ROOT"
+
+venv=$REPO_ROOT/.venv
+py=${PYTHON:-python3}
+if [[ ! -x $venv/bin/python ]]; then
+  timed "python venv" "$py" -m venv "$venv"
+fi
+timed "pip install (pinned)" "$venv/bin/pip" install --quiet --disable-pip-version-check \
+  -r python/requirements-dev.txt
+
+timed "cargo build --release (CLI, the reference)" cargo build --release -q -p screwbender-cli --bin screwbender
+target_dir=$(cargo metadata --format-version 1 --no-deps | "$venv/bin/python" -c \
+  'import json, sys; print(json.load(sys.stdin)["target_directory"])')
+export SCREWBENDER_CLI=$target_dir/release/screwbender
+
+if [[ -x python/build-figure.sh ]]; then
+  timed "figure bundle" python/build-figure.sh
+fi
+
+rm -rf artifacts/python
+mkdir -p artifacts/python
+# maturin reads python/pyproject.toml (which names the crate's Cargo.toml) from its directory.
+timed "maturin build --release" bash -c 'cd python && "$1" build --release --quiet \
+  -o ../artifacts/python --interpreter "$2"' _ "$venv/bin/maturin" "$venv/bin/python"
+wheel=$(ls artifacts/python/screwbender-*.whl)
+timed "pip install the wheel" "$venv/bin/pip" install --quiet --disable-pip-version-check \
+  --force-reinstall --no-deps "$wheel"
+
+header "pytest python/tests"
+# From a directory outside python/, so `import screwbender` is the installed wheel and not the
+# source folder.
+cd "$REPO_ROOT/python/tests"
+timed "pytest" "$venv/bin/python" -m pytest -q -p no:cacheprovider \
+  --rootdir="$REPO_ROOT/python/tests" .
+log "python: $(basename "$wheel") built and tested"
