@@ -134,34 +134,17 @@ else
   node_types "$PKG_DIR"
 fi
 
-# wasm_module FEATURES OUT_DIR OPT [node]: the web crate built with FEATURES into OUT_DIR
-# (cargo, wasm-bindgen, wasm-opt at OPT; the last two, ~1-3 min, are skipped when the cargo output
-# and this script did not change). With `node`, a module that Node and a Node-only TypeScript
-# project use directly: types without the DOM lib and the synchronous Node entry node.js.
+# wasm_module FEATURES OUT_DIR OPT [node]: the web crate built with FEATURES into OUT_DIR by
+# scripts/wasm-module.sh (which keeps its wasm-bindgen and wasm-opt output, shared with the
+# playground's build, scripts/serve.sh). With `node`, a module that Node and a Node-only
+# TypeScript project use directly: types without the DOM lib and the synchronous Node entry node.js.
 wasm_module() {
-  local features=$1 out=$2 opt=$3 node=${4:-} stamp stamp_file
-  header "$(basename "$out"): cargo build (wasm32, wasm-release, features $features)"
-  timed "cargo build" cargo_wasm_release --features "$features"
-  stamp=$( (cat "$input" npm/node.js scripts/build-pkg.sh Cargo.lock; echo "$features $opt $node") | sha256sum | cut -d' ' -f1)
-  stamp_file=$PKG_DIR/.stamp-$(basename "$out")
-  if [[ -f $stamp_file && $(cat "$stamp_file") == "$stamp" && -f $out/screwbender_bg.wasm ]]; then
-    log "$out is up to date with the wasm module: not regenerating"
-    return
-  fi
-  rm -rf "$out"
-  mkdir -p "$out"
-  timed "wasm-bindgen" wasm-bindgen --target web --remove-name-section --remove-producers-section \
-    --out-dir "$out" --out-name screwbender "$input"
-  timed "wasm-opt $opt" "$WASM_OPT" "$opt" --low-memory-unused --strip-debug --strip-producers "${WASM_OPT_FEATURES[@]}" \
-    "$out/screwbender_bg.wasm" -o "$out/screwbender_bg.opt.wasm"
-  mv "$out/screwbender_bg.opt.wasm" "$out/screwbender_bg.wasm"
-  rm -f "$out/package.json" "$out/.gitignore"
+  local features=$1 out=$2 opt=$3 node=${4:-}
+  "$REPO_ROOT/scripts/wasm-module.sh" "$features" "$out" "$opt"
   if [[ $node == node ]]; then
     node_types "$out"
     cp npm/node.js "$out/node.js"
   fi
-  echo "$stamp" >"$stamp_file"
-  log "$(basename "$out"): $(wc -c <"$out/screwbender_bg.wasm") bytes wasm, $(gzip -9c "$out/screwbender_bg.wasm" | wc -c) bytes gzip"
 }
 
 # The `screwbender/full` entry (full/): the math module plus file export and import (glTF, CSV),

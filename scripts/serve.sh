@@ -4,23 +4,23 @@
 #   ./scripts/serve.sh                # port 8080, or the next free one
 #   PORT=9000 ./scripts/serve.sh      # exactly this port
 #   SKIP_BUILD=1 ./scripts/serve.sh   # serve what is already built
-#   SERVE_FEATURES= ./scripts/serve.sh  # build the wasm without the wgpu renderer
 #   BUILD_ONLY=1 ./scripts/serve.sh   # build www/ and exit (used by scripts/test.d/40-e2e.sh)
 #
-# Build: release wasm32 cdylib -> wasm-bindgen --target web -> www/pkg/, then every executable
-# scripts/serve.d/*.sh in sorted order (hook for later build steps, e.g. vendoring uplot and
-# lil-gui from node_modules into www/). Serve: scripts/serve.mjs (no-store caching, right MIME).
+# Build: the page's three wasm modules (scripts/wasm-module.sh; the same builds as the npm
+# package's, so whichever of the two scripts runs second only copies them), then every
+# executable scripts/serve.d/*.sh in sorted order (hook for later build steps, e.g. vendoring
+# uplot and lil-gui from node_modules into www/). Serve: scripts/serve.mjs (no-store caching,
+# right MIME).
+#
+#   www/pkg-webgpu/  features webgpu,files: the first frame (the <screw-bender> figure's module)
+#   www/pkg-gl/      features webgl,files: where WebGPU has no usable adapter (or ?backend=webgl2)
+#   www/pkg-full/    features files,methods,tracks,teaching, no renderer: the analysis views,
+#                    fetched when first used (www/js/editor/modules.js)
 set -euo pipefail
 # shellcheck source=scripts/lib.sh
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 cd "$REPO_ROOT"
 
-# Cargo features of the playground build: `render` is the wgpu renderer.
-SERVE_FEATURES=${SERVE_FEATURES-render}
-# The web crate and its [lib] name: the wasm file is <name>.wasm; the page imports it as
-# pkg/screwbender.js (wasm-bindgen --out-name).
-WEB_CRATE=screwbender-web
-CRATE_LIB=screwbender_web
 WWW_DIR=www
 
 build() {
@@ -29,16 +29,11 @@ build() {
     ./scripts/setup.sh rust wasm-bindgen npm
   fi
 
-  header "build: wasm (release${SERVE_FEATURES:+, features $SERVE_FEATURES})"
-  local features=() target_dir
-  [[ -n $SERVE_FEATURES ]] && features=(--features "$SERVE_FEATURES")
-  timed "cargo build" cargo build -p "$WEB_CRATE" --lib --release --target "$WASM_TARGET" "${features[@]}"
-
-  # Honour CARGO_TARGET_DIR / build.target-dir: ask cargo where the artifacts are.
-  target_dir=$(cargo metadata --format-version 1 --no-deps |
-    grep -o '"target_directory":"[^"]*"' | cut -d'"' -f4)
-  timed "wasm-bindgen" wasm-bindgen --target web --out-dir "$WWW_DIR/pkg" --out-name screwbender \
-    "$target_dir/$WASM_TARGET/release/$CRATE_LIB.wasm"
+  ./scripts/wasm-module.sh webgpu,files "$WWW_DIR/pkg-webgpu" -Oz
+  ./scripts/wasm-module.sh webgl,files "$WWW_DIR/pkg-gl" -Oz
+  ./scripts/wasm-module.sh files,methods,tracks,teaching "$WWW_DIR/pkg-full" -Os
+  # The all-in-one module of earlier builds: nothing imports it any more.
+  rm -rf "$WWW_DIR/pkg"
 
   if [[ -d scripts/serve.d ]]; then
     local hook

@@ -60,7 +60,7 @@ const ANSWERS = {
     wrong: () => {},
     // Pose 1 at the screw midpoint of poses 0 and 2: both spans are halves of one screw.
     right: async (L, app) => {
-      const wasm = await import('./pkg/screwbender.js');
+      const wasm = app.wasm;
       app.edit(() => app.motion.setPose(1, wasm.screw(app.motion.pose(0), 0.5, app.motion.pose(2))));
     },
   },
@@ -152,7 +152,7 @@ test('every exercise fails on a scripted wrong answer and passes on a right one;
 
 test('the multiple-choice answers agree with what the wasm API measures', async () => {
   const r = await page.evaluate(async () => {
-    const wasm = await import('./pkg/screwbender.js');
+    const wasm = await window.screwbender.app.analysis();
     const circle = wasm.Motion.fromScene('circle4');
     const frameDep = Object.fromEntries(circle.compareMethods().rows.map((row) => [row.method, row.frame_dependence]));
     // One decoupled 4-point step on the circle: the new origins' radius (lesson 5).
@@ -191,12 +191,12 @@ test('the multiple-choice answers agree with what the wasm API measures', async 
 test('schema.json names what the page accepts; index.json lists every lesson', async () => {
   const schema = JSON.parse(fs.readFileSync(path.join(ROOT, 'www/lessons/schema.json'), 'utf8'));
   const page_ = await page.evaluate(async () => {
-    const wasm = await import('./pkg/screwbender.js');
+    const wasm = await window.screwbender.app.analysis();
     const fmt = await import('./js/lessons/format.js');
-    const { VIEWS } = await import('./js/views/index.js');
+    const { VIEW_IDS } = await import('./js/views/index.js');
     return {
       scenes: wasm.scenes().map((s) => s.id),
-      views: VIEWS.map((v) => v.id),
+      views: VIEW_IDS,
       checks: Object.fromEntries(Object.entries(fmt.CHECK_FIELDS).map(([k, v]) => [k, [...v].sort()])),
       metrics: fmt.METRIC_FIELDS,
       display: Object.keys(fmt.DISPLAY_FIELDS).sort(),

@@ -39,7 +39,7 @@ async function freePort() {
 
 /** Serves www/ with scripts/serve.mjs on a free port; returns {url, stop()}. */
 export async function serveWww() {
-  if (!fs.existsSync(path.join(ROOT, 'www/pkg/screwbender_bg.wasm'))) throw new Error('build the wasm first (scripts/serve.sh)');
+  if (!fs.existsSync(path.join(ROOT, 'www/pkg-webgpu/screwbender_bg.wasm'))) throw new Error('build the wasm first (scripts/serve.sh)');
   return serveDir(path.join(ROOT, 'www'));
 }
 

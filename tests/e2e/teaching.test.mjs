@@ -139,7 +139,7 @@ test(`${BACKEND}: split/tweak view steps with buttons and keys and follows the s
   assert.match(s.caption, /tweak \(4-point, direct V2\)/);
   // Level 0's tweak output is the level-1 subdivision of the motion.
   const level1 = await sb(async () => {
-    const { Motion } = await import('/pkg/screwbender.js');
+    const { Motion } = await window.screwbender.app.analysis();
     const m = window.screwbender.app.motion;
     const r = new Motion(m.toDocument(), { ...m.options(), levels: 1 });
     const out = Array.from(r.subdivide());
@@ -178,7 +178,7 @@ test(`${BACKEND}: polygon view reproduces the L-polygon vectors of docs/math/poi
   await open('polygon');
   // The wasm export, called in the page (docs/math/point-rules.md §5, one step).
   const got = await sb(async () => {
-    const { subdividePolygon } = await import('/pkg/screwbender.js');
+    const { subdividePolygon } = await window.screwbender.app.analysis();
     const L = [0, 0, 6, 0, 6, 2, 2, 2, 2, 6, 0, 6];
     const out = {};
     for (const scheme of ['bspline', 'fourpoint', 'jarek']) {
@@ -198,7 +198,7 @@ test(`${BACKEND}: polygon view reproduces the L-polygon vectors of docs/math/poi
   }
   // Bad input to the teaching exports throws errors naming the element.
   const errors = await sb(async () => {
-    const m = await import('/pkg/screwbender.js');
+    const m = await window.screwbender.app.analysis();
     const msg = (f) => {
       try {
         f();

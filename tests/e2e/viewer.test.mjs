@@ -406,7 +406,7 @@ test('a src motion file loads; figures created and removed 50 times leave no err
     assert.equal(shared.options.scheme, 'jarek');
     assert.equal(shared.options.levels, 3);
     const round = () =>
-      page.evaluate(async () => {
+      page.evaluate(async (gl) => {
         const box = document.createElement('div');
         document.querySelector('main').append(box);
         const els = [];
@@ -423,9 +423,10 @@ test('a src motion file loads; figures created and removed 50 times leave no err
         const failed = els.filter((e) => !e.shadowRoot.querySelector('.msg').hidden).length;
         box.remove();
         await new Promise((res) => setTimeout(res, 50));
-        const wasm = await (await import('../pkg/screwbender.js')).default();
+        // The figures' shared module (element/modules.js): the WebGPU one, or the WebGL2 one.
+        const wasm = await (await import(gl ? '../pkg-gl/screwbender.js' : '../pkg-webgpu/screwbender.js')).default();
         return { failed, wasmBytes: wasm.memory.buffer.byteLength, figures: document.querySelectorAll('screw-bender').length };
-      });
+      }, EXPECTED_BACKEND === 'WebGL2');
     const cdp = await page.context().newCDPSession(page);
     const heap = async () => {
       await cdp.send('HeapProfiler.collectGarbage');

@@ -2,7 +2,7 @@
 // an AnimationMixer. ScrewBender runs once, to sample the motion (Motion.keyframeTracks); every
 // frame after that is three.js alone. `?t=<seconds>` shows one moment, paused (for screenshots).
 import * as THREE from 'three';
-import init, { Motion } from 'screwbender'; // the playground's build (www/pkg/: has keyframeTracks)
+import init, { Motion } from 'screwbender'; // the playground's analysis module (www/pkg-full/: has keyframeTracks)
 
 const view = document.getElementById('view');
 const status = document.getElementById('status');

@@ -8,10 +8,13 @@
 // everything through the app it is given (none imports app.js), and an instance with `bind()`
 // attaches its listeners once the view runs. The App methods that only forward to a part or to
 // the viewer are the API that ui.js, the analysis views, main.js and the tests use.
-import * as wasm from '../pkg/screwbender.js';
+//
+// The first frame needs only the renderer's wasm module (editor/modules.js): the dock, its views
+// and the analysis module are fetched when a view is first opened, with "loading…" in the dock
+// meanwhile; a failed fetch is a message, and the editor goes on without the dock.
 import { Viewer } from './view/viewer.js';
 import { buildUi } from './editor/ui.js';
-import { Dock } from './editor/dock.js';
+import { renderModule, glModule, analysisModule, lazy } from './editor/modules.js';
 import notices from './editor/notices.js';
 import session, { History } from './editor/session.js';
 import files from './editor/files.js';
@@ -23,6 +26,12 @@ import labels from './editor/labels.js';
 import viewpoint from './editor/viewpoint.js';
 import theme from './editor/theme.js';
 import media from './editor/media.js';
+
+// A retry asks for the modules under another URL (see editor/modules.js).
+const loadDockModule = lazy('the analysis dock', (a) => import(a ? `./editor/dock.js?retry=${a}` : './editor/dock.js'));
+const loadViewModules = lazy('the analysis views', (a) =>
+  import(a ? `./views/index.js?retry=${a}` : './views/index.js').then((m) => m.loadViews(a)),
+);
 
 const PARTS = [notices, session, files, input, pose, presets, responsive, labels, viewpoint, theme, media];
 
@@ -88,26 +97,16 @@ export class App {
   // ---------------------------------------------------------------- startup
 
   async start() {
-    await wasm.default();
-    this.limits = wasm.limits();
     const params = new URLSearchParams(location.search);
-    this.viewer = new Viewer(document.getElementById('view'), wasm, {
-      model: this,
-      webgl2: params.get('backend') === 'webgl2',
-      // WebGPU without an adapter is no fault of the page or the browser: neutral information.
-      warn: (message) => this.showError(message, /no usable adapter/.test(message) ? 'info' : 'warn'),
-      onTime: (u, a, b, playhead) => this.ui?.setTime(u, a, b, playhead),
-      onPlay: () => this.ui?.refresh(),
-    });
+    await this.startViewer(params.get('backend') === 'webgl2');
+    this.limits = this.wasm.limits();
     this.scenes = this.viewer.scenes;
-    await this.viewer.start();
     const { backend, renderer } = this.viewer;
     document.getElementById('backend').textContent = `${backend}${renderer.samples > 1 ? ` · MSAA ${renderer.samples}×` : ''}`;
 
     // Share link > autosave > default preset.
     if (!this.parts.session.restoreInitial()) this.loadPreset(DEFAULT_SCENE, false);
     this.ui = buildUi(this);
-    this.dock = new Dock(this);
     if (this.view.dock) this.openView(this.view.dock);
     this.parts.input.bind();
     this.parts.files.bind();
@@ -119,6 +118,42 @@ export class App {
     this.parts.media.bind();
     window.addEventListener('beforeunload', () => this.autosave());
     this.ready = true;
+  }
+
+  /**
+   * Starts the viewer with the renderer module (editor/modules.js) as `this.wasm`, the module
+   * every Motion of the editor comes from. Where the WebGPU module's renderer fails to start,
+   * the WebGL2 module takes over on a fresh canvas (the WebGPU module has no GL backend).
+   */
+  async startViewer(webgl2) {
+    const { wasm, gl } = await renderModule(webgl2);
+    const viewer = (module) =>
+      new Viewer(document.getElementById('view'), module, {
+        model: this,
+        webgl2,
+        // WebGPU without an adapter is no fault of the page or the browser: neutral information.
+        warn: (message) => this.showError(message, /no usable adapter/.test(message) ? 'info' : 'warn'),
+        onTime: (u, a, b, playhead) => this.ui?.setTime(u, a, b, playhead),
+        onPlay: () => this.ui?.refresh(),
+      });
+    this.wasm = wasm;
+    this.viewer = viewer(wasm);
+    try {
+      await this.viewer.start();
+    } catch (e) {
+      if (gl) throw e;
+      this.viewer.dispose();
+      this.viewer.replaceCanvas();
+      this.wasm = await glModule();
+      this.viewer = viewer(this.wasm);
+      await this.viewer.start();
+      this.showError('WebGPU failed to start; using WebGL2.', 'warn');
+    }
+  }
+
+  /** The analysis module (editor/modules.js), fetched on first use; rejects with a message. */
+  analysis() {
+    return analysisModule(this.wasm.Motion);
   }
 
   // ---------------------------------------------------------------- the view
@@ -315,8 +350,49 @@ export class App {
     } else if (this.panelWasOpen) gui.open();
   }
 
-  /** Opens analysis view `id` in the dock ('' or null closes it); returns its instance. */
-  openView(id) {
+  /**
+   * Opens analysis view `id` in the dock ('' or null closes it); resolves to its instance. The
+   * first view opened fetches the dock (with the analysis module): "loading…" in the dock until
+   * then, and where the fetch fails a message, the dock closed and the editor as it was.
+   */
+  async openView(id) {
+    if (!this.dock) {
+      this.wantView = id || '';
+      if (!id) return null;
+      this.loadingDock ??= this.loadDock();
+      await this.loadingDock;
+      // Meanwhile another view may have been asked for, or the dock closed.
+      if (!this.dock || this.wantView !== id) return this.dock?.current ?? null;
+    }
+    return this.openViewNow(id);
+  }
+
+  /** Fetches the dock, its views and the analysis module, showing "loading…" in the dock. */
+  async loadDock() {
+    const root = document.getElementById('dock');
+    const body = root.querySelector('.body');
+    const note = document.createElement('p');
+    note.className = 'note loading';
+    note.setAttribute('role', 'status');
+    note.textContent = 'Loading the analysis views…';
+    body.append(note);
+    root.classList.add('open');
+    try {
+      const [{ Dock }, views, analysis] = await Promise.all([loadDockModule(), loadViewModules(), this.analysis()]);
+      this.dock = new Dock(this, views, analysis);
+    } catch (e) {
+      this.showError(`${e.message}. The editor works on without the analysis views.`);
+      this.view.dock = '';
+      this.wantView = '';
+      this.ui?.refresh();
+    } finally {
+      note.remove();
+      if (!this.dock) root.classList.remove('open');
+      this.loadingDock = null;
+    }
+  }
+
+  openViewNow(id) {
     let inst = null;
     const wasOpen = !!this.dock.active;
     try {
@@ -341,7 +417,7 @@ export class App {
     const info = this.scenes.find((s) => s.id === id);
     if (!info) return this.showError(`unknown preset ${id}`);
     const apply = () => {
-      const motion = wasm.Motion.fromScene(id);
+      const motion = this.wasm.Motion.fromScene(id);
       this.motion?.free();
       this.motion = motion;
       this.view.scene = id;

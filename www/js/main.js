@@ -14,12 +14,14 @@
 //   frames(): number                frames drawn so far; stats(): {updateMs, frameMs, renderMs} (CPU
 //                                   time) and frameIntervalMs (requestAnimationFrame to requestAnimationFrame
 //                                   between the last two drawn frames: what the user waits, GPU included)
-//   openView(id): instance          opens an analysis view of the dock ('' closes it)
+//   openView(id): Promise<instance> opens an analysis view of the dock ('' closes it); the first
+//                                   one fetches the dock, its views and the analysis module
 //   flushViews()                    runs the open view's pending update now
 //   app                             the App object itself (for benchmarks / debugging)
-//   lessons: Promise<player>        the lesson player once started (js/lessons/player.js documents it)
+//   lessons: Promise<player>        the lesson player once fetched and started, after the first
+//                                   frame (js/lessons/player.js documents it; null if it failed)
 import { App } from './app.js';
-import { startLessons } from './lessons/player.js';
+import { lazy } from './editor/modules.js';
 
 const app = new App();
 
@@ -31,10 +33,13 @@ const ready = app.start().catch((e) => {
   throw e;
 });
 ready.catch(() => {});
-// Lessons: the Lessons menu, ?lesson=…, the first-visit tour (a failure leaves the page as it is).
+// Lessons: the Lessons menu, ?lesson=…, the first-visit tour, fetched once the first frame is
+// drawn (a failure leaves the page as it is, with a message).
+const loadPlayer = lazy('the lessons', (a) => import(a ? `./lessons/player.js?retry=${a}` : './lessons/player.js'));
 const lessons = ready.then(
-  () => {
+  async () => {
     try {
+      const { startLessons } = await loadPlayer();
       return startLessons(app);
     } catch (e) {
       app.showError(`Lessons unavailable: ${e.message}`);
@@ -61,5 +66,5 @@ window.screwbender = {
   frames: () => app.frames,
   stats: () => ({ ...app.stats }),
   openView: (id) => app.openView(id),
-  flushViews: () => app.dock.flush(),
+  flushViews: () => app.dock?.flush(),
 };

@@ -1,8 +1,11 @@
 // The analysis dock: a tabbed panel of teaching and analysis views beside the 3-D view.
 //
 // A view module (www/js/views/*.js) default-exports a descriptor
-//   { id, title, hint, live, create(app, el) => instance }
-// where `el` is the view's own <section> (the view owns everything inside it) and the instance
+//   { id, title, hint, live, create(app, el, wasm) => instance }
+// where `el` is the view's own <section> (the view owns everything inside it), `wasm` the
+// analysis module (the initialised wasm-bindgen module with the teaching and comparison
+// functions; app.motion is the renderer module's Motion, whose extra methods run there too,
+// editor/modules.js) and the instance
 //   { update(reason), show(visible), dispose?() }
 // `update` is called (at most once per animation frame) after every change of the motion, its
 // options or the view settings (reason 'edit'), during drags (reason 'drag', only for views
@@ -18,7 +21,6 @@
 // the toolbar where the toolbar stands in that part (fitView: phones on their side), so the
 // scene is framed where it can be seen. Charts (views/plot.js) get their
 // playhead from playback, and hovering a chart shows that instant's pose (preview).
-import { VIEWS } from '../views/index.js';
 import { setPlayheadSource } from '../views/plot.js';
 
 /** The smallest free part of the window (CSS px) the 3-D view moves into beside the dock. */
@@ -44,15 +46,17 @@ function without(p, o) {
 }
 
 export class Dock {
-  constructor(app) {
+  /** `views`: the view descriptors in tab order (views/index.js loadViews); `wasm`: the analysis module. */
+  constructor(app, views, wasm) {
     this.app = app;
+    this.wasm = wasm;
     this.root = document.getElementById('dock');
     this.tabs = this.root.querySelector('.tabs');
     this.body = this.root.querySelector('.body');
     this.views = new Map();
     this.active = null;
     this.pending = null;
-    for (const d of VIEWS) {
+    for (const d of views) {
       const tab = document.createElement('button');
       tab.type = 'button';
       tab.textContent = d.title;
@@ -318,7 +322,7 @@ export class Dock {
     v.tab.classList.add('on');
     this.layoutTabs();
     if (was === null || was === undefined) this.fitView();
-    if (!v.instance) v.instance = v.d.create(this.app, v.el);
+    if (!v.instance) v.instance = v.d.create(this.app, v.el, this.wasm);
     v.instance.show(true);
     v.instance.update('show');
     this.app.requestDraw();

@@ -5,7 +5,6 @@
 // (Motion.exportFile, importMotionFile), so a file written here equals the CLI's. Every import
 // is one undoable edit, and a failed one changes nothing. The functions take the app; the
 // default export is the app's part (see app.js for the part contract).
-import { Motion, importMotionFile, importedMesh } from '../../pkg/screwbender.js';
 import { IMPORT_SIZE } from '../view/drawing.js';
 import { SLOT } from '../view/scene.js';
 import { SESSION_VERSION, MAX_SAVED_MESH } from './session.js';
@@ -101,7 +100,7 @@ export async function importFiles(app, fileList) {
   for (const f of files) if (f !== main) buffers[f.name] = new Uint8Array(await f.arrayBuffer());
   let doc;
   try {
-    doc = importMotionFile(main.name, bytes, buffers);
+    doc = app.wasm.importMotionFile(main.name, bytes, buffers);
   } catch (e) {
     // A glTF without animation may be a mesh for the object.
     if (kind !== 'csv' && /anim/i.test(e.message)) {
@@ -115,7 +114,7 @@ export async function importFiles(app, fileList) {
   let mesh = null;
   if (kind !== 'csv') {
     try {
-      if (importedMesh(main.name, bytes)) mesh = meshOf('gltf', bytes);
+      if (app.wasm.importedMesh(main.name, bytes)) mesh = meshOf('gltf', bytes);
     } catch {
       mesh = null; // an animation without a readable mesh: the current object stays
     }
@@ -128,7 +127,7 @@ export async function importFiles(app, fileList) {
       return false;
     }
     const radius = Math.max(1e-3, ...app.bodyPoints().map((p) => Math.hypot(...p)));
-    const choice = await askReduction(doc, main.name, radius);
+    const choice = await askReduction(doc, main.name, radius, app.wasm.reducePoses);
     if (!choice) {
       app.showError(`${main.name}: import cancelled, nothing was changed.`, 'info');
       return false;
@@ -196,11 +195,11 @@ function importJson(app, text, fileName = 'JSON') {
     }
     if (obj && obj.version === SESSION_VERSION && obj.document) {
       // Validated before the edit, so that a bad session is an import error, not an edit error.
-      new Motion(obj.document, obj.options).free();
+      new app.wasm.Motion(obj.document, obj.options).free();
       app.edit(() => app.applySession({ ...obj, camera: undefined }));
       return true;
     }
-    motion = Motion.fromJson(trimmed, app.motion.options());
+    motion = app.wasm.Motion.fromJson(trimmed, app.motion.options());
   } catch (e) {
     app.showError(`Import failed, nothing was changed: ${fileName}: ${e.message}`);
     return false;
@@ -215,7 +214,7 @@ function importJson(app, text, fileName = 'JSON') {
 function importDocument(app, doc, fileName, mesh = null) {
   let motion;
   try {
-    motion = new Motion(doc, app.motion.options());
+    motion = new app.wasm.Motion(doc, app.motion.options());
     // Validated before the edit: a mesh the renderer refuses is left out, not half applied.
     if (mesh) app.setImportedMesh(SLOT.anim, mesh);
   } catch (e) {

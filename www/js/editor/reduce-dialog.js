@@ -2,8 +2,7 @@
 // samples, say) asks whether to keep them all, every k-th, or the fewest within a tolerance
 // (the core's reducePoses, docs/math/formats.md §7). A real modal <dialog>: the rest of the page
 // is inert while it is open (focus stays inside), Esc or Cancel changes nothing.
-import { reducePoses } from '../../pkg/screwbender.js';
-import { el } from '../views/plot.js';
+import { el } from '../views/dom.js';
 
 /** More poses than this in one imported file open the dialog (the core's MANY_POSES). */
 export const MANY_POSES = 64;
@@ -13,8 +12,9 @@ export const MANY_POSES = 64;
  * `radius`: the object's size (scene units) the tolerance applies at. Resolves with
  * `{doc, how}` — the document to import and a sentence saying what was kept — or null when
  * cancelled. A reduction the core refuses shows its message in the dialog, which stays open.
+ * `reducePoses`: the wasm module's function of that name.
  */
-export function askReduction(doc, fileName, radius) {
+export function askReduction(doc, fileName, radius, reducePoses) {
   const n = doc.poses.length;
   const id = (s) => `reduce-${s}`;
   const radio = (value, checked) =>

@@ -4,7 +4,6 @@
 //
 // The pure helpers (History, hash coding, storage) come first; the part (default export, see
 // app.js for the part contract) applies sessions to the app and records its edits.
-import { Motion } from '../../pkg/screwbender.js';
 import { SLOT } from '../view/scene.js';
 
 export const STORAGE_KEY = 'screwbender.playground.v1';
@@ -168,7 +167,7 @@ export default {
     /** Replaces the whole state by a session; throws (leaving everything as it was) if invalid. */
     function applySession(s) {
       if (!s || typeof s !== 'object') throw new Error('not a session object');
-      const motion = new Motion(s.document, s.options); // validates everything
+      const motion = new app.wasm.Motion(s.document, s.options); // validates everything
       if (s.mesh) {
         app.setImportedMesh(SLOT.strobe, s.mesh); // validates the mesh
         app.imported = s.mesh;
@@ -178,7 +177,7 @@ export default {
       const v = s.view ?? {};
       for (const k of Object.keys(app.view)) {
         // Undo and imports do not switch the open analysis view (only the initial restore does).
-        if (k === 'dock' && app.dock) continue;
+        if (k === 'dock' && app.ready) continue;
         if (k in v && typeof v[k] === typeof app.view[k]) app.view[k] = v[k];
       }
       app.view.strobe = Math.max(1, Math.min(MAX_STROBE, Math.round(app.view.strobe)));

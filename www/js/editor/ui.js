@@ -1,6 +1,7 @@
 // The controls: lil-gui panel, toolbar, timeline, help overlay, paste dialog.
 import GUI from '../../vendor/lil-gui.esm.min.js';
 import { exportMotion, importFiles } from './files.js';
+import { VIEW_IDS } from '../views/index.js';
 import { presetName, presetSubtitle } from './presets.js';
 import { openShareDialog } from './share-dialog.js';
 
@@ -191,7 +192,7 @@ export function buildUi(app) {
   loop.addEventListener('change', () => (app.anim.loop = loop.checked));
 
   function firstView() {
-    return document.querySelector('#dock .tabs button')?.dataset.view ?? '';
+    return document.querySelector('#dock .tabs button')?.dataset.view ?? VIEW_IDS[0];
   }
 
   /** Shows or hides the help overlay; the focus goes to its close button and back. */

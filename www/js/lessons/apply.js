@@ -1,6 +1,5 @@
 // What a lesson step does to the app before it is shown: its scene or document, motion options,
 // display settings, timing, selection and dock view (fields: www/lessons/README.md).
-import * as wasm from '../../pkg/screwbender.js';
 
 /**
  * Applies step `s` to `app` and points the highlight at `s.highlight` through `setTarget`.
@@ -9,7 +8,7 @@ import * as wasm from '../../pkg/screwbender.js';
 export function applyStep(app, s, setTarget) {
   if (s.scene) app.loadPreset(s.scene);
   if (s.document) {
-    const motion = new wasm.Motion(s.document, app.motion.options());
+    const motion = new app.wasm.Motion(s.document, app.motion.options());
     app.edit(() => {
       app.motion.free();
       app.motion = motion;

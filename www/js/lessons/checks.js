@@ -112,6 +112,8 @@ export function evaluateCheck(check, motion, answer) {
       return { ok: inRange(jump, r), got: `the velocity jump at pose ${check.pose} is ${fmt(jump)}`, want: rangeText(r) };
     }
     case 'metric': {
+      // Present once the analysis module has loaded (the player fetches it with the lesson).
+      if (typeof motion.motionMetrics !== 'function') return { ok: false, got: 'the analysis functions are not loaded yet; check again in a moment', want: '' };
       const m = motion.motionMetrics(check.points);
       const v = check.field === 'fourPointGap' ? m.fourPointGap : m.row[check.field];
       if (typeof v !== 'number') return { ok: false, got: `${check.field} could not be measured (${m.row.notes.join('; ')})`, want: '' };

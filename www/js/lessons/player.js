@@ -15,8 +15,7 @@
 //   check(): {ok, results}       runs the step's checks as the Check button does
 //   progress(id)                 the saved progress of lesson `id`
 //   spot(): {x, y, w, h} | null  where the highlight ring is (page px)
-import * as wasm from '../../pkg/screwbender.js';
-import { VIEWS } from '../views/index.js';
+import { VIEW_IDS } from '../views/index.js';
 import { parseLesson } from './format.js';
 import { readProgress, writeProgress, markTourSeen, tourSeen } from './progress.js';
 import { lessonUrl } from './urls.js';
@@ -33,9 +32,9 @@ export function startLessons(app) {
   const panelNames = () => app.ui.gui.controllersRecursive().map((c) => c._name);
   const ctx = {
     scenes: app.scenes.map((s) => s.id),
-    views: VIEWS.map((v) => v.id),
+    views: VIEW_IDS,
     panel: panelNames(),
-    checkMotion: (doc) => new wasm.Motion(doc).free(),
+    checkMotion: (doc) => new app.wasm.Motion(doc).free(),
   };
 
   // The open lesson, its step, the step's chosen answer and hints shown, and its saved progress.
@@ -81,7 +80,15 @@ export function startLessons(app) {
       app.showError(`Lesson ${url.pathname.split('/').pop()}: could not load it (${e.message}). Nothing was changed.`);
       return false;
     }
-    return openText(text, url.pathname.split('/').pop(), { resume });
+    if (!openText(text, url.pathname.split('/').pop(), { resume })) return false;
+    // A `metric` check measures in the analysis module: fetched now, before the first Check.
+    if (measures(st.lesson)) await app.analysis().catch((e) => app.showError(`${e.message}: this lesson's checks cannot measure the motion.`));
+    return true;
+  }
+
+  /** True when a check of `lesson` needs the analysis module (Motion.motionMetrics). */
+  function measures(lesson) {
+    return lesson.steps.some((s) => s.exercise?.checks.some((c) => c.kind === 'metric'));
   }
 
   /** Opens a lesson from its text; `source` names it in messages. */
@@ -101,6 +108,7 @@ export function startLessons(app) {
     card.card.classList.toggle('tour', !!st.lesson.tour);
     card.lessonTitle.textContent = st.lesson.title;
     go(resume ? Math.min(st.progress.step, st.lesson.steps.length - 1) : 0);
+    if (measures(st.lesson)) app.analysis().catch(() => {});
     return true;
   }
 

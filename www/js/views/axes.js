@@ -2,10 +2,12 @@
 // its axis in 3-D with a colour gradient and arrow ticks pointing along the rotation direction
 // (right-hand rule), and listed with angle, slide, pitch and kind. Hovering a row highlights that
 // span's axis and labels it in the 3-D view.
-import { Motion, spanScrewsOf } from '../../pkg/screwbender.js';
 import { el as h } from './plot.js';
 import { LAYER, Segments, mix, poseOf } from '../view/scene.js';
 import { add, sub, scale, cross, normalize, length, hexLinear } from '../math.js';
+
+/** The wasm functions of this view, from the analysis module the dock hands to create(). */
+let Motion, spanScrewsOf;
 
 /** Levels offered by the selector (0 = the control polyscrew). */
 const MAX_LEVEL = 3;
@@ -29,7 +31,8 @@ export default {
   title: 'Screw axes',
   hint: 'The screw axis of every span: direction, angle, slide and pitch (hover a row or an axis to highlight it)',
   live: true,
-  create(app, el) {
+  create(app, el, wasm) {
+    ({ Motion, spanScrewsOf } = wasm);
     // Static markup: index.html's <template id="view-axes"> (no HTML from strings).
     el.append(document.getElementById('view-axes').content.cloneNode(true));
     const levelSel = el.querySelector('.level');

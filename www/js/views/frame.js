@@ -3,10 +3,12 @@
 // and subdivided twice — by screws, and decoupled (origins by the point rule, rotations by the
 // same rules on rotation-only poses; crates/screwbender/src/subdivision/decoupled.rs). The trajectories of the same body
 // points are drawn: the screw ones do not move when c changes, the decoupled ones do.
-import { compareFrames } from '../../pkg/screwbender.js';
 import { el as h } from './plot.js';
 import { LAYER, Segments, poseOf } from '../view/scene.js';
 import { add, sub, length, qrot, hexLinear } from '../math.js';
+
+/** The wasm functions of this view, from the analysis module the dock hands to create(). */
+let compareFrames;
 
 const C = {
   screw: hexLinear('#1f5fbf'),
@@ -23,7 +25,8 @@ export default {
   title: 'Frame',
   hint: 'Decoupled smoothing depends on the local frame, screw subdivision does not (paper Fig. 9 V1 / Fig. 8 V2)',
   live: true,
-  create(app, el) {
+  create(app, el, wasm) {
+    ({ compareFrames } = wasm);
     // Static markup: index.html's <template id="view-frame"> (no HTML from strings).
     el.append(document.getElementById('view-frame').content.cloneNode(true));
     const sliders = el.querySelector('.sliders');

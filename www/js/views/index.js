@@ -1,11 +1,26 @@
 // The analysis views of the dock, in tab order (see ../editor/dock.js for the view contract).
-import plots from './plots.js';
-import metrics from './metrics.js';
-import timing from './timing.js';
-import axes from './axes.js';
-import steps from './steps.js';
-import polygon from './polygon.js';
-import frame from './frame.js';
-import methods from './methods.js';
+// Their modules (with uPlot) are fetched with the dock, not with the page: VIEW_IDS names them
+// without fetching them (lesson files are checked against it).
+export const VIEW_IDS = ['plots', 'metrics', 'timing', 'axes', 'steps', 'polygon', 'frame', 'methods'];
 
-export const VIEWS = [plots, metrics, timing, axes, steps, polygon, frame, methods];
+/**
+ * Imports every view module; resolves to their descriptors in tab order. `attempt` > 0: a retry
+ * after a failed fetch, which the browser would repeat under the same URL (editor/modules.js).
+ */
+export async function loadViews(attempt = 0) {
+  const q = attempt ? `?retry=${attempt}` : '';
+  const modules = await Promise.all([
+    import(`./plots.js${q}`),
+    import(`./metrics.js${q}`),
+    import(`./timing.js${q}`),
+    import(`./axes.js${q}`),
+    import(`./steps.js${q}`),
+    import(`./polygon.js${q}`),
+    import(`./frame.js${q}`),
+    import(`./methods.js${q}`),
+  ]);
+  const views = modules.map((m) => m.default);
+  const ids = views.map((v) => v.id).join();
+  if (ids !== VIEW_IDS.join()) throw new Error(`views/index.js: VIEW_IDS (${VIEW_IDS}) and the modules (${ids}) differ`);
+  return views;
+}

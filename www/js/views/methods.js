@@ -2,10 +2,12 @@
 // (trajectories of the body points in distinct colours), their metrics side by side, and for
 // Ramamoorthi–Barr the variable frames and the Euler–Lagrange error before/after optimisation;
 // for Chaudhry–Cameron the triangle's vertices x/y/z against time, with end condition (18) or (19).
-import { methods as listMethods } from '../../pkg/screwbender.js';
 import { LAYER, Segments, track, poseOf } from '../view/scene.js';
 import { hexLinear, poseMatrix, add, scale } from '../math.js';
 import { lineChart, fmt, el } from './plot.js';
+
+/** The wasm functions of this view, from the analysis module the dock hands to create(). */
+let listMethods;
 
 /** Overlay colours of the three method slots. */
 const SLOT_COLORS = ['#0072b2', '#d55e00', '#009e73'];
@@ -387,5 +389,8 @@ export default {
   title: 'Methods',
   hint: 'Compare ScrewBender with Chaudhry–Cameron, Ramamoorthi–Barr and classical methods',
   live: true,
-  create: (app, root) => new MethodsView(app, root),
+  create: (app, root, wasm) => {
+    ({ methods: listMethods } = wasm);
+    return new MethodsView(app, root);
+  },
 };

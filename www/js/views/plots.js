@@ -3,8 +3,10 @@
 // schemes and the plain polyscrew side by side, with the control-pose times marked. On phones
 // one chart at a time, picked from a list, fills the dock (nothing to scroll); the body point,
 // the derivatives and the note show under an Options button.
-import { Motion } from '../../pkg/screwbender.js';
 import { lineChart, el, inkSwatch } from './plot.js';
+
+/** The wasm functions of this view, from the analysis module the dock hands to create(). */
+let Motion;
 
 /**
  * The paper's colours: B-spline red, 4-point blue, Jarek green; the polyscrew grey. Drawn through
@@ -241,5 +243,8 @@ export default {
   title: 'Plots',
   hint: 'Position, velocity and acceleration of a body point over time for each scheme (paper Fig. 8 / 7)',
   live: true,
-  create: (app, root) => new PlotsView(app, root),
+  create: (app, root, wasm) => {
+    ({ Motion } = wasm);
+    return new PlotsView(app, root);
+  },
 };

@@ -3,8 +3,10 @@
 // the core's point rules (subdividePolygon; the same generic code as the pose rules). The preset
 // polygons' vertices can be dragged; the control origins of the motion (projected to z = 0) are
 // shown read-only.
-import { polygonScenes, subdividePolygon, splitTweakStep } from '../../pkg/screwbender.js';
 import { el as h } from './plot.js';
+
+/** The wasm functions of this view, from the analysis module the dock hands to create(). */
+let polygonScenes, subdividePolygon, splitTweakStep;
 
 const SCHEMES = [
   { id: 'bspline', name: 'B-spline', color: '#d1202f' },
@@ -32,7 +34,8 @@ export default {
   title: 'Polygon',
   hint: 'Point subdivision of a planar polygon: B-spline, 4-point, Jarek (paper Figs. 2–3); drag the vertices',
   live: true,
-  create(app, el) {
+  create(app, el, wasm) {
+    ({ polygonScenes, subdividePolygon, splitTweakStep } = wasm);
     const presets = polygonScenes();
     // Static markup: index.html's <template id="view-polygon"> (no HTML from strings).
     el.append(document.getElementById('view-polygon').content.cloneNode(true));

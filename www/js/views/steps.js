@@ -2,9 +2,11 @@
 // a level, (a) the split — the screw midpoint of every span inserted — then (b) the tweak of each
 // pose, drawn as arrows from before to after (origins), with the object before the tweak (pale
 // ghosts) and after it. The core's splitTweakStep computes both (crates/screwbender/src/subdivision/split_tweak.rs).
-import { splitTweakStep } from '../../pkg/screwbender.js';
 import { LAYER, SLOT, Segments, instances, matricesOf, poseOf } from '../view/scene.js';
 import { add, sub, scale, cross, normalize, length, hexLinear } from '../math.js';
+
+/** The wasm functions of this view, from the analysis module the dock hands to create(). */
+let splitTweakStep;
 
 /** Scale of the before-tweak ghosts relative to the object. */
 const GHOST_SCALE = 0.97;
@@ -73,7 +75,8 @@ export default {
   hint: 'Step through the subdivision: split (screw midpoints), then tweak — keys [ and ] (or , and .)',
   // Live: one step costs a few hundred screws, and the view then follows pose drags too.
   live: true,
-  create(app, el) {
+  create(app, el, wasm) {
+    ({ splitTweakStep } = wasm);
     // Static markup: index.html's <template id="view-steps"> (no HTML from strings).
     el.append(document.getElementById('view-steps').content.cloneNode(true));
     const caption = el.querySelector('.caption');

@@ -3,8 +3,10 @@
 // only the speed along it) through p(T_i) = i and, where given, p'(T_i) = v_i. Times and
 // velocities live in the Motion (its document, the session, share links, undo); 3-D playback,
 // the timeline, the Plots view and glTF / CSV export all follow them.
-import { timingMap } from '../../pkg/screwbender.js';
 import { lineChart, el, fmt } from './plot.js';
+
+/** The wasm functions of this view, from the analysis module the dock hands to create(). */
+let timingMap;
 
 class TimingView {
   constructor(app, root) {
@@ -153,5 +155,8 @@ export default {
   title: 'Timing',
   hint: 'Per-key times and velocities: retime the motion by a C¹ monotone map (paper §1)',
   live: false,
-  create: (app, root) => new TimingView(app, root),
+  create: (app, root, wasm) => {
+    ({ timingMap } = wasm);
+    return new TimingView(app, root);
+  },
 };

@@ -1,0 +1,180 @@
+#!/usr/bin/env node
+// What a first visit to the playground downloads before its first frame, measured in headless
+// Chromium (playwright-core, the e2e tests' browser and flags): the page is served from DIR
+// (scripts/serve.mjs), opened in a fresh browser context (empty cache and storage: a first
+// visit), and every file it fetched until the first frame was drawn is counted at its gzip -9
+// size (what a server compressing its responses sends; the local server sends them raw).
+//
+//   node scripts/first-frame.mjs [--dir www] [--backend webgpu|webgl2] [--lesson NAME]
+//        [--runs N] [--json]                     one page: files, bytes, time to first frame
+//   node scripts/first-frame.mjs --compare OLD_DIR NEW_DIR [--runs N] [--lesson NAME]
+//                                                time to first frame of two builds, alternating
+//
+// "First frame": the first rAF after which window.screwbender.frames() is above 0, i.e. the
+// renderer drew the motion. With --lesson the page is ?lesson=NAME and the measure ends when the
+// lesson card is shown too (the frame and the card are what the visitor waits for). A file counts
+// when its response ended before that moment; files still in flight are listed apart.
+import { spawn } from 'node:child_process';
+import fs from 'node:fs';
+import net from 'node:net';
+import path from 'node:path';
+import zlib from 'node:zlib';
+import { fileURLToPath } from 'node:url';
+import { launch } from '../tests/e2e/lib.mjs';
+
+const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
+
+function args() {
+  const a = process.argv.slice(2);
+  const o = { dir: 'www', backend: 'webgpu', lesson: null, runs: 1, json: false, compare: null };
+  for (let i = 0; i < a.length; i++) {
+    const k = a[i];
+    if (k === '--dir') o.dir = a[++i];
+    else if (k === '--backend') o.backend = a[++i];
+    else if (k === '--lesson') o.lesson = a[++i];
+    else if (k === '--runs') o.runs = Number(a[++i]);
+    else if (k === '--json') o.json = true;
+    else if (k === '--compare') o.compare = [a[++i], a[++i]];
+    else throw new Error(`unknown argument ${k}`);
+  }
+  if (!['webgpu', 'webgl2'].includes(o.backend)) throw new Error(`--backend: webgpu or webgl2, not ${o.backend}`);
+  if (!(Number.isInteger(o.runs) && o.runs >= 1)) throw new Error('--runs: a positive integer');
+  return o;
+}
+
+async function freePort() {
+  return new Promise((resolve) => {
+    const s = net.createServer();
+    s.listen(0, '127.0.0.1', () => {
+      const { port } = s.address();
+      s.close(() => resolve(port));
+    });
+  });
+}
+
+async function serve(dir) {
+  const port = await freePort();
+  const server = spawn(process.execPath, [path.join(ROOT, 'scripts/serve.mjs'), dir], {
+    env: { ...process.env, PORT: String(port), SERVE_QUIET: '1' },
+    stdio: ['ignore', 'pipe', 'inherit'],
+  });
+  await new Promise((resolve, reject) => {
+    server.stdout.on('data', (d) => d.toString().includes('http://') && resolve());
+    server.on('exit', (c) => reject(new Error(`server exited ${c}`)));
+  });
+  return { url: `http://127.0.0.1:${port}/`, stop: () => server.kill() };
+}
+
+const gzipCache = new Map();
+/** gzip -9 size of the file that `url` names under `dir`. */
+function gzipSize(dir, url) {
+  let p = decodeURIComponent(new URL(url).pathname);
+  if (p.endsWith('/')) p += 'index.html';
+  const file = path.join(dir, p);
+  if (!gzipCache.has(file)) {
+    const bytes = fs.readFileSync(file);
+    gzipCache.set(file, { raw: bytes.length, gzip: zlib.gzipSync(bytes, { level: 9 }).length });
+  }
+  return gzipCache.get(file);
+}
+
+/** One first visit: {ms, files: [{path, raw, gzip}], late: [paths], total}. */
+async function visit(browser, url, dir, { backend, lesson }) {
+  const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  // Marks the first frame (and with a lesson, the card) on the page's own clock.
+  await page.addInitScript((wantCard) => {
+    const poll = () => {
+      const sb = window.screwbender;
+      const card = document.getElementById('lesson');
+      const cardShown = !wantCard || (document.body?.classList.contains('lesson-open') && card && !card.hidden);
+      if (sb && sb.frames() > 0 && cardShown) window.__firstFrame = performance.now();
+      else requestAnimationFrame(poll);
+    };
+    requestAnimationFrame(poll);
+  }, !!lesson);
+  const q = new URLSearchParams();
+  if (backend === 'webgl2') q.set('backend', 'webgl2');
+  if (lesson) q.set('lesson', lesson);
+  const qs = q.toString();
+  await page.goto(`${url}${qs ? `?${qs}` : ''}`);
+  await page.waitForFunction(() => window.__firstFrame !== undefined, null, { timeout: 60000 });
+  const { at, entries } = await page.evaluate(() => ({
+    at: window.__firstFrame,
+    entries: performance.getEntriesByType('resource').map((e) => ({ name: e.name, end: e.responseEnd })),
+  }));
+  await context.close();
+  if (errors.length) throw new Error(`page errors: ${errors.join('; ')}`);
+  const origin = new URL(url).origin;
+  const files = [{ path: '/', ...gzipSize(dir, url) }];
+  const late = [];
+  for (const e of entries) {
+    if (!e.name.startsWith(origin)) continue;
+    const p = new URL(e.name).pathname;
+    if (e.end > 0 && e.end <= at) files.push({ path: p, ...gzipSize(dir, e.name) });
+    else late.push(p);
+  }
+  const total = files.reduce((s, f) => s + f.gzip, 0);
+  return { ms: at, files, late, total };
+}
+
+const median = (xs) => {
+  const s = [...xs].sort((a, b) => a - b);
+  const n = s.length;
+  return n % 2 ? s[(n - 1) / 2] : (s[n / 2 - 1] + s[n / 2]) / 2;
+};
+const stats = (xs) => ({ median: median(xs), min: Math.min(...xs), max: Math.max(...xs) });
+
+async function main() {
+  const o = args();
+  const browser = await launch(o.backend);
+  try {
+    if (o.compare) {
+      const dirs = o.compare.map((d) => path.resolve(d));
+      const servers = await Promise.all(dirs.map(serve));
+      const times = dirs.map(() => []);
+      const bytes = dirs.map(() => 0);
+      try {
+        for (let r = 0; r < o.runs; r++) {
+          // Alternating (old, new, new, old, …) so that a drift of the machine's load hits both.
+          const order = r % 2 ? [1, 0] : [0, 1];
+          for (const k of order) {
+            const v = await visit(browser, servers[k].url, dirs[k], o);
+            times[k].push(v.ms);
+            bytes[k] = v.total;
+          }
+        }
+      } finally {
+        for (const s of servers) s.stop();
+      }
+      const out = dirs.map((d, k) => ({ dir: d, gzipBytes: bytes[k], firstFrameMs: stats(times[k]), runs: times[k].map((t) => Math.round(t)) }));
+      console.log(JSON.stringify({ backend: o.backend, lesson: o.lesson, out }, null, 2));
+      return;
+    }
+    const dir = path.resolve(o.dir);
+    const server = await serve(dir);
+    const runs = [];
+    try {
+      for (let r = 0; r < o.runs; r++) runs.push(await visit(browser, server.url, dir, o));
+    } finally {
+      server.stop();
+    }
+    const last = runs[runs.length - 1];
+    const result = { backend: o.backend, lesson: o.lesson, gzipBytes: last.total, files: last.files, late: last.late, firstFrameMs: stats(runs.map((v) => v.ms)) };
+    if (o.json) console.log(JSON.stringify(result));
+    else {
+      for (const f of [...last.files].sort((a, b) => b.gzip - a.gzip)) console.log(`${String(f.gzip).padStart(8)} ${String(f.raw).padStart(9)}  ${f.path}`);
+      if (last.late.length) console.log(`after the first frame: ${last.late.join(', ')}`);
+      console.log(`${last.total} bytes gzip in ${last.files.length} files; first frame after ${Math.round(result.firstFrameMs.median)} ms (median of ${o.runs})`);
+    }
+  } finally {
+    await browser.close();
+  }
+}
+
+main().catch((e) => {
+  console.error(e.message);
+  process.exit(1);
+});

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Stage: the playground's first visit on a budget (scripts/first-frame-size.sh: what headless
+# Chromium downloads before the first frame, gzip -9 per file; a plain visit on WebGPU ≤ 500 KB,
+# a lesson link ≤ 600 KB). Builds www/ first as scripts/serve.sh does (its wasm modules are the
+# npm package's, so after the npm stage this only copies them; stage 40 then reuses them too).
+#
+#   SKIP_E2E_BUILD=1 scripts/test.d/22-first-frame.sh   # measure www/ as built
+set -euo pipefail
+# shellcheck source=scripts/lib.sh
+source "$(dirname "${BASH_SOURCE[0]}")/../lib.sh"
+cd "$REPO_ROOT"
+
+if [[ ${SKIP_E2E_BUILD:-0} != 1 ]]; then
+  BUILD_ONLY=1 SKIP_SETUP=1 ./scripts/serve.sh
+fi
+timed "first-frame sizes" ./scripts/first-frame-size.sh www

@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# Builds the web crate with FEATURES into one browser module in OUT_DIR: cargo build --profile
+# wasm-release for wasm32, wasm-bindgen --target web (screwbender.js, screwbender_bg.wasm, the
+# .d.ts; the glue minified), no name or producers section, wasm-opt at level OPT (-Oz, -Os).
+#
+#   scripts/wasm-module.sh FEATURES OUT_DIR OPT
+#
+# Used by scripts/build-pkg.sh (the npm package's modules) and scripts/serve.sh (the
+# playground's, the same ones): the wasm-bindgen and wasm-opt output (1-3 min for a renderer
+# module) is kept in the cargo target dir under wasm-modules/<hash of the cargo output, the
+# features, OPT and this script>, so the second of the two builds, or a rebuild of an unchanged
+# module, only copies it. Needs the wasm32 target, wasm-bindgen-cli matching Cargo.lock and the
+# root node_modules (wasm-opt from npm's binaryen: Debian's wasm-opt 108 breaks externref modules).
+set -euo pipefail
+# shellcheck source=scripts/lib.sh
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
+cd "$REPO_ROOT"
+
+(($# == 3)) || die "usage: scripts/wasm-module.sh FEATURES OUT_DIR OPT"
+features=$1 out=$2 opt=$3
+WASM_OPT=$REPO_ROOT/node_modules/.bin/wasm-opt
+[[ -x $WASM_OPT ]] || die "$WASM_OPT missing: run npm ci at the repo root (scripts/setup.sh)"
+want=$(locked_wasm_bindgen_version)
+have=$(wasm-bindgen --version 2>/dev/null | awk '{print $2}') || true
+[[ $have == "$want" ]] || die "wasm-bindgen $want needed (Cargo.lock), found '${have:-none}': run scripts/setup.sh"
+
+# Honour CARGO_TARGET_DIR / build.target-dir: ask cargo where the artifacts are.
+target_dir=$(cargo metadata --format-version 1 --no-deps | grep -o '"target_directory":"[^"]*"' | cut -d'"' -f4)
+
+# Panic locations name each source file by its path, and those of the dependencies lie under
+# cargo's registry in $CARGO_HOME: a module built in another home directory would differ, in
+# content and in size (which is budgeted). Mapped to machine-independent names (`serde_json-1.0.x/
+# src/…`, as the workspace's own are relative); in the wasm-release profile only, which nothing
+# but the module builds use, so the dependencies are not rebuilt back and forth. (The standard
+# library's `/rustc/<commit>/…` paths come precompiled and are not remapped.)
+remap=()
+for registry in "${CARGO_HOME:-$HOME/.cargo}"/registry/src/*/; do
+  [[ -d $registry ]] && remap+=("\"--remap-path-prefix=$registry=\"")
+done
+
+header "$(basename "$out"): cargo build (wasm32, wasm-release${features:+, features $features})"
+feature_args=()
+[[ -n $features ]] && feature_args=(--features "$features")
+timed "cargo build" cargo build -p screwbender-web --lib --profile wasm-release --target "$WASM_TARGET" \
+  --config "target.$WASM_TARGET.rustflags=[$(IFS=,; echo "${remap[*]}")]" "${feature_args[@]}"
+input=$target_dir/$WASM_TARGET/wasm-release/screwbender_web.wasm
+
+# The features rustc enables by default for wasm32 (wasm-opt must accept what the modules use).
+WASM_OPT_FEATURES=(--enable-bulk-memory --enable-reference-types --enable-nontrapping-float-to-int
+  --enable-sign-ext --enable-mutable-globals --enable-multivalue --enable-simd)
+
+stamp=$( (cat "$input" "${BASH_SOURCE[0]}" Cargo.lock; echo "$features $opt $have") | sha256sum | cut -d' ' -f1)
+cache=$target_dir/wasm-modules/$stamp
+if [[ ! -f $cache/screwbender_bg.wasm ]]; then
+  tmp=$cache.tmp.$$
+  rm -rf "$tmp"
+  mkdir -p "$tmp"
+  timed "wasm-bindgen" wasm-bindgen --target web --remove-name-section --remove-producers-section \
+    --out-dir "$tmp" --out-name screwbender "$input"
+  # --low-memory-unused lets wasm-opt fold `pointer + constant` into the loads' and stores'
+  # offset fields: the two differ only where the 32-bit sum wraps around into the lowest
+  # kilobyte, which Rust code never reaches (pointer arithmetic does not wrap; the stack lies
+  # below 1 MB and the data above it).
+  timed "wasm-opt $opt" "$WASM_OPT" "$opt" --low-memory-unused --strip-debug --strip-producers "${WASM_OPT_FEATURES[@]}" \
+    "$tmp/screwbender_bg.wasm" -o "$tmp/screwbender_bg.opt.wasm"
+  mv "$tmp/screwbender_bg.opt.wasm" "$tmp/screwbender_bg.wasm"
+  rm -f "$tmp/package.json" "$tmp/.gitignore"
+  # The glue minified (esbuild, as the viewer's sources: an ES module still, exports, import
+  # names and import.meta.url kept): every page that shows a figure downloads it, and most of
+  # it is the renderer's web-sys shims. About half its gzip size.
+  "$REPO_ROOT/node_modules/.bin/esbuild" "$tmp/screwbender.js" --minify --format=esm --log-level=warning \
+    --outfile="$tmp/screwbender.min.js"
+  mv "$tmp/screwbender.min.js" "$tmp/screwbender.js"
+  rm -rf "$cache"
+  mv "$tmp" "$cache"
+else
+  log "$(basename "$out"): unchanged since the last build (wasm-modules/${stamp:0:12}): copied"
+fi
+rm -rf "$out"
+mkdir -p "$out"
+cp "$cache"/* "$out/"
+log "$(basename "$out"): $(wc -c <"$out/screwbender_bg.wasm") bytes wasm, $(gzip -9c "$out/screwbender_bg.wasm" | wc -c) bytes gzip"
