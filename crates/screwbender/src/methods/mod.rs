@@ -46,6 +46,7 @@
 
 mod algebra;
 mod barr;
+mod convergence;
 mod decoupled;
 mod gauss;
 mod kim_kim_shin;
@@ -96,6 +97,7 @@ pub use rb_optimizer::{
 };
 
 // Metrics.
+pub use convergence::{converged_metrics, Converged, ConvergedMetrics, Limit, CONVERGENCE_LEVELS};
 pub use metrics::{
     compare_applicable, compare_methods, evaluate, finite_difference, frame_dependence,
     kinematics_at, motion_metrics, preservation_errors, preservation_inputs, sampled_difference,
