@@ -2,6 +2,7 @@
 // gizmo handle, followed every frame while the step shows it, and the placement of the lesson
 // card so that it does not cover what the ring points at.
 import { el } from './dom.js';
+import { foldPanelOnSmallScreens } from '../editor/fold.js';
 
 /**
  * Creates the highlight ring (#lesson-spot) of the lesson `card` of `app`. Returns
@@ -17,12 +18,20 @@ export function createHighlight(app, card) {
   let target = null;
   let raf = 0;
 
+  /** Whether a step's highlight opened the panel (a later step folds it again on phones). */
+  let openedPanel = false;
+
   function set(h) {
     target = h;
     if (h?.panel) {
       const c = app.ui.gui.controllersRecursive().find((k) => k._name === h.panel);
+      if (app.ui.gui._closed) openedPanel = true;
       app.ui.gui.open();
       c?.parent.open();
+    } else if (openedPanel) {
+      // Phones: the panel the last step pointed into would cover the 3-D view of this one.
+      openedPanel = false;
+      foldPanelOnSmallScreens(app);
     }
     cancelAnimationFrame(raf);
     // Placed now (layout is current) and then every frame while it lasts.
@@ -116,22 +125,42 @@ export function createHighlight(app, card) {
     const width = phone ? iw - 16 : Math.min(400, iw - 16);
     card.style.width = `${width}px`;
     card.style.maxHeight = 'none';
+    card.classList.remove('compact');
     const natural = card.scrollHeight;
     const { hard, soft } = obstacles(r);
     const grow = (q, m) => ({ x: q.x - m, y: q.y - m, w: q.w + 2 * m, h: q.h + 2 * m });
     const hardGrown = hard.map((q) => grow(q, 8));
-    const minH = Math.min(natural, Math.max(150, card.querySelector('.nav')?.offsetHeight * 3 || 150));
+    // At the least: head, step title and buttons, and two lines of the text to scroll.
+    const scroller = card.querySelector('.scroll');
+    const fixed = scroller ? natural - scroller.scrollHeight : 100;
+    // Where even that does not fit (a phone with the dock open and a highlight under it), the
+    // card goes compact: the step dots and title fold away, the head and buttons stay.
+    const outer = (e) => (e ? e.offsetHeight + parseFloat(getComputedStyle(e).marginTop) + parseFloat(getComputedStyle(e).marginBottom) : 0);
+    const compactH = fixed - outer(card.querySelector('.bar')) - outer(card.querySelector('h3')) + 44;
+    const roomy = Math.min(natural, fixed + 44);
+    const minH = Math.min(natural, compactH);
     let best = null;
     const heights = [];
     for (let h = Math.min(natural, ih - 16); h >= minH; h -= 24) heights.push(h);
+    if (heights.at(-1) !== minH && minH <= ih - 16) heights.push(minH);
     if (!heights.length) heights.push(Math.min(natural, ih - 16));
+    // Candidates: a grid, the window's edges and flush against each hard obstacle.
     const xs = [];
     if (phone) xs.push(8);
-    else for (let x = iw - 8 - width; x >= 8; x -= 24) xs.push(x);
-    if (!xs.length) xs.push(8);
+    else {
+      for (let x = iw - 8 - width; x >= 8; x -= 24) xs.push(x);
+      xs.push(8);
+      for (const q of hardGrown) xs.push(q.x - width, q.x + q.w);
+    }
+    const inX = [...new Set(xs.map(Math.round))].filter((x) => x >= 8 && x <= iw - 8 - width);
+    if (!inX.length) inX.push(8);
     for (const h of heights) {
-      for (let y = ih - 8 - h; y >= 8; y -= 12) {
-        for (const x of xs) {
+      const ys = [8];
+      for (let y = ih - 8 - h; y >= 8; y -= 12) ys.push(y);
+      for (const q of hardGrown) ys.push(q.y - h, q.y + q.h);
+      const inY = [...new Set(ys.map(Math.round))].filter((y) => y >= 8 && y <= ih - 8 - h);
+      for (const y of inY) {
+        for (const x of inX) {
           const box = { x, y, w: width, h };
           let bad = 0;
           for (const q of hardGrown) bad += overlap(box, q);
@@ -143,7 +172,10 @@ export function createHighlight(app, card) {
         }
       }
       if (best && best.bad === 0 && best.score + 40 * best.h < 0.02 * width * best.h) break;
+      // The compact heights only when no roomy one is clear of what it must not cover.
+      if (best && best.bad === 0 && h <= roomy) break;
     }
+    card.classList.toggle('compact', best.h < roomy);
     card.style.left = `${best.x}px`;
     card.style.top = `${best.y}px`;
     card.style.maxHeight = `${best.h}px`;
