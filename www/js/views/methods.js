@@ -71,9 +71,9 @@ export function convergedCell(c) {
     case 'zero':
       return { text: '0', title: `tends to 0 as the step shrinks (${est})` };
     case 'impulse':
-      return { text: `∞ — impulse at knots (${fmt(c.value)})`, title: `the velocity jumps by ${fmt(c.value)} at a knot, so the acceleration there is an impulse: no finite jump or integral` };
+      return { text: '∞ (impulse)', title: `impulse at the knots: the velocity jumps by ${fmt(c.value)} there, so the acceleration is an impulse, with no finite jump or integral` };
     case 'diverges':
-      return { text: '∞ — grows as the step shrinks', title: `no such derivative (${est})` };
+      return { text: '∞ (diverges)', title: `grows as the step shrinks: no such derivative (${est})` };
     default: {
       const digits = c.error > 0 && c.value > 0 ? Math.max(1, Math.min(4, Math.floor(Math.log10(c.value / (2 * c.error))) + 1)) : 4;
       return { text: fmt(c.value, digits), title: `${est}; extrapolated ${fmt(c.value, 6)} ± ${fmt(c.error, 2)}` };
@@ -91,7 +91,7 @@ class MethodsView {
       el('p', { class: 'note' },
         'Overlay up to three methods on the same control poses: their body-point paths are drawn in the colours below. ',
         'Every method is measured the same way: its poses sampled at steps of ½⁷, ½⁸ and ½⁹ of a span (ScrewBender refined to match), the same differences taken, ',
-        'and the three estimates extrapolated to a vanishing step. A motion whose velocity jumps has an impulse of acceleration at the knots (∞). ',
+        'and the three estimates extrapolated to a vanishing step. A motion whose velocity jumps has an impulse of acceleration at the knots: ∞ (impulse). ',
         '↓ marks the rows where lower is better for any method; units: scene units, radians and spans of the motion parameter (one per control pose).'),
     );
     this.pickers = el('div', { class: 'row' });
