@@ -551,6 +551,7 @@ test('PNG leaves out the gizmo and the selection by default, keeps the pose numb
   await openMenu();
   await page.check('#m-png-selection');
   const withGizmo = await png();
+  await openMenu();
   await page.uncheck('#m-png-selection');
   const same = await pngDiff(none, selected);
   const gizmo = await pngDiff(none, withGizmo);
