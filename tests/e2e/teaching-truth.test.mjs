@@ -333,3 +333,52 @@ test(`${BACKEND}: every toolbar state (off, on, hover on either, disabled) reads
   await page.screenshot({ path: shotPath('truth-toolbar.png'), clip: { x: 0, y: 120, width: 120, height: 600 } });
   assert.deepEqual(problems, []);
 });
+
+test(`${BACKEND}: the Top view frames the poses below the header, above the timeline and clear of the panel`, async () => {
+  for (const [w, h] of SIZES) {
+    await page.setViewportSize({ width: w, height: h });
+    await sb(() => {
+      const { app } = window.screwbender;
+      app.loadPreset('l_cycle_rotated');
+      app.select(-1);
+      app.ui.gui.open();
+    });
+    if (w < 760 || h < 500) await sb(() => window.screwbender.app.ui.gui.close());
+    await page.focus('#view');
+    await page.keyboard.press('Shift+T');
+    await waitFrames(page, 2);
+    const g = await sb(async () => {
+      const { app } = window.screwbender;
+      const { toPage } = await import('./js/view/picking.js');
+      // The body points' trajectories (what the view draws of the motion), 120 samples each.
+      const traj = [];
+      for (const b of app.bodyPoints()) {
+        const d = app.motion.timedKinematics(120, b);
+        for (let k = 0; k < 120; k++) traj.push(toPage(app.viewer, [d[16 * k + 1], d[16 * k + 2], d[16 * k + 3]]));
+      }
+      const rect = (id) => {
+        const e = document.getElementById(id);
+        if (!e || e.hidden) return null;
+        const r = e.getBoundingClientRect();
+        return r.width > 0 ? { left: r.left, top: r.top, right: r.right, bottom: r.bottom } : null;
+      };
+      return {
+        pts: [...Array.from({ length: app.motion.poseCount }, (_, k) => app.screenOfPose(k)), ...traj],
+        title: rect('title'),
+        hint: rect('hint'),
+        timeline: rect('timeline'),
+        panel: rect('panel'),
+        toolbar: rect('toolbar'),
+      };
+    });
+    for (const [k, p] of g.pts.entries()) {
+      const inside = (r) => r && p.x >= r.left && p.x <= r.right && p.y >= r.top && p.y <= r.bottom;
+      const what = k < 6 ? `pose ${k}` : `trajectory sample ${k - 6}`;
+      for (const id of ['title', 'hint', 'timeline', 'panel', 'toolbar']) assert.ok(!inside(g[id]), `${w}x${h}: ${what} at (${p.x.toFixed(0)}, ${p.y.toFixed(0)}) is under #${id}`);
+      assert.ok(p.y > 0 && p.y < h && p.x > 0 && p.x < w, `${w}x${h}: ${what} on screen`);
+    }
+    await page.screenshot({ path: shotPath(`truth-top-${w}x${h}.png`) });
+  }
+  await page.setViewportSize({ width: 1280, height: 800 });
+  assert.deepEqual(problems, []);
+});

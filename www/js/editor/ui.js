@@ -175,7 +175,7 @@ export function buildUi(app) {
   tool('t-delete', () => app.deleteSelected());
   tool('t-undo', () => app.undo());
   tool('t-redo', () => app.redo());
-  tool('t-frame', () => app.frameAll());
+  tool('t-frame', () => app.parts.viewpoint.frame());
   tool('t-help', () => toggleHelp());
   tool('t-snap', () => app.setView('snap', !app.view.snap));
   $('help').querySelector('.help-close').onclick = () => toggleHelp(false);
