@@ -21,7 +21,10 @@ fn same(a: &MotionDocument, b: &MotionDocument) {
     assert_eq!(a.poses.len(), b.poses.len());
     for (p, q) in a.poses.iter().zip(&b.poses) {
         assert!(p.origin.distance(q.origin) <= 1e-12, "{p:?} vs {q:?}");
-        assert!(p.rotation.angle_between(q.rotation) <= 1e-7, "{p:?} vs {q:?}");
+        assert!(
+            p.rotation.angle_between(q.rotation) <= 1e-7,
+            "{p:?} vs {q:?}"
+        );
     }
     assert_eq!(a.times, b.times);
     assert_eq!(a.velocities, b.velocities);
@@ -54,8 +57,10 @@ fn a_cycle_repeats_pose_0_at_its_end_time_and_reads_back_closed() {
 
 #[test]
 fn a_bad_time_names_its_line_and_column() {
-    let e = parse_csv_poses("x,y,z,qw,qx,qy,qz,time\n0,0,0,1,0,0,0,0\n1,0,0,1,0,0,0,abc\n").unwrap_err();
+    let e = parse_csv_poses("x,y,z,qw,qx,qy,qz,time\n0,0,0,1,0,0,0,0\n1,0,0,1,0,0,0,abc\n")
+        .unwrap_err();
     assert!(e.to_string().contains("line 3, column time"), "{e}");
-    let e = parse_csv_poses("x,y,z,qw,qx,qy,qz,time\n0,0,0,1,0,0,0,0\n1,0,0,1,0,0,0,\n").unwrap_err();
+    let e =
+        parse_csv_poses("x,y,z,qw,qx,qy,qz,time\n0,0,0,1,0,0,0,0\n1,0,0,1,0,0,0,\n").unwrap_err();
     assert!(e.to_string().contains("line 3, column time"), "{e}");
 }
