@@ -196,31 +196,52 @@ test(`${BACKEND}: plots have units on the y axes and at least 3 labelled ticks o
   assert.deepEqual(problems, []);
 });
 
-test(`${BACKEND}: |α| of screw spans (zero up to rounding) reads as 0 on a 0..1 axis; real values get their own axis`, async () => {
+test(`${BACKEND}: by default |α| is the limit motion's, non-zero where |ω| changes; the refined polyscrew's reads as 0 between its knots`, async () => {
   await page.setViewportSize({ width: 1280, height: 800 });
   await openPlots();
   const alpha = () =>
     sb(() => {
-      const c = window.screwbender.app.dock.current.charts.find((k) => k.id === 'alpha');
+      const v = window.screwbender.app.dock.current;
+      const c = v.charts.find((k) => k.id === 'alpha');
+      const w = v.charts.find((k) => k.id === 'omega');
       const ys = c.plot.data.slice(1).flat();
-      return { flat: c.flat, title: c.plot.root.querySelector('.u-title').textContent, ticks: c.ticks().y, max: Math.max(...ys.map(Math.abs)), yMax: c.plot.scales.y.max };
+      // The 4-point series (index of SCHEME_SERIES): |ω| and |α| sample by sample.
+      const k4 = 1 + 2;
+      return {
+        flat: c.flat, title: c.plot.root.querySelector('.u-title').textContent, ticks: c.ticks().y, max: Math.max(...ys.map(Math.abs)), yMax: c.plot.scales.y.max,
+        derivatives: v.derivatives, omega: Array.from(w.plot.data[k4]), alpha: Array.from(c.plot.data[k4]), t: Array.from(c.plot.data[0]),
+      };
     });
-  // Uniform timing, analytic derivatives: each refined span is a screw, ω is constant on it.
-  const flat = await alpha();
-  assert.ok(flat.max > 0 && flat.max < 1e-9, `|α| of screw spans should be rounding noise, max ${flat.max}`);
-  assert.equal(flat.flat, true);
-  assert.match(flat.title, /= 0 \(to rounding\)$/);
-  assert.equal(flat.yMax, 1);
-  assert.ok(flat.ticks.every((l) => !/e-/.test(l)), `no noise-sized ticks: ${flat.ticks}`);
-  // The limit motion's derivatives (differences of refined poses) are real: their own axis.
-  await page.locator('#dock .view-plots select[aria-label=derivatives]').selectOption('limit');
-  await sb(() => window.screwbender.flushViews());
+  // Default: the limit motion (differences of refined poses), as the paper plots it.
   const real = await alpha();
+  assert.equal(real.derivatives, 'limit');
   assert.ok(real.max > 1e-3, `limit |α| ${real.max}`);
   assert.equal(real.flat, false);
   assert.doesNotMatch(real.title, /= 0/);
   assert.ok(real.yMax >= real.max && real.yMax < 2 * real.max, `y axis ${real.yMax} for data up to ${real.max}`);
+  // Wherever |ω| changes noticeably over a window of 20 samples (a quarter second), |α| is not
+  // 0 there: |α| ≥ |d|ω|/dt| for a rigid body (the samples' differences are coarser than that).
+  let checked = 0;
+  for (let k = 0; k + 20 < real.omega.length; k += 10) {
+    const rate = Math.abs(real.omega[k + 20] - real.omega[k]) / (real.t[k + 20] - real.t[k]);
+    if (rate > 0.2) {
+      checked++;
+      const peak = Math.max(...real.alpha.slice(k, k + 21));
+      assert.ok(peak >= 0.5 * rate, `t = ${real.t[k]}..${real.t[k + 20]}: |ω| changes at ${rate} rad/s² but |α| ≤ ${peak}`);
+    }
+  }
+  assert.ok(checked >= 5, `|ω| changes in ${checked} windows`);
+  // The refined polyscrew: each refined span is a screw, ω is constant on it; the title says
+  // that its impulses at the knots are not drawn.
   await page.locator('#dock .view-plots select[aria-label=derivatives]').selectOption('analytic');
+  await sb(() => window.screwbender.flushViews());
+  const flat = await alpha();
+  assert.ok(flat.max > 0 && flat.max < 1e-9, `|α| of screw spans should be rounding noise, max ${flat.max}`);
+  assert.equal(flat.flat, true);
+  assert.match(flat.title, /= 0 between refined knots \(impulses at the knots not drawn\)$/);
+  assert.equal(flat.yMax, 1);
+  assert.ok(flat.ticks.every((l) => !/e-/.test(l)), `no noise-sized ticks: ${flat.ticks}`);
+  await page.locator('#dock .view-plots select[aria-label=derivatives]').selectOption('limit');
   assert.deepEqual(problems, []);
 });
 
@@ -478,7 +499,14 @@ test(`${BACKEND}: Metrics and Methods speak in human names, with units and "lowe
   await sb(() => window.screwbender.openView('methods'));
   await sb(() => window.screwbender.flushViews());
   const cols = await page.locator('#dock section[data-view=methods] table.metrics tr').first().locator('th').allTextContents();
-  assert.deepEqual(cols, ['metric (↓ lower is better)', 'unit', 'Chaudhry–Cameron C⁰', 'Chaudhry–Cameron C¹', '4-point (ScrewBender)']);
+  assert.deepEqual(cols, ['metric', '', 'unit', 'Chaudhry–Cameron C⁰', 'Chaudhry–Cameron C¹', '4-point (ScrewBender)']);
+  // "Lower is better" only where it holds for any method: not for the integrals.
+  const better = await page.locator('#dock section[data-view=methods] table.metrics tr').evaluateAll((rows) => Object.fromEntries(rows.slice(1).map((r) => [r.cells[0].textContent, r.cells[1].textContent])));
+  assert.equal(better['velocity jump'], '↓');
+  assert.equal(better['∫|α|²'], '');
+  assert.equal(better['interpolation error'], '');
+  // No command-line tool cited in the page.
+  assert.doesNotMatch(await page.locator('#dock section[data-view=methods]').textContent(), /screwbender compare/);
   const status = await page.locator('#dock section[data-view=methods] .note').nth(1).textContent();
   assert.doesNotMatch(status, /\bcc0:|\bfourpoint:/);
   assert.deepEqual(problems, []);

@@ -101,9 +101,43 @@ test(`${BACKEND}: Export glTF (.gltf + .bin) downloads both; dropping them toget
   assertPosesClose(await poses(), before, 1e-6);
 });
 
-test(`${BACKEND}: Export CSV gives sampled poses; a dropped pose CSV sets the control poses`, async () => {
+test(`${BACKEND}: Export CSV (control poses) writes the design, times and velocities, and its drop gives the same document`, async () => {
+  await page.evaluate(() => {
+    const app = window.screwbender.app;
+    app.loadPreset('cylinder5');
+    // A cycle of 5 poses: 6 key times (pose 0 again at the end).
+    app.setTimes([0, 0.5, 2, 2.5, 4, 5]);
+    app.setVelocities([0, null, 1.5, null, 0]);
+  });
+  const before = await page.evaluate(() => window.screwbender.app.motion.toDocument());
+  assert.equal(before.closed, true);
+  assert.deepEqual(before.times, [0, 0.5, 2, 2.5, 4, 5], 'the times were taken');
+  const [d] = await clickExport('Export CSV (control poses)');
+  assert.equal(d.suggestedFilename(), 'cylinder5-control-poses.csv');
+  const text = fs.readFileSync(await d.path(), 'utf8');
+  const lines = text.trim().split('\n');
+  assert.equal(lines[0], 'x,y,z,qw,qx,qy,qz,time,velocity');
+  assert.equal(lines.length, 1 + before.poses.length + 1, 'one row per control pose, and pose 0 again at the end of the cycle');
+  assert.match(await page.locator('#toast').textContent(), /5 control poses/);
+  await page.evaluate(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  await drop([{ name: 'cylinder5-control-poses.csv', bytes: text }]);
+  const after = await page.evaluate(() => window.screwbender.app.motion.toDocument());
+  assert.equal(after.poses.length, before.poses.length);
+  assert.equal(after.closed, before.closed);
+  assert.deepEqual(after.times, before.times);
+  assert.deepEqual(after.velocities, before.velocities);
+  after.poses.forEach((p, i) => {
+    const q = before.poses[i];
+    p.origin.forEach((v, k) => assert.ok(Math.abs(v - q.origin[k]) <= 1e-12, `pose ${i} origin`));
+    const dot = p.rotation.reduce((acc, v, k) => acc + v * q.rotation[k], 0);
+    assert.ok(1 - Math.abs(dot) <= 1e-12, `pose ${i} rotation`);
+  });
+  assert.deepEqual(problems, []);
+});
+
+test(`${BACKEND}: Export CSV (samples of the motion) gives sampled poses; a dropped pose CSV sets the control poses`, async () => {
   await page.evaluate(() => window.screwbender.app.loadPreset('circle4'));
-  const [d] = await clickExport('Export CSV (poses)');
+  const [d] = await clickExport('Export CSV (samples of the motion)');
   const text = fs.readFileSync(await d.path(), 'utf8');
   const lines = text.trim().split('\n');
   assert.match(lines[0], /qw/);

@@ -356,3 +356,69 @@ test('axe: no serious or critical violation with the View menu open (both themes
   await page.click('#rec-cancel');
   await page.waitForFunction(() => document.getElementById('rec').hidden);
 });
+
+/** The fraction of pixels where two PNGs of the same size differ (sum of channel differences > 30). */
+function pngDiff(a, b) {
+  return blank.evaluate(async ([a64, b64]) => {
+    const px = async (s) => {
+      const bmp = await createImageBitmap(new Blob([Uint8Array.from(atob(s), (ch) => ch.charCodeAt(0))]));
+      const c = document.createElement('canvas');
+      c.width = bmp.width;
+      c.height = bmp.height;
+      const g = c.getContext('2d');
+      g.drawImage(bmp, 0, 0);
+      return g.getImageData(0, 0, c.width, c.height).data;
+    };
+    const [p, q] = [await px(a64), await px(b64)];
+    if (p.length !== q.length) return 1;
+    let n = 0;
+    for (let i = 0; i < p.length; i += 4) if (Math.abs(p[i] - q[i]) + Math.abs(p[i + 1] - q[i + 1]) + Math.abs(p[i + 2] - q[i + 2]) > 30) n++;
+    return n / (p.length / 4);
+  }, [Buffer.from(a).toString('base64'), Buffer.from(b).toString('base64')]);
+}
+
+test('PNG leaves out the gizmo and the selection by default, keeps the pose numbers, and says so in the menu', async () => {
+  await page.evaluate(() => {
+    const app = window.screwbender.app;
+    app.loadPreset('cylinder5');
+    app.view.showPoseNumbers = true;
+    app.setMode?.('rotate');
+  });
+  await waitFrames(page, 2);
+  await openMenu();
+  assert.match(await page.locator('#m-picture-note').textContent(), /leave out the gizmo and the selection .* keep the pose numbers/);
+  const png = async () => readBytes(await downloadOf(() => menuClick('#m-png')));
+  await page.evaluate(() => window.screwbender.app.select(-1));
+  await waitFrames(page, 2);
+  const none = await png();
+  await page.evaluate(() => window.screwbender.app.select(2));
+  await waitFrames(page, 2);
+  const selected = await png();
+  // The selection (and its gizmo) is still on screen afterwards.
+  assert.equal(await page.evaluate(() => window.screwbender.app.selected), 2);
+  await openMenu();
+  await page.check('#m-png-selection');
+  const withGizmo = await png();
+  await openMenu();
+  await page.uncheck('#m-png-selection');
+  const same = await pngDiff(none, selected);
+  const gizmo = await pngDiff(none, withGizmo);
+  assert.ok(same < 1e-4, `the default PNG with pose 2 selected differs from the unselected one at ${(same * 100).toFixed(3)} % of its pixels`);
+  assert.ok(gizmo > 2e-3, `ticked, the gizmo is in the picture (${(gizmo * 100).toFixed(3)} % of the pixels)`);
+  // The pose numbers are drawn in: without them the picture differs.
+  await page.evaluate(() => {
+    const app = window.screwbender.app;
+    app.select(-1);
+    app.view.showPoseNumbers = false;
+    app.parts.labels.place();
+  });
+  await waitFrames(page, 2);
+  const bare = await png();
+  const numbers = await pngDiff(none, bare);
+  assert.ok(numbers > 1e-4, `the pose numbers are in the picture (${(numbers * 100).toFixed(4)} % of the pixels)`);
+  await page.evaluate(() => {
+    window.screwbender.app.view.showPoseNumbers = true;
+    window.screwbender.app.loadPreset('l_cycle_rotated');
+  });
+  assert.deepEqual(problems, []);
+});

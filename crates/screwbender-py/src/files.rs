@@ -9,8 +9,9 @@ use pyo3::exceptions::{PyFileNotFoundError, PyOSError, PyPermissionError, PyValu
 use pyo3::prelude::*;
 use screwbender::mesh::Mesh;
 use screwbender::{
-    export_motion, import_motion_file, scenes, Error, ErrorKind, ExportFormat, ExportSamples,
-    ExportSettings, MotionDocument, NodeSelection, SamplingMode, DEFAULT_TOLERANCE, MAX_GLTF_BYTES,
+    export_motion, import_motion_file, presets, Error, ErrorKind, ExportFormat, ExportSamples,
+    ExportSettings, MotionDocument, NodeSelection, PipMorph, SamplingMode, DEFAULT_TOLERANCE,
+    MAX_GLTF_BYTES,
 };
 
 use crate::convert::detached;
@@ -141,8 +142,14 @@ pub fn export(py: Python<'_>, state: &State, path: &Path, o: &ExportOptions) -> 
         .doc
         .name
         .as_deref()
-        .and_then(scenes::scene)
-        .map(|sc| Mesh::from_shape(&sc.shape));
+        .and_then(presets::preset)
+        .map(|sc| Mesh::for_preset(&sc));
+    // A preset with one shape per control pose (A8) exports its morph, as the CLI does.
+    let morph = state
+        .doc
+        .name
+        .as_deref()
+        .and_then(|id| PipMorph::for_preset(id, state.doc.poses.len(), state.doc.closed));
     let sampling = match o.fps {
         Some(fps) => SamplingMode::FixedRate(fps),
         None => SamplingMode::Adaptive(o.tolerance.unwrap_or(DEFAULT_TOLERANCE)),
@@ -167,6 +174,7 @@ pub fn export(py: Python<'_>, state: &State, path: &Path, o: &ExportOptions) -> 
         point: o.point,
         control_nodes: o.control_nodes,
         mesh: mesh.as_ref(),
+        morph: morph.as_ref(),
         bin_name: &bin_name,
     };
     let sub = state.subdivision;

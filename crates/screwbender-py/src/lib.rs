@@ -28,7 +28,7 @@ fn presets() -> Vec<&'static str> {
 /// The preset ids with their labels and descriptions: a list of `(id, label, description)`.
 #[pyfunction]
 fn preset_descriptions() -> Vec<(&'static str, &'static str, &'static str)> {
-    screwbender::scenes::scenes()
+    screwbender::presets::all()
         .iter()
         .map(|s| (s.id, s.label, s.description))
         .collect()

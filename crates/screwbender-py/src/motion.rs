@@ -14,7 +14,8 @@ use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyInt, PyType};
 use screwbender::{
-    scenes, Error, ErrorKind, Motion, MotionDocument, Pose, Rules, Scheme, ScrewBender, Subdivision,
+    presets, Error, ErrorKind, Motion, MotionDocument, Pose, Rules, Scheme, ScrewBender,
+    Subdivision,
 };
 
 use crate::convert::{
@@ -51,7 +52,7 @@ impl State {
 /// aliases).
 pub fn parse_rules(name: &str) -> Result<Rules, Error> {
     match name.to_ascii_lowercase().as_str() {
-        "split-then-tweak" => Ok(Rules::SplitTweak),
+        "split-then-tweak" => Ok(Rules::SplitThenTweak),
         other => other.parse::<Rules>().map_err(|_| {
             Error::new(
                 "rules",
@@ -68,7 +69,7 @@ pub fn parse_rules(name: &str) -> Result<Rules, Error> {
 pub fn rules_name(rules: Rules) -> &'static str {
     match rules {
         Rules::Direct => "direct",
-        Rules::SplitTweak => "split-then-tweak",
+        Rules::SplitThenTweak => "split-then-tweak",
     }
 }
 
@@ -376,7 +377,7 @@ impl PyMotion {
         times: Option<&Bound<'_, PyAny>>,
         velocities: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyMotion> {
-        let preset = scenes::scene(name).ok_or_else(|| {
+        let preset = presets::preset(name).ok_or_else(|| {
             value_error(Error::new(
                 "name",
                 ErrorKind::OutOfRange {
@@ -813,5 +814,5 @@ impl PyMotion {
 
 /// The preset ids, in the order of the page's menu.
 pub fn preset_names() -> Vec<&'static str> {
-    scenes::scenes().iter().map(|s| s.id).collect()
+    presets::all().iter().map(|s| s.id).collect()
 }

@@ -155,6 +155,16 @@ fn set(obj: &Object, key: &str, value: JsValue) {
 
 #[wasm_bindgen(js_class = Motion)]
 impl MotionHandle {
+    /// The control poses as CSV (`x,y,z,qw,qx,qy,qz,time,velocity`; a cycle's pose 0 again at
+    /// its end time): the design itself, with its key times and velocities, which
+    /// `importMotionFile` reads back to the same document. `exportFile({format: 'csv'})` writes
+    /// samples of the motion instead.
+    #[wasm_bindgen(js_name = controlPosesCsv)]
+    pub fn control_poses_csv_js(&self) -> Result<String, JsError> {
+        let (doc, _) = self.snapshot()?;
+        Ok(screwbender::control_poses_csv(&doc))
+    }
+
     /// Writes the motion (its document and subdivision options) as a file, like
     /// `screwbender export`: glTF 2.0 with the object animated by adaptive keyframes (or a
     /// fixed rate), or CSV samples / a body-point trajectory. Throws on bad settings (the

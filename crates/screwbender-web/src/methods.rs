@@ -57,6 +57,30 @@ export interface MetricsRow {
   circle_error?: number;
   helix_error?: number;
   notes: string[];
+  /** The smoothness metrics measured the same way for every method, extrapolated to a vanishing step. */
+  converged?: ConvergedMetrics;
+}
+
+/** What a converged metric tends to: a value, zero, an impulse at the knots (the value is the size of the velocity jump that carries it) or nothing (divergent). */
+export type MetricLimit = 'value' | 'zero' | 'impulse' | 'diverges';
+
+/** One converged metric: its limit, the extrapolated value, a bound on its error, and the raw estimates at the three steps. */
+export interface ConvergedMetric {
+  limit: MetricLimit;
+  value: number;
+  error: number;
+  estimates: [number, number, number];
+}
+
+/** The converged smoothness metrics of one method (the same derivative route and steps for every method). */
+export interface ConvergedMetrics {
+  steps: [number, number, number];
+  velocity_jump: ConvergedMetric;
+  angular_velocity_jump: ConvergedMetric;
+  acceleration_jump: ConvergedMetric;
+  angular_acceleration_jump: ConvergedMetric;
+  acceleration_energy: ConvergedMetric[];
+  angular_acceleration_energy: ConvergedMetric;
 }
 
 /** The metrics table (see `MetricsRow`). */

@@ -114,8 +114,8 @@ struct ReadmeDoctests;
 pub use closure::Closure;
 pub use error::{Error, ErrorKind};
 pub use formats::csv::{
-    parse_csv_poses, poses_csv, trajectory_csv, write_poses_csv, write_trajectory_csv,
-    MAX_CSV_BYTES, POSE_COLUMNS,
+    control_poses_csv, parse_csv_poses, poses_csv, trajectory_csv, write_poses_csv,
+    write_trajectory_csv, MAX_CSV_BYTES, POSE_COLUMNS,
 };
 pub use formats::document::{MotionDocument, RawDocument, RawPose, MAX_DOCUMENT_BYTES};
 #[cfg(feature = "gltf")]

@@ -30,7 +30,7 @@ const MIN_FREE = { width: 240, height: 200 };
  * Part `p` ({left, top, width, height}) less the rectangle `o` (a DOMRect) where they overlap:
  * `p` cut at one side of `o`, the side that keeps the most of it. `p` itself if they do not.
  */
-function without(p, o) {
+export function without(p, o) {
   const right = p.left + p.width;
   const bottom = p.top + p.height;
   if (o.width === 0 || o.height === 0 || o.right <= p.left || o.left >= right || o.bottom <= p.top || o.top >= bottom) return p;

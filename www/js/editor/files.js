@@ -1,5 +1,6 @@
 // Files in and out of the playground: motion documents and sessions (JSON), meshes (OBJ, glTF),
-// exports (glTF .glb / .gltf + .bin, CSV, JSON) and drag-and-drop import.
+// exports (glTF .glb / .gltf + .bin, CSV of the control poses or of samples, JSON) and
+// drag-and-drop import.
 //
 // Export and import go through the same core functions as `screwbender export` / `import`
 // (Motion.exportFile, importMotionFile), so a file written here equals the CLI's. Every import
@@ -275,6 +276,19 @@ function exportJson(app) {
   download(`${app.motion.name ?? app.view.scene ?? 'motion'}.json`, app.motion.toJson(), 'application/json');
 }
 
+/**
+ * The design as CSV: the control poses with their key times and velocities (a cycle's pose 0
+ * again at its end time), which an import reads back to the same document. Returns the text.
+ */
+function exportControlCsv(app, { save = true } = {}) {
+  const text = app.motion.controlPosesCsv();
+  const name = `${app.motion.name ?? app.view.scene ?? 'motion'}-control-poses.csv`;
+  if (save) download(name, text, 'text/csv');
+  const m = app.motion;
+  app.ui?.toast(`${name}: ${m.poseCount} control poses${m.closed ? ' (a cycle: pose 0 again at the end)' : ''}, with their times and velocities`);
+  return { fileName: name, data: text };
+}
+
 export default {
   id: 'files',
   create(app) {
@@ -285,6 +299,7 @@ export default {
       importDocument: (doc, fileName, mesh) => importDocument(app, doc, fileName, mesh),
       importMesh: (kind, data, fileName, failure) => importMesh(app, kind, data, fileName, failure),
       exportJson: () => exportJson(app),
+      exportControlCsv: (options) => exportControlCsv(app, options),
     };
   },
 };

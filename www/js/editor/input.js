@@ -202,7 +202,7 @@ export default {
       else if (k === ' ') app.setPlaying(!app.anim.playing);
       else if (k === 'Delete' || k === 'Backspace') app.deleteSelected();
       else if (k === 'Insert' || k === 'i') app.insertAfterSelected();
-      else if (k === 'a' || k === 'Home') app.frameAll();
+      else if (k === 'a' || k === 'Home') app.parts.viewpoint.frame();
       else if (k === 'Escape') {
         if (!document.getElementById('help').hidden) app.ui.toggleHelp(false);
         else app.select(-1);

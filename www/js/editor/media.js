@@ -17,6 +17,10 @@
 // headless Chromium's canvas track delivered none of 60 requested frames of the WebGL canvas (a
 // 2-D copy: 43 frames spread over 7.4 s for 2 s of motion). cycle() is the one place this part
 // touches the playback.
+//
+// Both leave out the selected pose's gizmo and highlight unless the View menu keeps them, and
+// draw the pose numbers (page elements over the view, not part of its frames) when they are
+// shown.
 import { download } from './files.js';
 import { picture } from '../view/picture.js';
 import {
@@ -76,6 +80,53 @@ function cycle(app) {
   return { duration: end - start, show: (t) => app.seekTime(start + t) };
 }
 
+/**
+ * Draws the pose numbers shown over the view (editor/labels.js: #pose-labels) onto `canvas`, a
+ * picture of the whole view at its own size: the labels are page elements, not part of the 3-D
+ * frame, so a picture would lose them.
+ */
+function drawPoseNumbers(app, canvas) {
+  const layer = document.getElementById('pose-labels');
+  if (!layer || layer.hidden) return;
+  const view = app.canvas.getBoundingClientRect();
+  const k = canvas.width / Math.max(1, view.width);
+  const ctx = canvas.getContext('2d');
+  for (const e of layer.querySelectorAll('.pose-label')) {
+    if (e.hidden) continue;
+    const r = e.getBoundingClientRect();
+    if (r.width === 0) continue;
+    const st = getComputedStyle(e);
+    const x = (r.left - view.left) * k;
+    const y = (r.top - view.top) * k;
+    ctx.fillStyle = st.backgroundColor;
+    ctx.beginPath();
+    ctx.roundRect(x, y, r.width * k, r.height * k, 4 * k);
+    ctx.fill();
+    ctx.fillStyle = st.color;
+    ctx.font = `${st.fontWeight} ${parseFloat(st.fontSize) * k}px ${st.fontFamily}`;
+    ctx.textAlign = 'center';
+    ctx.textBaseline = 'middle';
+    ctx.fillText(e.textContent, x + (r.width * k) / 2, y + (r.height * k) / 2);
+  }
+}
+
+/**
+ * Leaves out the gizmo and the selection highlight while pictures are taken, unless the View
+ * menu's "gizmo & selection" is ticked: returns the function that selects the pose again.
+ */
+function hideSelection(app) {
+  const keep = document.getElementById('m-png-selection')?.checked;
+  const selected = app.selected;
+  if (keep || selected < 0) return () => {};
+  app.select(-1);
+  // The pose numbers drop their "selected" colour too.
+  app.parts.labels?.place();
+  return () => {
+    app.select(selected);
+    app.parts.labels?.place();
+  };
+}
+
 export default {
   id: 'media',
   create(app) {
@@ -96,11 +147,15 @@ export default {
         return null;
       }
       let out;
+      const reselect = hideSelection(app);
       try {
         out = picture(app.viewer, { scale, transparent, gizmo: true });
+        drawPoseNumbers(app, out);
       } catch (e) {
         app.showError(`The picture could not be made: ${e.message}`);
         return null;
+      } finally {
+        reselect();
       }
       const blob = await new Promise((resolve) => out.toBlob(resolve, 'image/png'));
       if (!blob) {
@@ -208,13 +263,20 @@ export default {
       const { playing, u, visible } = app.anim;
       if (playing) app.setPlaying(false);
       showProgress(true, 0);
+      const reselect = hideSelection(app);
+      // Each frame: the 3-D view copied with the pose numbers drawn on it.
+      const still = document.createElement('canvas');
+      still.width = width;
+      still.height = height;
       try {
         await output.start();
         encoder.configure(config);
         for (let i = 0; i < count && !cancelled && !error; i++) {
           c.show(Math.min(i / FPS, c.duration));
           app.viewer.draw();
-          const frame = new VideoFrame(app.canvas, {
+          still.getContext('2d').drawImage(app.canvas, 0, 0);
+          drawPoseNumbers(app, still);
+          const frame = new VideoFrame(still, {
             timestamp: Math.round((i * 1e6) / FPS),
             duration: Math.round(1e6 / FPS),
             visibleRect: { x: 0, y: 0, width, height },
@@ -238,6 +300,7 @@ export default {
         error ??= e;
       } finally {
         if (encoder.state !== 'closed') encoder.close();
+        reselect();
         if (output.state !== 'finalized' && output.state !== 'canceled') await output.cancel().catch(() => {});
         recording = null;
         showProgress(false);

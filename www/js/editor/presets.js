@@ -2,6 +2,8 @@
 // a subtitle and each preset's one-line description, in a dialog opened from the panel. Also
 // the first-visit hint (a short note on how to start, dismissed for good).
 
+import { foldPanelOnSmallScreens } from './fold.js';
+
 /** Human names of the presets (the paper's codes and figures are the subtitle). */
 const NAMES = {
   l_cycle_parallel: 'L cycle, parallel poses',
@@ -74,6 +76,8 @@ export default {
         b.onclick = () => {
           close();
           app.loadPreset(s.id);
+          // Phones: the picked preset in view, not the panel it was picked from.
+          foldPanelOnSmallScreens(app);
         };
         list.append(b);
       }
@@ -107,15 +111,41 @@ export default {
           dismissed = false;
         }
         hint.hidden = dismissed;
-        hint.querySelector('.close').onclick = () => {
+        const dismiss = () => {
           hint.hidden = true;
           try {
             localStorage.setItem(HINT_KEY, '1');
           } catch {
             // Nothing to remember it in.
           }
+        };
+        hint.querySelector('.close').onclick = () => {
+          dismiss();
           app.canvas?.focus();
         };
+        // The hint has done its job once the visitor edits or turns the view: it goes then (a
+        // drag of more than a few pixels on the canvas, a wheel zoom, or any undoable edit).
+        if (dismissed) return;
+        const version = app.history.version;
+        let down = null;
+        const done = () => {
+          if (hint.hidden) return;
+          dismiss();
+          for (const [t, type, f] of listeners) t.removeEventListener(type, f, true);
+        };
+        const edited = () => app.history.version !== version && done();
+        const listeners = [
+          [app.canvas, 'pointerdown', (e) => (down = { x: e.clientX, y: e.clientY })],
+          [app.canvas, 'pointermove', (e) => down && Math.hypot(e.clientX - down.x, e.clientY - down.y) > 6 && done()],
+          [window, 'pointerup', () => {
+            down = null;
+            setTimeout(edited, 0);
+          }],
+          [app.canvas, 'wheel', done],
+          [window, 'keyup', () => setTimeout(edited, 0)],
+          [document, 'change', () => setTimeout(edited, 0)],
+        ];
+        for (const [t, type, f] of listeners) t?.addEventListener(type, f, true);
       },
     };
   },

@@ -4,6 +4,7 @@ import { exportMotion, importFiles } from './files.js';
 import { VIEW_IDS } from '../views/index.js';
 import { presetName, presetSubtitle } from './presets.js';
 import { openShareDialog } from './share-dialog.js';
+import { smallScreen } from './fold.js';
 
 /** The largest strobe count the panel offers. */
 const STROBE_MAX = 10000;
@@ -93,6 +94,7 @@ export function buildUi(app) {
     importFile: () => $('any-file').click(),
     exportGlb: () => exportMotion(app, 'glb', { tolerance: exportOpts.tolerance }),
     exportGltf: () => exportMotion(app, 'gltf', { tolerance: exportOpts.tolerance }),
+    exportControlCsv: () => app.parts.files.exportControlCsv(),
     exportCsv: () => exportMotion(app, 'csv', { tolerance: exportOpts.tolerance }),
     exportTrajectory: () => {
       const pts = app.bodyPoints();
@@ -112,7 +114,8 @@ export function buildUi(app) {
   fFile.add(actions, 'exportJson').name('Export JSON');
   fFile.add(actions, 'exportGlb').name('Export glTF (.glb)');
   fFile.add(actions, 'exportGltf').name('Export glTF (.gltf + .bin)');
-  fFile.add(actions, 'exportCsv').name('Export CSV (poses)');
+  fFile.add(actions, 'exportControlCsv').name('Export CSV (control poses)');
+  fFile.add(actions, 'exportCsv').name('Export CSV (samples of the motion)');
   fFile.add(actions, 'exportTrajectory').name('Export CSV (body-point path)');
   fFile.add(exportOpts, 'tolerance', { '1 µm': 1e-6, '10 µm': 1e-5, '0.1 mm': 1e-4, '1 mm': 1e-3, '1 cm': 1e-2 }).name('Export tolerance (1 unit = 1 m)');
   fFile.add(actions, 'importObj').name('Import mesh (OBJ, glTF)…');
@@ -166,7 +169,7 @@ export function buildUi(app) {
   tool('t-delete', () => app.deleteSelected());
   tool('t-undo', () => app.undo());
   tool('t-redo', () => app.redo());
-  tool('t-frame', () => app.frameAll());
+  tool('t-frame', () => app.parts.viewpoint.frame());
   tool('t-help', () => toggleHelp());
   tool('m-share', () => {
     app.parts.viewpoint.menu.close();
@@ -278,7 +281,7 @@ export function buildUi(app) {
   }
 
   // Small screens: start with the panel folded so the view stays visible.
-  if (window.innerWidth < 760 || window.innerHeight < 500) gui.close();
+  if (smallScreen()) gui.close();
   refresh();
   return { gui, refresh, setTime, toggleHelp, toast };
 }

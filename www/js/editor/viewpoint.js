@@ -5,6 +5,8 @@
 // view focused: Shift+F / Shift+T / Shift+S / Shift+I the named views, O orthographic
 // (lower-case f and i stay the 4-point scheme and insert, editor/input.js).
 
+import { without } from './dock.js';
+
 /** Shift + key → named camera view. */
 const PRESET_KEYS = { F: 'front', T: 'top', S: 'side', I: 'iso' };
 
@@ -81,9 +83,39 @@ export default {
       app.autosave();
     }
 
-    /** Turns the camera to the named view ('front', 'top', 'side', 'iso'); false when unknown. */
+    /**
+     * Frames the control poses in the part of the 3-D view that the title card, the hint, the
+     * toolbar, the timeline and an open panel leave free: the camera frames them in the whole
+     * view, then backs off by the ratio of free to whole and moves so that the framed centre is
+     * the free part's centre (a view from the top is as tall as the scene is deep, and would
+     * reach under the header otherwise).
+     */
+    function frameFree() {
+      app.frameAll();
+      const canvas = app.canvas.getBoundingClientRect();
+      let free = { left: canvas.left, top: canvas.top, width: canvas.width, height: canvas.height };
+      for (const id of ['title', 'hint', 'toolbar', 'timeline', 'panel']) {
+        const e = document.getElementById(id);
+        if (!e || e.hidden) continue;
+        const r = e.getBoundingClientRect();
+        if (r.width > 0 && r.height > 0) free = without(free, r);
+      }
+      if (free.width < 80 || free.height < 80) return;
+      const cam = app.camera;
+      const ratio = Math.min(free.width / canvas.width, free.height / canvas.height);
+      if (ratio < 1) cam.distance /= ratio;
+      // Scene units per CSS pixel in the target's plane, after the back-off.
+      const k = (2 * cam.halfHeight) / canvas.height;
+      const dx = free.left + free.width / 2 - (canvas.left + canvas.width / 2);
+      const dy = free.top + free.height / 2 - (canvas.top + canvas.height / 2);
+      const { right, up } = cam.basis();
+      cam.target = cam.target.map((t, i) => t - right[i] * dx * k + up[i] * dy * k);
+    }
+
+    /** Turns the camera to the named view ('front', 'top', 'side', 'iso'), framed in the free part of the view; false when unknown. */
     function preset(name) {
       if (!app.camera.preset(name)) return false;
+      frameFree();
       moved();
       return true;
     }
@@ -126,6 +158,11 @@ export default {
 
     return {
       preset,
+      /** Frames the control poses where the page's cards and bars leave the view free (toolbar Frame, key A). */
+      frame() {
+        frameFree();
+        moved();
+      },
       setOrtho,
       toggleFullscreen,
       refresh,

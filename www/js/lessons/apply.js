@@ -44,6 +44,7 @@ export function applyStep(app, s, setTarget) {
   }
   if (t.play !== undefined) app.setPlaying(t.play);
   if (s.dock !== undefined && s.dock !== (app.view.dock || '')) app.openView(s.dock);
+  if (s.stepsAt !== undefined) app.dock.current?.goTo?.(s.stepsAt);
   setTarget(s.highlight ?? null);
   app.ui.refresh();
   app.requestDraw();

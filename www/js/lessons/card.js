@@ -29,7 +29,15 @@ export function createCard() {
   const prevBtn = el('button', 'prev', '◀ Back');
   const nextBtn = el('button', 'next primary', 'Next ▶');
   nav.append(prevBtn, nextBtn);
-  card.append(head, bar, stepTitle, body, exercise, nav);
+  // Head, step title and buttons stay put; the text and the exercise scroll between them, so
+  // Back / Next are on screen however short the card is placed (highlight.js).
+  const scroll = el('div', 'scroll');
+  // Keyboard users scroll it too (a scrollable region must take the focus).
+  scroll.tabIndex = 0;
+  scroll.setAttribute('role', 'region');
+  scroll.setAttribute('aria-label', 'Step text');
+  scroll.append(body, exercise);
+  card.append(head, bar, stepTitle, scroll, nav);
   document.body.append(card);
 
   function render({ lesson, step, progress }, renderExercise) {
@@ -48,8 +56,55 @@ export function createCard() {
     if (s.exercise) renderExercise(s.exercise);
     prevBtn.disabled = step === 0;
     nextBtn.textContent = step === n - 1 ? 'Finish ✓' : 'Next ▶';
-    card.scrollTop = 0;
+    card.classList.remove('summary');
+    scroll.scrollTop = 0;
   }
 
-  return { card, lessonTitle, bar, exercise, closeBtn, prevBtn, nextBtn, render };
+  /**
+   * The end of a lesson: exercises solved of all, the unsolved ones to go back to (`goTo(k)`),
+   * and what to try next (`next`: {title, summary, start()} or null). Next closes the lesson.
+   */
+  function renderSummary({ lesson, progress }, { next, goTo }) {
+    const exercises = lesson.steps.map((s, k) => (s.exercise ? k : -1)).filter((k) => k >= 0);
+    const solved = exercises.filter((k) => progress.solved.includes(k));
+    counter.textContent = 'done';
+    bar.replaceChildren(...lesson.steps.map((st, k) => {
+      const d = el('i', `${progress.solved.includes(k) ? 'solved' : ''} ${st.exercise ? 'ex' : ''}`.trim());
+      d.title = st.title;
+      return d;
+    }));
+    stepTitle.textContent = 'Lesson complete';
+    const parts = [];
+    const score = el('p', 'score', exercises.length ? `Exercises solved: ${solved.length} of ${exercises.length}.` : 'This lesson has no exercises.');
+    parts.push(score);
+    const open = exercises.filter((k) => !progress.solved.includes(k));
+    if (open.length) {
+      const list = el('ul', 'unsolved');
+      for (const k of open) {
+        const li = el('li');
+        const b = el('button', 'link', `Step ${k + 1}: ${lesson.steps[k].title}`);
+        b.addEventListener('click', () => goTo(k));
+        li.append(b);
+        list.append(li);
+      }
+      parts.push(el('p', '', 'Not solved yet:'), list);
+    }
+    if (next) {
+      const p = el('p', 'next-lesson');
+      const b = el('button', 'primary start-next', `Start ${next.title}`);
+      b.addEventListener('click', () => next.start());
+      p.append(el('span', '', `Try next: ${next.summary}. `), b);
+      parts.push(p);
+    } else parts.push(el('p', '', 'That was the last lesson: the Lessons menu lists them all, and any step can be opened again from there.'));
+    body.replaceChildren(...parts);
+    exercise.replaceChildren();
+    exercise.hidden = true;
+    prevBtn.disabled = false;
+    nextBtn.textContent = 'Close ✓';
+    card.classList.add('summary');
+    scroll.scrollTop = 0;
+    return { solved: solved.length, total: exercises.length };
+  }
+
+  return { card, scroll, lessonTitle, bar, exercise, closeBtn, prevBtn, nextBtn, render, renderSummary };
 }

@@ -31,7 +31,7 @@ export function velocityJumpAt(motion, i, point = [0, 0, 0]) {
 export function evaluateCheck(check, motion, answer) {
   switch (check.kind) {
     case 'choice':
-      return { ok: answer === check.answer, got: answer === null ? 'no answer chosen' : `answer ${answer + 1}`, want: 'the right answer' };
+      return { kind: 'choice', ok: answer === check.answer, got: answer === null ? 'no answer chosen' : `answer ${answer + 1}`, want: 'the right answer' };
     case 'spanScrew': {
       const spans = motion.spanScrews();
       if (check.span >= spans.length) return { ok: false, got: `span ${check.span} does not exist (${spans.length} spans)`, want: '' };

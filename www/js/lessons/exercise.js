@@ -63,7 +63,8 @@ export function createExercise(app, box, bar, st) {
     fb.replaceChildren();
     for (const line of lines) {
       const d = el('div');
-      if (math) d.append(renderText(line));
+      // {math: text}: a lesson's own text (with math) among measured, plain lines.
+      if (math || typeof line === 'object') d.append(renderText(line.math ?? line));
       else d.textContent = line;
       fb.append(d);
     }
@@ -87,7 +88,13 @@ export function createExercise(app, box, bar, st) {
     writeProgress(lesson.id, progress);
     if (r.ok) setFeedback(true, [x.success ?? 'Correct.']);
     else {
-      const lines = r.results.filter((c) => !c.ok).map((c) => (c.want ? `Not yet: ${c.got}; wanted ${c.want}.` : `Not yet: ${c.got}.`));
+      // A wrong choice: why that answer is wrong (the lesson's explanation, with math), else
+      // that it is not the right one; other checks: what they measured and what they want.
+      const why = st.answer !== null ? x.why?.[st.answer] : null;
+      const lines = r.results.filter((c) => !c.ok).map((c) => {
+        if (c.kind === 'choice') return st.answer === null ? 'Choose an answer first.' : why ? { math: `Not this one: ${why}` } : `Not this one: answer ${st.answer + 1} is not the right one. Read the step again, or take a hint.`;
+        return c.want ? `Not yet: ${c.got}; wanted ${c.want}.` : `Not yet: ${c.got}.`;
+      });
       setFeedback(false, lines, false);
     }
     box.querySelector('.task .label').textContent = progress.solved.includes(step) ? 'Exercise ✓ solved' : 'Exercise';

@@ -31,7 +31,7 @@ export const DISPLAY_FIELDS = {
   object: 'string', strobe: 'number', showStrobe: 'boolean', showControl: 'boolean', showTriads: 'boolean',
   showTrajectories: 'boolean', showPolyscrew: 'boolean', showPolygon: 'boolean', showGrid: 'boolean',
 };
-const STEP_FIELDS = ['title', 'text', 'scene', 'document', 'options', 'display', 'timing', 'dock', 'select', 'highlight', 'exercise'];
+const STEP_FIELDS = ['title', 'text', 'scene', 'document', 'options', 'display', 'timing', 'dock', 'stepsAt', 'select', 'highlight', 'exercise'];
 const HIGHLIGHT_KINDS = ['control', 'panel', 'pose', 'gizmo'];
 const GIZMO_PARTS = ['axis-x', 'axis-y', 'axis-z', 'plane-x', 'plane-y', 'plane-z', 'ring-x', 'ring-y', 'ring-z', 'trackball'];
 
@@ -150,6 +150,11 @@ function validateStep(s, p, ctx) {
     if (t.u !== undefined) num(t.u, `${p}.timing.u`);
   }
   if (s.dock !== undefined && s.dock !== '') oneOf(s.dock, ctx.views, `${p}.dock`);
+  if (s.stepsAt !== undefined) {
+    index(s.stepsAt, `${p}.stepsAt`);
+    if (s.stepsAt > 9) fail(`${p}.stepsAt`, 'the Split & tweak view has steps 0 to 9 (five levels)');
+    if (s.dock !== 'steps') fail(`${p}.stepsAt`, 'needs "dock": "steps" in the same step');
+  }
   if (s.select !== undefined && s.select !== -1) index(s.select, `${p}.select`);
   if (s.highlight !== undefined) validateHighlight(s.highlight, `${p}.highlight`, ctx);
   if (s.exercise !== undefined) validateExercise(s.exercise, `${p}.exercise`);
@@ -191,9 +196,25 @@ function validateExercise(x, p) {
   typeset(x.task, `${p}.task`);
   if (x.choices !== undefined) {
     if (!Array.isArray(x.choices) || x.choices.length < 2) fail(`${p}.choices`, 'expected a list of at least 2 answers');
-    x.choices.forEach((c, k) => {
-      str(c, `${p}.choices[${k}]`);
-      typeset(c, `${p}.choices[${k}]`);
+    // An answer is its text, or {text, why}: `why` says why it is wrong (or right), shown when
+    // it is checked. Parsed into x.choices (the texts) and x.why (null where none is given).
+    x.why = x.choices.map((c, k) => {
+      if (isObj(c)) {
+        onlyKeys(c, ['text', 'why'], `${p}.choices[${k}]`);
+        if (c.why !== undefined) {
+          str(c.why, `${p}.choices[${k}].why`);
+          typeset(c.why, `${p}.choices[${k}].why`);
+        }
+        return c.why ?? null;
+      }
+      return null;
+    });
+    x.choices = x.choices.map((c, k) => {
+      const text = isObj(c) ? c.text : c;
+      const at = isObj(c) ? `${p}.choices[${k}].text` : `${p}.choices[${k}]`;
+      str(text, at);
+      typeset(text, at);
+      return text;
     });
   }
   if (!Array.isArray(x.checks) || x.checks.length === 0) fail(`${p}.checks`, 'expected a non-empty list of checks');

@@ -6,11 +6,13 @@
 //
 // startLessons(app) returns the player; main.js exposes it as window.screwbender.lessons:
 //   ready: Promise               settles once ?lesson= or the first-visit tour has been handled
-//   open(name, {resume}): Promise<boolean>   loads lessons/<name>.json (false: a banner says why)
+//   open(name, {resume}): Promise<boolean>   loads lesson <name>: an id of lessons/index.json (`screw`),
+//                                a file name (`01-screw`, `01-screw.json`); false: a banner says why
 //   openText(text, source, {resume}): boolean   the same from a file's text (pasted, dropped)
 //   openMenu()                   shows the Lessons menu
 //   lesson, step                 the open lesson object and step index (null / -1 when closed)
-//   go(i), next(), prev(), close()
+//   go(i), next(), prev(), close()  (next() after the last step shows the summary; once more closes)
+//   summary                      {solved, total} while the summary shows, else null
 //   choose(k)                    picks answer k of the step's multiple choice
 //   check(): {ok, results}       runs the step's checks as the Check button does
 //   progress(id)                 the saved progress of lesson `id`
@@ -18,12 +20,13 @@
 import { VIEW_IDS } from '../views/index.js';
 import { parseLesson } from './format.js';
 import { readProgress, writeProgress, markTourSeen, tourSeen } from './progress.js';
-import { lessonUrl } from './urls.js';
+import { BASE, lessonUrl, resolveLessonName } from './urls.js';
 import { applyStep } from './apply.js';
 import { createCard } from './card.js';
 import { createExercise } from './exercise.js';
 import { createHighlight } from './highlight.js';
 import { createMenu } from './menu.js';
+import { foldPanelOnSmallScreens } from '../editor/fold.js';
 
 export { lessonUrl };
 
@@ -51,6 +54,10 @@ export function startLessons(app) {
     get step() {
       return st.step;
     },
+    /** After the last step: {solved, total} of the summary shown, else null. */
+    get summary() {
+      return st.summary ?? null;
+    },
     open,
     openText,
     go,
@@ -61,12 +68,14 @@ export function startLessons(app) {
     check: exercise.check,
     progress: readProgress,
     spot: highlight.spot,
+    /** Where the card is placed: {x, y, w, h} (page px) or null. */
+    box: highlight.box,
     openMenu: menu.open,
   };
 
-  /** Opens lesson `name` (see lessonUrl); false (and a banner) if it cannot. */
+  /** Opens lesson `name`: an id of lessons/index.json or a file (see lessonUrl); false (and a banner) if it cannot. */
   async function open(name, { resume = true } = {}) {
-    const url = lessonUrl(name);
+    const url = lessonUrl(await resolveLessonName(name));
     if (!url) {
       app.showError(`Lesson "${name}": only files under lessons/ on this site can be opened by name. Nothing was changed.`);
       return false;
@@ -112,11 +121,39 @@ export function startLessons(app) {
     return true;
   }
 
+  /** The lesson after the open one in lessons/index.json: {title, summary, start()} or null. */
+  async function nextLesson() {
+    try {
+      const r = await fetch(new URL('index.json', BASE), { cache: 'no-store' });
+      const list = (await r.json()).lessons ?? [];
+      const k = list.findIndex((l) => l.id === st.lesson?.id);
+      const n = k >= 0 ? list[k + 1] : null;
+      return n ? { title: n.title, summary: n.summary, start: () => open(n.file, { resume: false }) } : null;
+    } catch {
+      return null;
+    }
+  }
+
+  /** After the last step: the summary (a tour just closes); Next on it closes the lesson. */
+  async function finish() {
+    if (st.lesson.tour) return close();
+    st.step = st.lesson.steps.length;
+    highlight.set(null);
+    const lesson = st.lesson;
+    const next = await nextLesson();
+    if (st.lesson !== lesson) return;
+    st.summary = card.renderSummary(st, { next, goTo: go });
+    card.card.dataset.step = 'summary';
+    highlight.place();
+  }
+
   /** Applies step `i`'s scene, options, display, timing, dock and highlight, and shows it. */
   function go(i) {
     if (!st.lesson) return;
-    if (i >= st.lesson.steps.length) return close();
+    if (i > st.lesson.steps.length) return close();
+    if (i === st.lesson.steps.length) return finish();
     if (i < 0) return;
+    st.summary = null;
     st.step = i;
     st.answer = st.progress.answers[i] ?? null;
     st.hintShown = 0;
@@ -129,12 +166,17 @@ export function startLessons(app) {
       app.showError(`Lesson step ${i + 1}: ${e.message}`);
     }
     card.render(st, exercise.render);
+    card.card.dataset.step = String(i);
     // The card's size is the new step's now: place it (and the ring) again.
-    if (highlight.target) highlight.place();
+    highlight.place();
   }
 
   function close() {
-    if (st.lesson?.tour) markTourSeen();
+    if (st.lesson?.tour) {
+      markTourSeen();
+      // Phones: the tour opened the panel to point into it; the 3-D view is what comes next.
+      foldPanelOnSmallScreens(app);
+    }
     st.lesson = null;
     st.step = -1;
     card.card.hidden = true;

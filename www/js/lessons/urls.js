@@ -20,3 +20,19 @@ export function lessonUrl(name) {
   if (url.origin !== location.origin || !url.pathname.startsWith(BASE.pathname) || !url.pathname.endsWith('.json')) return null;
   return url;
 }
+
+/**
+ * Resolves a lesson id of lessons/index.json (e.g. `screw`) to its file name there
+ * (`01-screw.json`); any other name comes back as it is (a file name, `tour`, a path).
+ */
+export async function resolveLessonName(name) {
+  if (typeof name !== 'string' || !/^[\w-]+$/.test(name)) return name;
+  try {
+    const r = await fetch(new URL('index.json', BASE), { cache: 'no-store' });
+    if (!r.ok) return name;
+    const index = await r.json();
+    return index.lessons?.find((l) => l.id === name)?.file ?? name;
+  } catch {
+    return name;
+  }
+}

@@ -38,21 +38,50 @@ export const METHOD_NAMES = {
 };
 const nameOf = (id) => METHOD_NAMES[id] ?? id;
 
-/** The metrics rows of the table: [label, unit, tooltip, value of a MetricsRow]; lower is better for all. */
+/**
+ * The metrics rows of the table: [label, unit, tooltip, value of a MetricsRow, better]. The
+ * smoothness rows read the converged metrics (row.converged: the same derivative route and
+ * steps for every method, extrapolated to a vanishing step); `better` is '↓' where a lower
+ * value is better whatever the method, '' where it is not (an integral of squared acceleration
+ * is lower for a motion that strays from its poses, an approximating method's interpolation
+ * error is its design).
+ */
 const METRICS = [
-  ['velocity jump', 'units/span', 'Largest jump of a body point’s velocity at the knots', (r) => r.velocity_jump],
-  ['angular velocity jump', 'rad/span', 'Largest jump of the angular velocity at the knots', (r) => r.angular_velocity_jump],
-  ['acceleration jump', 'units/span²', 'Largest jump of a body point’s acceleration at the knots', (r) => r.acceleration_jump],
-  ['angular accel. jump', 'rad/span²', 'Largest jump of the angular acceleration at the knots', (r) => r.angular_acceleration_jump],
-  ['∫|a|² (first point)', 'units²/span³', 'Integrated squared linear acceleration of the first body point', (r) => r.acceleration_energy[0]],
-  ['∫|a|² (second point)', 'units²/span³', 'Integrated squared linear acceleration of the second body point', (r) => r.acceleration_energy[1]],
-  ['∫|α|²', 'rad²/span³', 'Integrated squared angular acceleration (4× the covariant acceleration)', (r) => r.angular_acceleration_energy],
-  ['interpolation error', 'units + rad', 'Largest distance between a control pose and the motion at its knot', (r) => r.interpolation_error],
-  ['frame dependence', 'units', 'Trajectory change when the local frame moves (0: frame-independent)', (r) => r.frame_dependence],
-  ['line error', 'units', 'Deviation from an exact straight translation sampled by the poses', (r) => r.line_error],
-  ['circle error', 'units', 'Deviation from an exact rotation about a fixed axis', (r) => r.circle_error],
-  ['helix error', 'units', 'Deviation from an exact screw (helical) motion', (r) => r.helix_error],
+  ['velocity jump', 'units/span', 'Largest jump of a body point’s velocity at the knots', (r) => r.converged?.velocity_jump, '↓'],
+  ['angular velocity jump', 'rad/span', 'Largest jump of the angular velocity at the knots', (r) => r.converged?.angular_velocity_jump, '↓'],
+  ['acceleration jump', 'units/span²', 'Largest jump of a body point’s acceleration at the knots', (r) => r.converged?.acceleration_jump, '↓'],
+  ['angular accel. jump', 'rad/span²', 'Largest jump of the angular acceleration at the knots', (r) => r.converged?.angular_acceleration_jump, '↓'],
+  ['∫|a|² (first point)', 'units²/span³', 'Integrated squared linear acceleration of the first body point; lower is smoother only between methods that pass through the same poses', (r) => r.converged?.acceleration_energy[0], ''],
+  ['∫|a|² (second point)', 'units²/span³', 'Integrated squared linear acceleration of the second body point; lower is smoother only between methods that pass through the same poses', (r) => r.converged?.acceleration_energy[1], ''],
+  ['∫|α|²', 'rad²/span³', 'Integrated squared angular acceleration (4× the covariant acceleration); lower is smoother only between methods that pass through the same poses', (r) => r.converged?.angular_acceleration_energy, ''],
+  ['interpolation error', 'units + rad', 'Largest distance between a control pose and the motion at its knot: 0 for interpolating methods, by design not for approximating ones (B-spline, Kim–Kim–Shin)', (r) => r.interpolation_error, ''],
+  ['frame dependence', 'units', 'Trajectory change when the local frame moves (0: frame-independent)', (r) => r.frame_dependence, '↓'],
+  ['line error', 'units', 'Deviation from an exact straight translation sampled by the poses', (r) => r.line_error, '↓'],
+  ['circle error', 'units', 'Deviation from an exact rotation about a fixed axis', (r) => r.circle_error, '↓'],
+  ['helix error', 'units', 'Deviation from an exact screw (helical) motion', (r) => r.helix_error, '↓'],
 ];
+
+/**
+ * A converged metric as a cell: zero, an impulse, a divergence, or the value with as many
+ * significant digits as its error bound allows (at most 4): halving the step changes none.
+ */
+export function convergedCell(c) {
+  if (c === undefined || c === null) return { text: '–', title: 'not measured' };
+  if (typeof c === 'number') return { text: fmt(c), title: '' };
+  const est = `estimates ${c.estimates.map((v) => fmt(v, 4)).join(', ')} at steps ½⁷, ½⁸, ½⁹ of a span`;
+  switch (c.limit) {
+    case 'zero':
+      return { text: '0', title: `tends to 0 as the step shrinks (${est})` };
+    case 'impulse':
+      return { text: '∞ (impulse)', title: `impulse at the knots: the velocity jumps by ${fmt(c.value)} there, so the acceleration is an impulse, with no finite jump or integral` };
+    case 'diverges':
+      return { text: '∞ (diverges)', title: `grows as the step shrinks: no such derivative (${est})` };
+    default: {
+      const digits = c.error > 0 && c.value > 0 ? Math.max(1, Math.min(4, Math.floor(Math.log10(c.value / (2 * c.error))) + 1)) : 4;
+      return { text: fmt(c.value, digits), title: `${est}; extrapolated ${fmt(c.value, 6)} ± ${fmt(c.error, 2)}` };
+    }
+  }
+}
 
 class MethodsView {
   constructor(app, root) {
@@ -63,8 +92,9 @@ class MethodsView {
     root.append(
       el('p', { class: 'note' },
         'Overlay up to three methods on the same control poses: their body-point paths are drawn in the colours below. ',
-        'Metrics are measured on the control poses as in ', el('code', {}, 'screwbender compare'), '. ',
-        '↓ Lower is better for every metric; units: scene units, radians and spans of the motion parameter (one per control pose).'),
+        'Every method is measured the same way: its poses sampled at steps of ½⁷, ½⁸ and ½⁹ of a span (ScrewBender refined to match), the same differences taken, ',
+        'and the three estimates extrapolated to a vanishing step. A motion whose velocity jumps has an impulse of acceleration at the knots: ∞ (impulse). ',
+        '↓ marks the rows where lower is better for any method; units: scene units, radians and spans of the motion parameter (one per control pose).'),
     );
     this.pickers = el('div', { class: 'row' });
     root.append(this.pickers);
@@ -182,21 +212,23 @@ class MethodsView {
       return;
     }
     const ms = performance.now() - t0;
-    const head = el('tr', {}, el('th', { title: 'Lower is better for every metric' }, 'metric (↓ lower is better)'), el('th', {}, 'unit'));
+    const head = el('tr', {}, el('th', { title: '↓: lower is better for any method' }, 'metric'), el('th', { title: '↓: lower is better for any method' }, ''), el('th', {}, 'unit'));
     ids.forEach((id) => {
       const k = this.selects.findIndex((s) => s.value === id);
       head.append(el('th', { title: this.all.find((x) => x.id === id)?.title ?? id, 'data-method': id }, el('span', { class: 'swatch', style: `background:${SLOT_COLORS[k]}` }), nameOf(id)));
     });
     this.table.append(head);
-    for (const [label, unit, tip, get] of METRICS) {
-      const row = el('tr', {}, el('td', { title: `${tip}; lower is better` }, label), el('td', {}, unit));
-      for (const r of table.rows) row.append(el('td', {}, fmt(get(r))));
+    for (const [label, unit, tip, get, better] of METRICS) {
+      const row = el('tr', {}, el('td', { title: better ? `${tip}; lower is better` : tip }, label), el('td', { class: 'better', title: better ? 'lower is better' : 'lower is not better as such' }, better), el('td', {}, unit));
+      for (const r of table.rows) {
+        const c = convergedCell(get(r));
+        row.append(el('td', { title: c.title, 'data-limit': get(r)?.limit ?? '' }, c.text));
+      }
       this.table.append(row);
     }
     const notes = table.rows.flatMap((r) => r.notes.map((n) => `${nameOf(r.method)}: ${n}`));
-    const derivs = table.rows.map((r) => `${nameOf(r.method)}: ${r.derivatives}`).join('; ');
     this.status.textContent =
-      `${table.pose_count} control poses, ${table.closed ? 'cycle' : 'open'}; computed in ${ms.toFixed(0)} ms. Derivatives: ${derivs}.` +
+      `${table.pose_count} control poses, ${table.closed ? 'cycle' : 'open'}; computed in ${ms.toFixed(0)} ms.` +
       (notes.length ? ` Notes: ${notes.join(' ')}` : '');
     this.lastTable = table;
   }

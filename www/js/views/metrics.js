@@ -6,7 +6,7 @@ import { el, fmt } from './plot.js';
 export const SCHEME_NAMES = { bspline: 'cubic B-spline', fourpoint: '4-point', jarek: 'Jarek', j: 'J_s', polyscrew: 'polyscrew' };
 export const RULE_NAMES = { direct: 'direct rules (V2)', split: 'split & tweak rules (V1)' };
 
-/** The table's rows: label, unit, tooltip, value of a MetricsRow. Every row: lower is better. */
+/** The table's rows: label, unit, tooltip, value of a MetricsRow. */
 const ROWS = [
   ['max velocity jump', 'units/span', 'Largest jump of a body point’s velocity at the knots (differences of refined poses)', (r) => r.velocity_jump],
   ['max angular velocity jump', 'rad/span', 'Largest jump of the angular velocity at the knots', (r) => r.angular_velocity_jump],
@@ -24,7 +24,8 @@ class MetricsView {
       'Measured on the current motion by differences of its refined poses (step: one refined span), at the control-pose knots. ',
       'Jumps shrink towards 0 as levels increase for a C¹ (velocity) or C² (acceleration) limit.'),
     el('p', { class: 'note metrics-legend' },
-      '↓ lower is better for every row. Units: scene units, radians, and spans of the motion parameter u (one span per control pose; 1 s at uniform timing).'));
+      'The jumps and the distance to the control poses: lower is better. The integrals: lower means less acceleration overall, smoother only for motions through the same poses. ',
+      'Units: scene units, radians, and spans of the motion parameter u (one span per control pose; 1 s at uniform timing). The Methods view compares methods converged, all measured the same way.'));
     this.caption = el('div', { class: 'note' });
     this.table = el('table');
     root.append(this.caption, this.table);
@@ -43,10 +44,10 @@ class MetricsView {
     this.caption.textContent =
       `${SCHEME_NAMES[o.scheme] ?? o.scheme}${o.scheme === 'j' ? ` (s = ${o.j})` : ''} scheme, ${RULE_NAMES[o.rules] ?? `${o.rules} rules`}, ${o.levels} levels; body points ` +
       `${points.map((p) => `(${p.map((v) => +v.toFixed(3)).join(', ')})`).join(', ')}; ${ms.toFixed(0)} ms.`;
-    const rows = [el('tr', {}, el('th', { title: 'Lower is better for every row' }, 'metric (↓ lower is better)'), el('th', {}, 'value'), el('th', {}, 'unit'))];
+    const rows = [el('tr', {}, el('th', {}, 'metric'), el('th', {}, 'value'), el('th', {}, 'unit'))];
     for (const [label, unit, tip, get] of ROWS) {
       const v = get(row);
-      rows.push(el('tr', {}, el('td', { title: `${tip}; lower is better` }, label), el('td', {}, typeof v === 'string' ? v : fmt(v)), el('td', {}, unit)));
+      rows.push(el('tr', {}, el('td', { title: tip }, label), el('td', {}, typeof v === 'string' ? v : fmt(v)), el('td', {}, unit)));
     }
     rows.push(el('tr', {},
       el('td', { title: 'The 4-point scheme interpolates: this is 0 up to rounding, by construction; lower is better' }, 'max distance 4-point curve ↔ control poses'),

@@ -64,7 +64,9 @@ class PlotsView {
     this.app = app;
     this.point = [2, 0, 0];
     this.axis = 0;
-    this.derivatives = 'analytic';
+    // The limit motion's derivatives: those of the refined polyscrew are piecewise constant (|α| = 0
+    // inside every refined span, its jumps at the refined knots not drawn).
+    this.derivatives = 'limit';
     /** The chart shown on phones (index in CHARTS). */
     this.shown = 0;
     const pointInputs = [0, 1, 2].map((i) =>
@@ -86,8 +88,8 @@ class PlotsView {
     const pointLabel = el('span', { title: 'Body point in the object’s local coordinates (scene units)' }, 'point');
     const derivLabel = el('span', { title: 'How velocities and accelerations are computed' }, 'derivatives');
     const derivSel = el('select', { 'aria-label': 'derivatives', onchange: (e) => { this.derivatives = e.target.value; this.update('edit'); } },
-      el('option', { value: 'analytic', title: 'Derivatives of the refined polyscrew' }, 'analytic'),
-      el('option', { value: 'limit', title: 'Differences of refined poses (the limit motion)' }, 'limit'));
+      el('option', { value: 'limit', title: 'Differences of refined poses: the smooth limit motion the subdivision converges to' }, 'limit'),
+      el('option', { value: 'analytic', title: 'Exact derivatives of the refined polyscrew: constant angular velocity on each refined span, so |α| = 0 there and ω jumps at the refined knots (not drawn)' }, 'polyscrew'));
     root.append(
       el('div', { class: 'row' },
         pointLabel, ...pointInputs, axisLabel, axisSel, pickLabel, pickSel, optionsBtn, derivLabel, derivSel),
@@ -95,8 +97,9 @@ class PlotsView {
         el('summary', {}, 'About these plots (units: scene units, seconds, radians)'),
         'Same control poses, rules and levels for every curve; only the scheme differs. Dashed lines mark the control-pose times, ',
         'the solid line is the playhead; hover a plot to see that instant’s pose in 3-D. ',
-        'Analytic derivatives are those of the refined polyscrew: its angular velocity is constant on each refined span, so jumps shrink level by level; ',
-        'the differences of refined poses approximate the limit motion, as plotted in the paper.')),
+        'By default the derivatives are those of the limit motion (differences of refined poses, as plotted in the paper). ',
+        '“Polyscrew” shows the exact derivatives of the refined polyscrew instead: its angular velocity is constant on each refined span, ',
+        'so its |α| is 0 inside every span and its acceleration is an impulse at each refined knot, which a chart of values cannot draw.')),
     );
     /** Shown on wide screens only / on phones only / on phones under Options. */
     this.wide = [axisLabel, axisSel];
@@ -233,7 +236,10 @@ class PlotsView {
       const ys = SCHEME_SERIES.map((s) => Array.from({ length: SAMPLES }, (_, k) => value(data[s.id], k, this.axis)));
       chart.set(ts, ys, times);
       // Say so rather than show a flat line without a reason (e.g. |α| of screw spans at uniform timing).
-      if (chart.flat) chart.setTitle(`${title(this.axis)} = 0 (to rounding)`);
+      if (chart.flat) {
+        const polyscrew = this.derivatives === 'analytic' && (CHARTS[c][0] === 'alpha' || CHARTS[c][0] === 'accel');
+        chart.setTitle(polyscrew ? `${title(this.axis)} = 0 between refined knots (impulses at the knots not drawn)` : `${title(this.axis)} = 0 (to rounding)`);
+      }
     });
   }
 }

@@ -20,7 +20,7 @@ class TimingView {
       el('div', { class: 'row' },
         el('button', { class: 'act', onclick: () => this.apply(null) }, 'Uniform (1 s per span)'),
         el('button', { class: 'act', title: 'Every key velocity free again', onclick: () => this.applyVelocities(null) }, 'Free velocities'),
-        el('button', { class: 'act', title: 'Slow near the first and last poses', onclick: () => this.ease() }, 'Ease in / out'),
+        el('button', { class: 'act', title: 'Start and end at rest: velocity 0 at the first and last poses (times unchanged; one undo)', onclick: () => this.ease() }, 'Ease in / out'),
       ),
     );
     this.message = el('div', { class: 'note', role: 'status' });
@@ -68,12 +68,24 @@ class TimingView {
     return !error;
   }
 
-  /** Twice as long for the first and last spans. */
+  /**
+   * Ease in / out: the motion starts and ends at rest, through p′ = 0 at the first and last
+   * poses (pose 0 of a cycle), the paper's C¹ timing; times and the other velocities stay as
+   * they are. One undoable edit; a notice says what changed and how to take it back.
+   */
   ease() {
-    const n = this.current().length;
-    const t = [0];
-    for (let i = 1; i < n; i++) t.push(t[i - 1] + (i === 1 || i === n - 1 ? 2 : 1));
-    this.apply(t);
+    const m = this.app.motion;
+    const n = m.poseCount;
+    const before = this.app.velocities();
+    const next = Array.from({ length: n }, (_, k) => before?.[k] ?? null);
+    const ends = m.closed ? [0] : [0, n - 1];
+    const replaced = ends.filter((k) => next[k] !== null && next[k] !== 0);
+    for (const k of ends) next[k] = 0;
+    if (!this.applyVelocities(next)) return false;
+    const which = m.closed ? 'pose 0 (start and end of the cycle)' : `poses 0 and ${n - 1}`;
+    const was = replaced.length ? ` (replacing ${replaced.map((k) => `${before[k]} at pose ${k}`).join(', ')})` : '';
+    this.app.showError(`Ease in / out: velocity 0 at ${which}${was}; times unchanged. Undo (Ctrl+Z) takes it back.`, 'info');
+    return true;
   }
 
   /**

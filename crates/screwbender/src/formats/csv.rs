@@ -4,9 +4,11 @@
 //! Input ([`parse_csv_poses`]): one pose per line, `x,y,z,qw,qx,qy,qz` (quaternion scalar first),
 //! `#` starts a comment, blank lines are skipped. An optional header line names the columns; with
 //! a header the columns may come in any order and extra columns (such as `t,u` of
-//! [`poses_csv`]'s output) are ignored, so exported samples read back. A last pose repeating the
-//! first (within [`crate::REPEAT_TOLERANCE`]) marks a cycle and is dropped. Errors name the line
-//! (`line 3`) and column.
+//! [`poses_csv`]'s output) are ignored, so exported samples read back. A header may also name a
+//! `time` column (seconds, every row) and a `velocity` column (poses per second, blank where
+//! free): the key times and velocities of [`control_poses_csv`]'s output, so a design reads back
+//! whole. A last pose repeating the first (within [`crate::REPEAT_TOLERANCE`]) marks a cycle and
+//! is dropped (its time is the cycle's end time). Errors name the line (`line 3`) and column.
 
 use std::io::{self, Write};
 
@@ -42,6 +44,10 @@ pub fn parse_csv_poses(text: &str) -> Result<MotionDocument, Error> {
     }
     // Column index of x, y, z, qw, qx, qy, qz, and how many fields a line must have.
     let mut columns: Option<([usize; 7], usize)> = None;
+    // Column index of the key times and velocities, when the header names them.
+    let (mut time_col, mut velocity_col) = (None, None);
+    let mut times = Vec::new();
+    let mut velocities: Vec<Option<f64>> = Vec::new();
     let mut poses = Vec::new();
     for (i, raw) in text.lines().enumerate() {
         let at = format!("line {}", i + 1);
@@ -70,6 +76,9 @@ pub fn parse_csv_poses(text: &str) -> Result<MotionDocument, Error> {
                     })?;
             }
             columns = Some((map, fields.len()));
+            let named = |n: &str| fields.iter().position(|f| f.eq_ignore_ascii_case(n));
+            time_col = named("time");
+            velocity_col = named("velocity");
             continue;
         }
         let (map, width) = *columns.get_or_insert(([0, 1, 2, 3, 4, 5, 6], 7));
@@ -104,6 +113,41 @@ pub fn parse_csv_poses(text: &str) -> Result<MotionDocument, Error> {
             }
             v[k] = x;
         }
+        let number = |c: usize, name: &str| -> Result<Option<f64>, Error> {
+            let f = fields.get(c).copied().unwrap_or("");
+            if f.is_empty() {
+                return Ok(None);
+            }
+            let x: f64 = f.parse().map_err(|_| {
+                Error::new(
+                    format!("{at}, column {name}"),
+                    ErrorKind::Parse {
+                        message: format!("'{f}' is not a number"),
+                    },
+                )
+            })?;
+            if !x.is_finite() {
+                return Err(Error::new(
+                    format!("{at}, column {name}"),
+                    ErrorKind::NonFinite,
+                ));
+            }
+            Ok(Some(x))
+        };
+        if let Some(c) = time_col {
+            let t = number(c, "time")?.ok_or_else(|| {
+                Error::new(
+                    format!("{at}, column time"),
+                    ErrorKind::Parse {
+                        message: "no time (every row of a time column needs one)".into(),
+                    },
+                )
+            })?;
+            times.push(t);
+        }
+        if let Some(c) = velocity_col {
+            velocities.push(number(c, "velocity")?);
+        }
         let pose = Pose::from_wxyz([v[0], v[1], v[2]], [v[3], v[4], v[5], v[6]]).map_err(|e| {
             // Name the line, not an empty path.
             e.within(&at)
@@ -113,6 +157,8 @@ pub fn parse_csv_poses(text: &str) -> Result<MotionDocument, Error> {
     let repeats = last_repeats_first(&poses);
     if repeats {
         poses.pop();
+        // The repeated row's time ends the cycle (n + 1 times); a cycle has n velocities.
+        velocities.truncate(poses.len());
     }
     if poses.len() < 2 {
         return Err(Error::new(
@@ -123,7 +169,42 @@ pub fn parse_csv_poses(text: &str) -> Result<MotionDocument, Error> {
             },
         ));
     }
-    Ok(MotionDocument::new(poses, repeats))
+    let mut doc = MotionDocument::new(poses, repeats);
+    if time_col.is_some() {
+        doc.times = Some(times);
+    }
+    if velocities.iter().any(Option::is_some) {
+        doc.velocities = Some(velocities);
+    }
+    Ok(doc)
+}
+
+/// The control poses of `doc` as CSV, header `x,y,z,qw,qx,qy,qz,time,velocity`: one row per
+/// pose with its key time (seconds; one per span from 0 when the document has none) and
+/// velocity (blank where free), and for a cycle a last row repeating pose 0 at the cycle's end
+/// time. [`parse_csv_poses`] reads it back to the same document (full `f64` precision).
+pub fn control_poses_csv(doc: &MotionDocument) -> String {
+    let n = doc.poses.len();
+    let rows = n + usize::from(doc.closed);
+    let mut out = String::from("x,y,z,qw,qx,qy,qz,time,velocity\n");
+    for k in 0..rows {
+        let p = &doc.poses[k % n];
+        let (o, q) = (p.origin, p.rotation);
+        let t = doc.times.as_ref().map_or(k as f64, |t| t[k]);
+        let v = if k < n {
+            doc.velocities
+                .as_ref()
+                .and_then(|v| v[k])
+                .map_or(String::new(), |v| v.to_string())
+        } else {
+            String::new()
+        };
+        out.push_str(&format!(
+            "{},{},{},{},{},{},{},{t},{v}\n",
+            o.x, o.y, o.z, q.w, q.x, q.y, q.z
+        ));
+    }
+    out
 }
 
 /// Sampled poses as CSV: header `t,u,x,y,z,qw,qx,qy,qz`, one sample per line (full `f64`

@@ -17,6 +17,7 @@
 use glam::{DQuat, DVec3};
 use serde::Serialize;
 
+use super::convergence::{converged_metrics, ConvergedMetrics};
 use super::registry::{Method, COMPARISON_LEVELS};
 use crate::error::{Error, ErrorKind};
 use crate::motion::{Kinematics, Motion};
@@ -269,6 +270,10 @@ pub struct MetricsRow {
     /// Messages for metrics that could not be computed (e.g. the method rejected a test input),
     /// and, starting with `warning: `, where the motion itself is poor ([`Method::warnings`]).
     pub notes: Vec<String>,
+    /// The smoothness metrics measured the same way for every method and extrapolated to a
+    /// vanishing step ([`converged_metrics`]); set by [`evaluate`], `None` elsewhere. The page's
+    /// comparison shows these; the fields above keep each method's own derivative route.
+    pub converged: Option<ConvergedMetrics>,
 }
 
 /// A comparison table: one [`MetricsRow`] per method, on the same poses.
@@ -418,6 +423,7 @@ pub fn motion_metrics(
         circle_error: None,
         helix_error: None,
         notes: Vec::new(),
+        converged: None,
     }
 }
 
@@ -568,6 +574,10 @@ pub fn evaluate(
     let mut row = motion_metrics(method.name(), motion.as_ref(), poses, derivatives, options);
     for w in method.warnings(poses, closed) {
         row.notes.push(format!("warning: {w}"));
+    }
+    match converged_metrics(method, poses, closed, &options.body_points) {
+        Ok(c) => row.converged = Some(c),
+        Err(e) => row.notes.push(format!("converged metrics: {e}")),
     }
     let build = |p: &[Pose], c: bool| method.build(p, c);
     match frame_dependence(&build, motion.as_ref(), poses, closed, options) {

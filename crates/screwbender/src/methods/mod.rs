@@ -46,6 +46,7 @@
 
 mod algebra;
 mod catmull_rom_squad;
+mod convergence;
 mod gauss;
 mod kim_kim_shin;
 mod lbfgs;
@@ -93,6 +94,7 @@ pub use ramamoorthi_barr::spline::{
 };
 
 // Metrics.
+pub use convergence::{converged_metrics, Converged, ConvergedMetrics, Limit, CONVERGENCE_LEVELS};
 pub use metrics::{
     compare_applicable, compare_methods, evaluate, finite_difference, frame_dependence,
     kinematics_at, motion_metrics, preservation_errors, preservation_inputs, sampled_difference,

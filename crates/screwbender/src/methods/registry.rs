@@ -131,8 +131,25 @@ impl Method {
 
     /// Builds the motion through `poses` (pose `i` at `u = i`; a closed motion has period `n`).
     pub fn build(self, poses: &[Pose], closed: bool) -> Result<Box<dyn Motion>, Error> {
+        self.build_at(poses, closed, COMPARISON_LEVELS)
+    }
+
+    /// Whether the method is a ScrewBender subdivision motion (its refinement depends on the
+    /// levels of [`Method::build_at`]).
+    pub fn is_subdivision(self) -> bool {
+        matches!(self, Method::BSpline | Method::FourPoint | Method::Jarek)
+    }
+
+    /// [`Method::build`] with the ScrewBender methods refined `levels` times (the other methods
+    /// ignore `levels`).
+    pub fn build_at(
+        self,
+        poses: &[Pose],
+        closed: bool,
+        levels: u32,
+    ) -> Result<Box<dyn Motion>, Error> {
         let sb = |scheme| -> Result<Box<dyn Motion>, Error> {
-            let s = Subdivision::new(scheme, Rules::Direct, COMPARISON_LEVELS);
+            let s = Subdivision::new(scheme, Rules::Direct, levels);
             Ok(Box::new(ScrewBender::new(poses.to_vec(), closed, s)?))
         };
         let times: Vec<f64> = (0..poses.len() + usize::from(closed))
