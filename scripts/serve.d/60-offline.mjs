@@ -1,5 +1,5 @@
-// The offline figure's template (run by 60-offline.sh): www/pkg/offline/figure.html and its size
-// in www/pkg/offline/figure.json. The playground's share dialog (www/js/editor/share-dialog.js)
+// The offline figure's template (run by 60-offline.sh): www/pkg-offline/figure.html and its size
+// in www/pkg-offline/figure.json. The playground's share dialog (www/js/editor/share-dialog.js)
 // fills in the figure (a <screw-bender> with a share payload) and the title, and downloads it.
 //
 // The file is made of:
@@ -7,11 +7,13 @@
 //   glue among them) bundled by esbuild into one inline module script. Three files are changed on
 //   the way, each at one exact place (the build stops when a place is not found, so a change of
 //   those lines is noticed here and not in a broken download): element/modules.js loads the
-//   module from the page's inline bytes instead of pkg/; element/chrome.js links the stylesheet
+//   modules from the page's inline bytes instead of pkg-webgpu/ and pkg-gl/; element/chrome.js links the stylesheet
 //   as a data: URL; view/drawing.js reads the Stanford bunny from the page (the dialog adds it
 //   only when the figure shows it).
-// * the wasm module, gzip-compressed (DecompressionStream unpacks it) and base64-encoded in a
-//   <script type="application/octet-stream"> element, which the browser never runs.
+// * the two renderer modules of the figure (WebGPU, and WebGL2 where WebGPU has no adapter),
+//   each gzip-compressed (DecompressionStream unpacks it) and base64-encoded in a
+//   <script type="application/octet-stream"> element, which the browser never runs; only the one
+//   the browser draws with is unpacked.
 // * a Content-Security-Policy that lets the page load nothing from any network (default-src
 //   'none'; the scripts by their hashes; fetch only of data: URLs).
 import crypto from 'node:crypto';
@@ -23,8 +25,9 @@ import * as esbuild from 'esbuild';
 
 const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 const WWW = path.join(ROOT, 'www');
-const OUT = path.join(WWW, 'pkg/offline');
-const WASM = path.join(WWW, 'pkg/screwbender_bg.wasm');
+const OUT = path.join(WWW, 'pkg-offline');
+const WASM = path.join(WWW, 'pkg-webgpu/screwbender_bg.wasm');
+const WASM_GL = path.join(WWW, 'pkg-gl/screwbender_bg.wasm');
 
 /** Where the dialog puts the figure, the title and the bunny (each once in the template). */
 const SLOTS = { figure: '<!--screwbender:figure-->', title: '<!--screwbender:title-->', bunny: '<!--screwbender:bunny-->' };
@@ -42,20 +45,24 @@ const css = fs.readFileSync(path.join(WWW, 'css/screw-bender.css'), 'utf8');
 const cssUrl = `data:text/css;base64,${Buffer.from(css).toString('base64')}`;
 
 const OFFLINE_MODULES = `
-import * as glue from '../../pkg/screwbender.js';
+import * as glue from '../../pkg-webgpu/screwbender.js';
+import * as glueGl from '../../pkg-gl/screwbender.js';
 
-/** The wasm module's bytes from the page: base64 of gzip (scripts/serve.d/60-offline.mjs). */
-async function wasmBytes() {
-  const text = document.getElementById('screwbender-wasm').textContent.trim();
+/** A wasm module's bytes from the page: base64 of gzip (scripts/serve.d/60-offline.mjs). */
+async function wasmBytes(id) {
+  const text = document.getElementById(id).textContent.trim();
   const packed = await fetch('data:application/gzip;base64,' + text);
   return new Response(packed.body.pipeThrough(new DecompressionStream('gzip'))).arrayBuffer();
 }
 
-export const loadMain = async () => {
-  const module_or_path = await wasmBytes();
-  return { ...glue, default: () => glue.default({ module_or_path }) };
-};
-export const loadGl = null;
+/** A module whose default export initialises it from the page's bytes of element \`id\`. */
+async function inline(g, id) {
+  const module_or_path = await wasmBytes(id);
+  return { ...g, default: () => g.default({ module_or_path }) };
+}
+
+export const loadMain = () => inline(glue, 'screwbender-wasm');
+export const loadGl = () => inline(glueGl, 'screwbender-wasm-gl');
 `;
 
 const offline = {
@@ -97,6 +104,8 @@ const js = result.outputFiles[0].text.replace(/<\/(script)/gi, '<\\/$1');
 
 const wasm = fs.readFileSync(WASM);
 const packed = zlib.gzipSync(wasm, { level: 9 }).toString('base64');
+const wasmGl = fs.readFileSync(WASM_GL);
+const packedGl = zlib.gzipSync(wasmGl, { level: 9 }).toString('base64');
 
 const style = 'html,body{margin:0;height:100%}body{display:flex;flex-direction:column;background:#e8ecf1;font:14px/1.4 system-ui,-apple-system,"Segoe UI",sans-serif}screw-bender{flex:1 1 auto;min-height:0;aspect-ratio:auto}@media (prefers-color-scheme:dark){body{background:#1b1f27;color:#e6e9ef}}';
 const hash = (s) => `'sha256-${crypto.createHash('sha256').update(s).digest('base64')}'`;
@@ -124,11 +133,12 @@ const html = `<!doctype html>
 ${SLOTS.figure}
 ${SLOTS.bunny}
 <script type="application/octet-stream" id="screwbender-wasm">${packed}</script>
+<script type="application/octet-stream" id="screwbender-wasm-gl">${packedGl}</script>
 <script type="module">${js}</script>
 </body>
 </html>
 `;
 fs.mkdirSync(OUT, { recursive: true });
 fs.writeFileSync(path.join(OUT, 'figure.html'), html);
-fs.writeFileSync(path.join(OUT, 'figure.json'), `${JSON.stringify({ bytes: Buffer.byteLength(html), wasmBytes: wasm.length, scriptBytes: js.length })}\n`);
-console.log(`offline figure template: ${(Buffer.byteLength(html) / 1e6).toFixed(2)} MB (wasm ${(wasm.length / 1e6).toFixed(2)} MB → ${(packed.length / 1e6).toFixed(2)} MB base64 of gzip, script ${(js.length / 1e3).toFixed(0)} KB)`);
+fs.writeFileSync(path.join(OUT, 'figure.json'), `${JSON.stringify({ bytes: Buffer.byteLength(html), wasmBytes: wasm.length + wasmGl.length, scriptBytes: js.length })}\n`);
+console.log(`offline figure template: ${(Buffer.byteLength(html) / 1e6).toFixed(2)} MB (wasm ${((wasm.length + wasmGl.length) / 1e6).toFixed(2)} MB → ${((packed.length + packedGl.length) / 1e6).toFixed(2)} MB base64 of gzip, script ${(js.length / 1e3).toFixed(0)} KB)`);

@@ -17,8 +17,8 @@ import { fileBase } from './media.js';
 import { presetName } from './presets.js';
 
 /** The offline template and its size (scripts/serve.d/60-offline.mjs), relative to the page. */
-const OFFLINE_TEMPLATE = 'pkg/offline/figure.html';
-const OFFLINE_INFO = 'pkg/offline/figure.json';
+const OFFLINE_TEMPLATE = 'pkg-offline/figure.html';
+const OFFLINE_INFO = 'pkg-offline/figure.json';
 /** The template's places for the figure, the title and the bunny's mesh. */
 const SLOT_FIGURE = '<!--screwbender:figure-->';
 const SLOT_TITLE = '<!--screwbender:title-->';
