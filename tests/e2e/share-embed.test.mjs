@@ -201,6 +201,27 @@ test('Copy link: the clipboard holds a link that opens the same session', async 
   }
 });
 
+test('where the clipboard is refused, the text is selected and the dialog says how to copy it', async () => {
+  await openDialog();
+  await page.evaluate(() => {
+    window.__writeText = navigator.clipboard.writeText;
+    navigator.clipboard.writeText = () => Promise.reject(new DOMException('denied', 'NotAllowedError'));
+  });
+  try {
+    await page.click('#share-copy-element');
+    await page.waitForFunction(() => /press Ctrl\+C/.test(document.getElementById('share-status').textContent));
+    const sel = await page.evaluate(() => {
+      const t = document.activeElement;
+      return { id: t.id, start: t.selectionStart, end: t.selectionEnd, length: t.value.length };
+    });
+    assert.deepEqual(sel, { id: 'share-element', start: 0, end: sel.length, length: sel.length });
+    assert.ok(sel.length > 100);
+  } finally {
+    await page.evaluate(() => (navigator.clipboard.writeText = window.__writeText));
+  }
+  await page.keyboard.press('Escape');
+});
+
 test('Copy code: the <screw-bender> snippet in a blank page draws the same figure and plays by its keys', async () => {
   await openDialog();
   // Full controls and autoplay: chosen in the dialog, written into the snippet.
@@ -365,42 +386,44 @@ test('embed.html on a phone: touch plays and orbits; screenshots at 390×844 and
   }
 });
 
-test('the dialog at 390×844 by touch: on screen, targets ≥ 44 px, Copy by a tap', async () => {
-  const context = await play.browser.newContext({ viewport: PHONE, hasTouch: true, isMobile: true });
-  await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(play.url).origin });
-  try {
-    const { page: p } = await openPage(context, play.url, BACKEND);
-    // The session of the desktop page, by its link.
-    await p.goto(await page.inputValue('#share-link'));
-    await p.evaluate(() => window.screwbender.ready);
-    await p.evaluate(() => document.querySelector('#hint .close')?.click());
-    // On a phone: the toolbar's View menu, then its Share & embed entry.
-    await p.locator('#t-view').tap();
-    await p.locator('#m-share').tap();
-    await p.locator('#share').waitFor({ state: 'visible' });
-    await p.waitForFunction(() => /MB|KB/.test(document.getElementById('share-download').textContent));
-    await p.screenshot({ path: shotPath('share/dialog-390x844.png') });
-    const box = await p.locator('#share').boundingBox();
-    assert.ok(box.x >= 0 && box.x + box.width <= PHONE.width && box.height <= PHONE.height, `on screen: ${JSON.stringify(box)}`);
-    const small = await p.evaluate(() =>
-      [...document.querySelectorAll('#share button, #share select')]
-        .map((e) => ({ id: e.id || e.textContent, r: e.getBoundingClientRect() }))
-        .filter(({ r }) => r.height < 44 - 0.5)
-        .map(({ id, r }) => `${id} ${r.width.toFixed(0)}×${r.height.toFixed(0)}`),
-    );
-    assert.deepEqual(small, [], 'touch targets under 44 px');
-    const copy = p.locator('#share-copy-iframe');
-    await copy.scrollIntoViewIfNeeded();
-    await copy.tap();
-    await p.waitForFunction(() => /copied/.test(document.getElementById('share-status').textContent));
-    assert.match(await p.evaluate(() => navigator.clipboard.readText()), /^<iframe /);
-    await p.locator('#share-close').tap();
-    assert.equal(await p.locator('#share').isVisible(), false);
-    assert.equal(await p.evaluate(() => document.activeElement.id), 't-view', 'the focus goes back to the View button');
-  } finally {
-    await context.close();
-  }
-});
+for (const size of [PHONE, { width: 844, height: 390 }]) {
+  test(`the dialog at ${size.width}×${size.height} by touch: on screen, targets ≥ 44 px, Copy by a tap`, async () => {
+    const context = await play.browser.newContext({ viewport: size, hasTouch: true, isMobile: true });
+    await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(play.url).origin });
+    try {
+      const { page: p } = await openPage(context, play.url, BACKEND);
+      // The session of the desktop page, by its link.
+      await p.goto(await page.inputValue('#share-link'));
+      await p.evaluate(() => window.screwbender.ready);
+      await p.evaluate(() => document.querySelector('#hint .close')?.click());
+      // On a phone: the toolbar's View menu, then its Share & embed entry.
+      await p.locator('#t-view').tap();
+      await p.locator('#m-share').tap();
+      await p.locator('#share').waitFor({ state: 'visible' });
+      await p.waitForFunction(() => /MB|KB/.test(document.getElementById('share-download').textContent));
+      await p.screenshot({ path: shotPath(`share/dialog-${size.width}x${size.height}.png`) });
+      const box = await p.locator('#share').boundingBox();
+      assert.ok(box.x >= 0 && box.x + box.width <= size.width && box.height <= size.height, `on screen: ${JSON.stringify(box)}`);
+      const small = await p.evaluate(() =>
+        [...document.querySelectorAll('#share button, #share select')]
+          .map((e) => ({ id: e.id || e.textContent, r: e.getBoundingClientRect() }))
+          .filter(({ r }) => r.height < 44 - 0.5)
+          .map(({ id, r }) => `${id} ${r.width.toFixed(0)}×${r.height.toFixed(0)}`),
+      );
+      assert.deepEqual(small, [], 'touch targets under 44 px');
+      const copy = p.locator('#share-copy-iframe');
+      await copy.scrollIntoViewIfNeeded();
+      await copy.tap();
+      await p.waitForFunction(() => /copied/.test(document.getElementById('share-status').textContent));
+      assert.match(await p.evaluate(() => navigator.clipboard.readText()), /^<iframe /);
+      await p.locator('#share-close').tap();
+      assert.equal(await p.locator('#share').isVisible(), false);
+      assert.equal(await p.evaluate(() => document.activeElement.id), 't-view', 'the focus goes back to the View button');
+    } finally {
+      await context.close();
+    }
+  });
+}
 
 /** Opens the offline file from file:// in a fresh context where only file: and data: load. */
 async function openOffline(file, { noWebGpu = false } = {}) {
