@@ -7,7 +7,7 @@
 // page (touch-action pan-y, real touch events), unless touch-action="none".
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { EXPECTED_BACKEND, OPEN3, canvasBox, elementBrowser, figureFrames, pageHtml } from './element-lib.mjs';
+import { EXPECTED_BACKEND, OPEN3, canvasBox, drawnShare, elementBrowser, figureFrames, pageHtml } from './element-lib.mjs';
 
 let b;
 before(async () => {
@@ -213,18 +213,7 @@ test(`${EXPECTED_BACKEND}: scrolled far away, figures free their renderers (and 
     await page.evaluate(() => document.getElementById('m0').scrollIntoView({ block: 'center' }));
     await page.waitForFunction(() => !document.getElementById('m0').viewer.suspended && document.getElementById('m0').viewer.renderer, null, { timeout: 30000 });
     await figureFrames(page, '#m0', 2);
-    const png = await page.locator('#m0').screenshot();
-    const drawn = await page.evaluate(async (b64) => {
-      const bmp = await createImageBitmap(await (await fetch(`data:image/png;base64,${b64}`)).blob());
-      const c = new OffscreenCanvas(bmp.width, bmp.height);
-      const g = c.getContext('2d');
-      g.drawImage(bmp, 0, 0);
-      const d = g.getImageData(0, 0, c.width, c.height).data;
-      const i0 = 4 * (c.width * 40 + 40);
-      let differ = 0;
-      for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - d[i0]) + Math.abs(d[i + 1] - d[i0 + 1]) + Math.abs(d[i + 2] - d[i0 + 2]) > 30) differ++;
-      return differ / (d.length / 4);
-    }, png.toString('base64'));
+    const drawn = await drawnShare(page, '#m0');
     assert.ok(drawn > 0.03, `the first figure is drawn again: ${drawn}`);
     // Its keys work on the new canvas.
     const box = await canvasBox(page, '#m0');
@@ -278,18 +267,7 @@ test(`${EXPECTED_BACKEND}: print media: each started figure shows a still pictur
       assert.equal(f.bar, 'hidden');
     }
     // What the print shows (a screenshot in print media): the figure, not a blank box.
-    const png = await page.locator('#m0').screenshot();
-    const shown = await page.evaluate(async (b64) => {
-      const bmp = await createImageBitmap(await (await fetch(`data:image/png;base64,${b64}`)).blob());
-      const c = new OffscreenCanvas(bmp.width, bmp.height);
-      const g = c.getContext('2d');
-      g.drawImage(bmp, 0, 0);
-      const d = g.getImageData(0, 0, c.width, c.height).data;
-      const bg = [d[4 * (c.width * 40 + 40)], d[4 * (c.width * 40 + 40) + 1], d[4 * (c.width * 40 + 40) + 2]];
-      let differ = 0;
-      for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - bg[0]) + Math.abs(d[i + 1] - bg[1]) + Math.abs(d[i + 2] - bg[2]) > 30) differ++;
-      return differ / (d.length / 4);
-    }, png.toString('base64'));
+    const shown = await drawnShare(page, '#m0');
     assert.ok(shown > 0.02, `the printed figure shows its picture: ${shown}`);
     await page.emulateMedia({ media: 'screen' });
     await page.waitForFunction(() => document.getElementById('m0').shadowRoot.querySelector('.still').hidden);
