@@ -56,8 +56,10 @@ try {
     await page.evaluate((i) => document.getElementById(`m${i}`).scrollIntoView({ block: 'center' }), k);
     await page.waitForFunction((i) => document.getElementById(`m${i}`).viewer?.frames > 0, k, { timeout: 120000 });
   }
-  await page.waitForTimeout(500);
+  // Figures far from the viewport free their renderers after a while (element/showing.js).
+  await page.waitForTimeout(3000);
   const memoryAfter = await memory();
+  const renderersAfter = await page.evaluate(() => [...document.querySelectorAll('screw-bender')].filter((e) => e.viewer?.renderer).length);
   const startedAfter = await page.evaluate(() => [...document.querySelectorAll('screw-bender')].filter((e) => e.viewer).length);
   let rss = null;
   try {
@@ -66,7 +68,7 @@ try {
   } catch {
     // Not every build reports it.
   }
-  console.log(JSON.stringify({ backend: BACKEND, www, loading, firstMs, startedAtFirst, memoryAtFirst, startedAfter, memoryAfter, processes: rss }));
+  console.log(JSON.stringify({ backend: BACKEND, www, loading, firstMs, startedAtFirst, memoryAtFirst, startedAfter, renderersAfter, memoryAfter, processes: rss }));
 } finally {
   await browser.close();
   server.kill();

@@ -7,7 +7,7 @@
 // page (touch-action pan-y, real touch events), unless touch-action="none".
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { EXPECTED_BACKEND, OPEN3, canvasBox, elementBrowser, figureFrames, pageHtml } from './element-lib.mjs';
+import { EXPECTED_BACKEND, OPEN3, canvasBox, drawnShare, elementBrowser, figureFrames, pageHtml } from './element-lib.mjs';
 
 let b;
 before(async () => {
@@ -191,6 +191,42 @@ test(`${EXPECTED_BACKEND}: a page of 20 figures starts them near the viewport; t
   }
 });
 
+test(`${EXPECTED_BACKEND}: scrolled far away, figures free their renderers (and WebGL contexts) and draw again when back`, async () => {
+  const { page, problems, close } = await b.open(manyPage(20));
+  const warnings = [];
+  page.on('console', (m) => /WebGL contexts|context lost/i.test(m.text()) && warnings.push(m.text()));
+  try {
+    // Through every figure of the page, each drawn once.
+    for (let k = 0; k < 20; k++) {
+      await page.evaluate((i) => document.getElementById(`m${i}`).scrollIntoView({ block: 'center' }), k);
+      await page.waitForFunction((i) => document.getElementById(`m${i}`).viewer?.frames > 0, k, { timeout: 60000 });
+    }
+    await page.waitForFunction(() => document.getElementById('m0').viewer.suspended, null, { timeout: 10000 });
+    const live = await page.evaluate(() => [...document.querySelectorAll('screw-bender')].filter((e) => e.viewer?.renderer).length);
+    assert.ok(live <= 6, `renderers alive at the end of the page: ${live}`);
+    // Print while suspended: the kept still.
+    await page.emulateMedia({ media: 'print' });
+    assert.equal(await page.evaluate(() => !!document.getElementById('m0').figure.kept), true, 'a suspended figure keeps a picture');
+    await page.waitForFunction(() => !document.getElementById('m0').shadowRoot.querySelector('.still').hidden, null, { timeout: 5000 });
+    await page.emulateMedia({ media: 'screen' });
+    // Back to the first: it draws again, as it was.
+    await page.evaluate(() => document.getElementById('m0').scrollIntoView({ block: 'center' }));
+    await page.waitForFunction(() => !document.getElementById('m0').viewer.suspended && document.getElementById('m0').viewer.renderer, null, { timeout: 30000 });
+    await figureFrames(page, '#m0', 2);
+    const drawn = await drawnShare(page, '#m0');
+    assert.ok(drawn > 0.03, `the first figure is drawn again: ${drawn}`);
+    // Its keys work on the new canvas.
+    const box = await canvasBox(page, '#m0');
+    await page.mouse.click(box.x + 10, box.y + 10);
+    await page.keyboard.press(' ');
+    assert.equal(await page.evaluate(() => document.getElementById('m0').paused), false);
+    assert.deepEqual(warnings, []);
+    assert.deepEqual(problems, []);
+  } finally {
+    await close();
+  }
+});
+
 test(`${EXPECTED_BACKEND}: print media: each started figure shows a still picture of its current frame`, async () => {
   const { page, problems, close } = await b.open(manyPage(2, 'loading="eager"'));
   try {
@@ -231,18 +267,7 @@ test(`${EXPECTED_BACKEND}: print media: each started figure shows a still pictur
       assert.equal(f.bar, 'hidden');
     }
     // What the print shows (a screenshot in print media): the figure, not a blank box.
-    const png = await page.locator('#m0').screenshot();
-    const shown = await page.evaluate(async (b64) => {
-      const bmp = await createImageBitmap(await (await fetch(`data:image/png;base64,${b64}`)).blob());
-      const c = new OffscreenCanvas(bmp.width, bmp.height);
-      const g = c.getContext('2d');
-      g.drawImage(bmp, 0, 0);
-      const d = g.getImageData(0, 0, c.width, c.height).data;
-      const bg = [d[4 * (c.width * 40 + 40)], d[4 * (c.width * 40 + 40) + 1], d[4 * (c.width * 40 + 40) + 2]];
-      let differ = 0;
-      for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - bg[0]) + Math.abs(d[i + 1] - bg[1]) + Math.abs(d[i + 2] - bg[2]) > 30) differ++;
-      return differ / (d.length / 4);
-    }, png.toString('base64'));
+    const shown = await drawnShare(page, '#m0');
     assert.ok(shown > 0.02, `the printed figure shows its picture: ${shown}`);
     await page.emulateMedia({ media: 'screen' });
     await page.waitForFunction(() => document.getElementById('m0').shadowRoot.querySelector('.still').hidden);

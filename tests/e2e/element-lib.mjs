@@ -68,6 +68,25 @@ export async function figureFrames(page, sel, n = 2) {
   );
 }
 
-/** The centre of the canvas of figure `sel` in page coordinates. */
+/**
+ * The share of the pixels of a screenshot of `sel` (as the page shows it, print media included)
+ * that differ from the pixel at (40, 40), the figure's background.
+ */
+export async function drawnShare(page, sel) {
+  const png = await page.locator(sel).screenshot();
+  return page.evaluate(async (b64) => {
+    const bmp = await createImageBitmap(await (await fetch(`data:image/png;base64,${b64}`)).blob());
+    const c = new OffscreenCanvas(bmp.width, bmp.height);
+    const g = c.getContext('2d');
+    g.drawImage(bmp, 0, 0);
+    const d = g.getImageData(0, 0, c.width, c.height).data;
+    const i0 = 4 * (c.width * 40 + 40);
+    let differ = 0;
+    for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - d[i0]) + Math.abs(d[i + 1] - d[i0 + 1]) + Math.abs(d[i + 2] - d[i0 + 2]) > 30) differ++;
+    return differ / (d.length / 4);
+  }, png.toString('base64'));
+}
+
+/** The box of the canvas of figure `sel` in page coordinates. */
 export const canvasBox = (page, sel) =>
   page.evaluate((s) => document.querySelector(s).shadowRoot.querySelector('canvas').getBoundingClientRect().toJSON(), sel);

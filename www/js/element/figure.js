@@ -14,7 +14,7 @@ import {
   subdivisionOptions,
 } from './options.js';
 import { Playback, describePose, schemeName } from './playback.js';
-import { drawWhenShown, forget, printable, showPoster, whenNear } from './showing.js';
+import { drawWhenShown, forget, keepStill, printable, showPoster, whenNear } from './showing.js';
 import { fetchSource, persist, restorePersisted } from './sources.js';
 import { loadWasm, serially } from './wasm.js';
 
@@ -80,14 +80,47 @@ export class Figure {
         return;
       }
       // A WebGPU start that fell back to WebGL2 drew on a fresh canvas: keys go to that one.
-      this.el.canvas = this.viewer.canvas;
-      this.el.canvas.addEventListener('keydown', (e) => this.guard(() => this.onKey(e)));
+      this.bindCanvas();
       this.el.fig.dataset.backend = this.viewer.backend;
-      this.viewer.bindPointer(this.editable ? this.editTool() : { click: () => {} });
       this.viewer.setVisible(this.onScreen !== false);
       await this.load();
     });
     return this.ready;
+  }
+
+  /** Keys and pointer gestures on the viewer's canvas (a new one after a fallback or a resume). */
+  bindCanvas() {
+    this.el.canvas = this.viewer.canvas;
+    this.el.canvas.addEventListener('keydown', (e) => this.guard(() => this.onKey(e)));
+    this.viewer.bindPointer(this.editable ? this.editTool() : { click: () => {} });
+  }
+
+  /**
+   * Far from the viewport for a while (showing.js): frees the renderer and its graphics
+   * context, keeping a still picture for print; not while a pose is dragged or it has the focus.
+   */
+  suspend() {
+    const v = this.viewer;
+    if (!v?.renderer || !this.model.motion || this.drag || this.root.activeElement) return;
+    keepStill(this);
+    v.suspend();
+  }
+
+  /** Near the viewport again: a new renderer on a fresh canvas, drawn as it was left. */
+  resume() {
+    const v = this.viewer;
+    if (!v?.suspended || this.resuming) return;
+    this.resuming = this.guard(async () => {
+      try {
+        await serially(() => (this.viewer === v ? v.resume() : null));
+      } finally {
+        this.resuming = null;
+      }
+      if (this.viewer !== v || this.disposed) return;
+      this.kept = null;
+      this.bindCanvas();
+      v.setVisible(this.onScreen !== false);
+    });
   }
 
   /** Frees the GPU data, the motion and the observers; the figure is done. */
@@ -95,6 +128,7 @@ export class Figure {
     this.disposed = true;
     this.generation++;
     this.wake?.();
+    clearTimeout(this.suspendTimer);
     this.observer?.disconnect();
     this.observer = null;
     this.labels.dispose();

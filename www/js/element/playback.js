@@ -215,7 +215,11 @@ export class Playback {
     if (!(typeof scale === 'number' && scale > 0 && scale <= MAX_SCALE)) throw new RangeError(`scale: ${scale} is not a number in (0, ${MAX_SCALE}]`);
     if (transparent && type === 'image/jpeg') throw new RangeError('transparent: image/jpeg has no transparency (use image/png or image/webp)');
     const v = this.viewer;
-    if (!v?.renderer) throw new RangeError('the figure has not started yet (a lazy figure starts near the viewport; await ready, or loading="eager")');
+    if (!v?.renderer) {
+      throw new RangeError(v?.suspended
+        ? 'the figure rests while far from the viewport (it draws again when scrolled near)'
+        : 'the figure has not started yet (a lazy figure starts near the viewport; await ready, or loading="eager")');
+    }
     return picture(v, { scale, transparent: !!transparent, gizmo: !!gizmo });
   }
 

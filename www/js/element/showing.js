@@ -4,6 +4,8 @@
 //   frame is drawn;
 // - a started figure draws only while it is near the viewport (the IntersectionObserver) and
 //   rendered visibly (not on a hidden slide: display, visibility or opacity, checkVisibility);
+//   far from the viewport for SUSPEND_MS it frees its renderer (GPU data, and the WebGL context
+//   a browser keeps only a few of) and makes a new one when it comes back;
 // - print (print media or beforeprint): each started figure shows a still picture of its
 //   current frame, a 2-D canvas, which prints where a WebGPU or WebGL canvas prints blank.
 //   The print listeners are the figures' only ones outside their shadow trees: one set for the
@@ -14,6 +16,8 @@ import { oneOf } from './options.js';
 /** How near the viewport a lazy figure starts (and a started one keeps drawing). */
 const NEAR = '200px 0px';
 const LOADING = ['lazy', 'eager'];
+/** How long a started figure stays far from the viewport before it frees its renderer. */
+const SUSPEND_MS = 2000;
 
 /** The `loading` option (checked): 'lazy' or 'eager'. */
 export const loadingOf = (o) => (o.loading == null || o.loading === '' ? 'lazy' : oneOf('loading', o.loading, LOADING));
@@ -34,7 +38,11 @@ export function whenNear(fig) {
     fig.observer = new IntersectionObserver(
       (entries) => {
         fig.onScreen = entries[entries.length - 1].isIntersecting;
-        if (fig.onScreen) fig.wake?.();
+        clearTimeout(fig.suspendTimer);
+        if (fig.onScreen) {
+          fig.wake?.();
+          fig.resume();
+        } else fig.suspendTimer = setTimeout(() => fig.suspend(), SUSPEND_MS);
         fig.viewer?.setVisible(fig.onScreen);
       },
       { rootMargin: NEAR },
@@ -82,11 +90,25 @@ const before = () => still(true);
 const after = () => still(false);
 const change = (e) => still(e.matches);
 
+/** Keeps a still picture of `fig` (before its renderer is freed): print shows it. */
+export function keepStill(fig) {
+  try {
+    fig.kept = picture(fig.viewer);
+    fig.kept.setAttribute('part', 'still');
+  } catch {
+    fig.kept = null;
+  }
+}
+
 function still(on) {
   for (const fig of printing) {
     const box = fig.el.still;
     box.replaceChildren();
     box.hidden = true;
+    if (on && fig.viewer?.suspended && fig.kept) {
+      box.append(fig.kept);
+      box.hidden = false;
+    }
     if (!on || !fig.viewer?.renderer || !fig.model.motion) continue;
     try {
       const c = picture(fig.viewer);

@@ -117,6 +117,13 @@ export class Viewer {
     if (!this.webgl2 && hasGpu && this.backend !== 'WebGPU') {
       this.warn('WebGPU is present but has no usable adapter; using WebGL2.');
     }
+    this.loop = this.loop.bind(this);
+    this.visible = true;
+    this.rendererOpened();
+  }
+
+  /** The renderer's fixed meshes and background, the resize observer and the frame loop. */
+  rendererOpened() {
     if (this.dark) this.renderer.setBackground(...BACKGROUND.dark);
     this.renderer.setMesh(SLOT.handle, 'unit-sphere', true);
     this.renderer.setMesh(SLOT.arrow, 'unit-cone', true);
@@ -125,9 +132,41 @@ export class Viewer {
       this.requestDraw();
     });
     this.resizeObserver.observe(this.canvas);
-    this.loop = this.loop.bind(this);
-    this.visible = true;
-    this.raf = requestAnimationFrame(this.loop);
+    this.dirty = true;
+    this.raf = this.visible ? requestAnimationFrame(this.loop) : 0;
+  }
+
+  /**
+   * Frees the renderer (its GPU data, and the canvas's WebGL context, of which a browser keeps
+   * only a few alive) and stops drawing, keeping the model, camera and playhead; resume() draws
+   * again on a fresh canvas. False when there is no renderer to free.
+   */
+  suspend() {
+    if (!this.renderer) return false;
+    if (this.raf) cancelAnimationFrame(this.raf);
+    this.raf = 0;
+    this.resizeObserver?.disconnect();
+    this.resizeObserver = null;
+    this.renderer.free();
+    this.renderer = null;
+    // A WebGL canvas holds its context until it is lost or collected (a WebGPU one gives null).
+    this.canvas.getContext('webgl2')?.getExtension('WEBGL_lose_context')?.loseContext();
+    this.suspended = true;
+    return true;
+  }
+
+  /** After suspend(): a renderer of the same backend on a fresh canvas, everything rebuilt. */
+  async resume() {
+    if (!this.suspended) return;
+    this.replaceCanvas();
+    this.sizeCache = null;
+    const { w, h } = this.pixelSize();
+    this.renderer = await this.wasm.Renderer.create(this.canvas, this.backend === 'WebGPU', w, h);
+    this.suspended = false;
+    this.rendererOpened();
+    this.meshesChanged();
+    this.rebuild();
+    this.updateAnim();
   }
 
   /**
