@@ -299,7 +299,7 @@ test('bad attributes and sources: a message naming attribute and value in that f
   const { page, problems } = await open(COURSE);
   try {
     const cases = [
-      ['scene', 'no_such_scene'],
+      ['preset', 'no_such_preset'],
       ['levels', '99'],
       ['scheme', 'cubic'],
       ['controls', 'most'],

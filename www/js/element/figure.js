@@ -10,7 +10,7 @@ import { DEFAULT_NAME, bindChrome, buildChrome, onKey, refreshChrome, timeChange
 import { editTool } from './edit-tool.js';
 import { Labels } from './labels.js';
 import {
-  CONTROLS, DEFAULT_SHOW, LAYERS, LAYER_FIELD, MAX_STROBE, OptionError, THEMES, TOUCH, bool, cameraView, number, oneOf,
+  CONTROLS, DEFAULT_SHOW, canonical, LAYERS, LAYER_FIELD, MAX_STROBE, OptionError, THEMES, TOUCH, bool, cameraView, number, oneOf,
   subdivisionOptions,
 } from './options.js';
 import { Playback, describePose, schemeName } from './playback.js';
@@ -42,7 +42,7 @@ export class Figure {
 
   /** Starts the wasm module and the viewer (once); resolves when the first motion is drawn. */
   start(options) {
-    this.opts = { ...options };
+    this.opts = canonical(options);
     printable(this);
     this.guard(() => this.applyChrome());
     this.ready = this.guard(async () => {
@@ -187,12 +187,13 @@ export class Figure {
 
   /** Changes options (a partial object); a change of source reloads, the rest applies in place. */
   setOptions(patch) {
+    patch = canonical(patch);
     const before = this.opts;
     this.opts = { ...this.opts, ...patch };
     if ('loading' in patch && patch.loading === 'eager') this.wake?.();
     if ('poster' in patch) showPoster(this);
     if (!this.viewer) return this.guard(() => this.applyChrome());
-    const reload = ['scene', 'src', 'share', 'inline'].some((k) => k in patch && patch[k] !== before[k]);
+    const reload = ['preset', 'src', 'share', 'inline'].some((k) => k in patch && patch[k] !== before[k]);
     if ('editable' in patch && bool(patch.editable) !== bool(before.editable)) {
       // The pointer listeners live on the canvas: a fresh canvas takes the new tool.
       this.model.selected = -1;
@@ -286,12 +287,12 @@ export class Figure {
     const { model } = this;
     const w = this.wasm;
     let motion;
-    const attr = this.opts.src ? 'src' : this.opts.share ? 'share' : this.opts.inline != null ? 'script' : 'scene';
+    const attr = this.opts.src ? 'src' : this.opts.share ? 'share' : this.opts.inline != null ? 'script' : 'preset';
     try {
       motion = src.scene ? w.Motion.fromScene(src.scene) : new w.Motion(src.doc, src.options ?? {});
       if (!src.scene && src.view?.scene) model.view.scene = String(src.view.scene);
     } catch (e) {
-      throw new OptionError(attr, attr === 'scene' ? src.scene : attr === 'script' ? 'application/json' : this.opts[attr], e.message);
+      throw new OptionError(attr, attr === 'preset' ? src.scene : attr === 'script' ? 'application/json' : this.opts[attr], e.message);
     }
     const saved = restorePersisted(this.opts.persist);
     if (saved) {

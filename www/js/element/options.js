@@ -3,9 +3,24 @@
 
 /** Attributes the element watches (each maps onto an option of mount()). */
 export const ATTRIBUTES = [
-  'scene', 'src', 'share', 'scheme', 'levels', 'j', 'rules', 'strobe', 'show', 'autoplay', 'loop',
+  'preset', 'src', 'share', 'scheme', 'levels', 'j', 'rules', 'strobe', 'show', 'autoplay', 'loop',
   'speed', 'editable', 'controls', 'camera', 'theme', 'persist', 'alt', 'loading', 'poster', 'touch-action',
+  'scene',
 ];
+/** Former names of options, kept for one release: former name → name. */
+export const ALIASES = { scene: 'preset' };
+
+/** `patch` with the former option names replaced by the current ones (a current name wins). */
+export function canonical(patch) {
+  const out = { ...patch };
+  for (const [old, now] of Object.entries(ALIASES)) {
+    if (old in out) {
+      if (!(now in out)) out[now] = out[old];
+      delete out[old];
+    }
+  }
+  return out;
+}
 /** Layers of the `show` option, and those shown by default. */
 export const LAYERS = ['strobe', 'control', 'trajectories', 'polyscrew', 'polygon', 'triads', 'grid'];
 export const DEFAULT_SHOW = 'strobe control trajectories polygon triads grid';
@@ -14,7 +29,7 @@ export const LAYER_FIELD = {
   polygon: 'showPolygon', triads: 'showTriads', grid: 'showGrid',
 };
 const SCHEMES = ['bspline', 'fourpoint', 'jarek', 'j'];
-const RULES = ['direct', 'split'];
+const RULES = ['direct', 'split-then-tweak', 'split'];
 export const CONTROLS = ['none', 'minimal', 'full'];
 export const THEMES = ['light', 'dark'];
 /** What a touch on a figure without the focus leaves to the page (`touch-action`). */
@@ -81,5 +96,5 @@ export function optionsOf(el) {
   for (const b of ['autoplay', 'editable']) if (o[b] === '') o[b] = true;
   const script = el.querySelector(':scope > script[type="application/json"]');
   if (script) o.inline = script.textContent;
-  return o;
+  return canonical(o);
 }

@@ -4,11 +4,11 @@
 // the files it names). This file is the entry: the element, mount() and the handle.
 //
 //   <script type="module" src=".../element/screw-bender.js"></script>
-//   <screw-bender scene="l_cycle_rotated" levels="4" autoplay>caption text</screw-bender>
+//   <screw-bender preset="l_cycle_rotated" levels="4" autoplay>caption text</screw-bender>
 //
 // Sources (the first present wins): `src` (URL of a motion .json or .glb), `share` (a share-link
 // payload, the part after `#s=`), an inline <script type="application/json"> child (a motion
-// document), `scene` (a preset id). Options: scheme, levels, j, rules, strobe, show (layers:
+// document), `preset` (a preset id; `scene`, its former name, still works). Options: scheme, levels, j, rules, strobe, show (layers:
 // strobe control trajectories polyscrew polygon triads grid), autoplay, loop, speed, editable,
 // controls (none | minimal | full), camera (iso | front | side | top, or "yaw pitch [distance]"
 // in degrees and scene units), theme (light | dark), persist (a localStorage key; without it the
@@ -77,7 +77,7 @@ export class FigureHandle {
   }
 
   set document(doc) {
-    this.figure.setOptions({ inline: JSON.stringify(doc), src: null, share: null, scene: null });
+    this.figure.setOptions({ inline: JSON.stringify(doc), src: null, share: null, preset: null });
   }
 
   get options() {

@@ -54,9 +54,9 @@ export async function fetchSource(o, w, scenes) {
       throw new OptionError('script', 'application/json', `not JSON: ${e.message}`);
     }
   }
-  const id = o.scene || 'l_cycle_rotated';
+  const id = o.preset || 'l_cycle_rotated';
   const info = scenes.find((s) => s.id === id);
-  if (!info) throw new OptionError('scene', id, `unknown scene (known: ${scenes.map((s) => s.id).join(', ')})`);
+  if (!info) throw new OptionError('preset', id, `unknown preset (known: ${scenes.map((s) => s.id).join(', ')})`);
   return { scene: id };
 }
 
