@@ -23,10 +23,12 @@ export interface CameraState {
 /**
  * The attributes of <screw-bender> (strings in HTML; a framework may pass numbers and booleans,
  * which the element reads the same way). Sources: the first present of `src`, `share`, an inline
- * `<script type="application/json">` child, `scene`.
+ * `<script type="application/json">` child, `preset`.
  */
 export interface ScrewBenderAttributes {
   /** A preset id, e.g. `'l_cycle_rotated'`. */
+  preset?: string;
+  /** @deprecated Renamed to `preset`. */
   scene?: string;
   /** URL of a motion `.json` document or a `.glb` / `.gltf` / `.csv` file. */
   src?: string;

@@ -9,7 +9,9 @@ export type Layer = 'strobe' | 'control' | 'trajectories' | 'polyscrew' | 'polyg
  * booleans may be given as such (attributes are strings: `levels="4"`, `autoplay`).
  */
 export interface ViewerOptions {
-  /** A preset id (see `scenes()` of the math module), e.g. `'l_cycle_rotated'`. */
+  /** A preset id (see `presets()` of the math module), e.g. `'l_cycle_rotated'`. */
+  preset?: string;
+  /** @deprecated Renamed to `preset`. */
   scene?: string;
   /** URL of a motion `.json` document or a `.glb` / `.gltf` / `.csv` file. */
   src?: string;
