@@ -1,3 +1,4 @@
+// e2e-backends: webgpu webgl2 (pictures are drawn and read back by each renderer)
 // <screw-bender> as a media element and a camera (www/js/element/playback.js): currentTime,
 // duration, paused, playbackRate (backwards too), loop, play({repetitions}) and the events play,
 // pause, seeked, timeupdate, ended against a scripted sequence; the camera property and

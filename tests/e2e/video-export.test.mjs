@@ -1,3 +1,4 @@
+// e2e-backends: webgpu webgl2 (frames are read back from each backend's canvas and encoded)
 // End-to-end: videos of one cycle out of the playground (editor/media.js, muxed by mediabunny):
 // MP4 with H.264 and WebM, each a real download whose container holds every frame at the motion's
 // times (the boxes and elements read here, not by mediabunny) and which a <video> plays with the
