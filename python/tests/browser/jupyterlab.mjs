@@ -17,6 +17,11 @@ try {
   const page = await browser.newPage({ viewport: { width: 1280, height: 1000 } });
   const problems = [];
   page.on('pageerror', (e) => problems.push(e.message));
+  const consoleErrors = [];
+  page.on('console', (m) => {
+    if (m.type() === 'error') consoleErrors.push(m.text().slice(0, 300));
+  });
+  out.console = consoleErrors;
   await page.goto(url);
   await page.waitForFunction(() => window.jupyterapp?.shell?.currentWidget?.sessionContext?.session?.kernel, null, { timeout: 180000 });
   await page.waitForFunction(() => window.jupyterapp.shell.currentWidget.sessionContext.session.kernel.status === 'idle', null, { timeout: 180000 });
@@ -53,7 +58,12 @@ try {
   // Python -> figure.
   const version = await page.evaluate(() => Number(document.querySelector('.screwbender-figure').dataset.posesVersion || 0));
   out.setPoses = await run('Q = fig.poses.copy(); Q[2, :3] += [0, 0, 2.5]; fig.poses = Q; print("set")');
-  await page.waitForFunction((v) => Number(document.querySelector('.screwbender-figure').dataset.posesVersion || 0) > v, version, { timeout: 30000 });
+  try {
+    await page.waitForFunction((v) => Number(document.querySelector('.screwbender-figure').dataset.posesVersion || 0) > v, version, { timeout: 60000 });
+  } catch (e) {
+    console.error(JSON.stringify({ ...out, problems }));
+    throw e;
+  }
   await page.waitForTimeout(1000);
   const moved = await shot(0, 'jupyterlab-python-to-figure.png');
   out.pictureChanged = await page.evaluate(async ([a, b]) => {
@@ -92,6 +102,7 @@ try {
   out.observed = (await run('print(len(moves))')).trim();
   await shot(0, 'jupyterlab-after-drag.png');
   out.problems = problems;
+  delete out.console;
   console.log(JSON.stringify(out));
 } finally {
   await browser.close();
