@@ -25,11 +25,18 @@ try {
   await page.goto(url);
   await page.waitForFunction(() => window.jupyterapp?.shell?.currentWidget?.sessionContext?.session?.kernel, null, { timeout: 180000 });
   await page.waitForFunction(() => window.jupyterapp.shell.currentWidget.sessionContext.session.kernel.status === 'idle', null, { timeout: 180000 });
-  await page.evaluate(() => window.jupyterapp.commands.execute('notebook:run-all-cells'));
-  await page.waitForFunction(() => {
-    const figs = [...document.querySelectorAll('.screwbender-figure')];
-    return figs.length === 2 && figs.every((f) => f.dataset.ready === 'true');
-  }, null, { timeout: 240000 });
+  // The cells one at a time, each figure ready before the next starts.
+  for (let cell = 0; cell < 2; cell++) {
+    await page.evaluate(async (i) => {
+      const panel = window.jupyterapp.shell.currentWidget;
+      panel.content.activeCellIndex = i;
+      await window.jupyterapp.commands.execute('notebook:run-cell');
+    }, cell);
+    await page.waitForFunction((n) => {
+      const figs = [...document.querySelectorAll('.screwbender-figure')];
+      return figs.length === n && figs.every((f) => f.dataset.ready === 'true');
+    }, cell + 1, { timeout: 240000 });
+  }
   await page.waitForTimeout(2000);
 
   /** Runs `code` in the notebook's kernel; resolves with its standard output. */
