@@ -70,7 +70,8 @@ class Figure(anywidget.AnyWidget):
     set ``Figure.embed_static = False`` to leave it out.
     """
 
-    _esm = _BUNDLE if _BUNDLE.exists() else "export default { render() {} };"
+    # The module's text, not its path: a path makes anywidget watch the file for changes.
+    _esm = _BUNDLE.read_text(encoding="utf-8") if _BUNDLE.exists() else "export default { render() {} };"
 
     #: Whether the display data carries the static copy of the figure (see the class doc).
     embed_static = True

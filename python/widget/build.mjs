@@ -1,6 +1,7 @@
 // Bundles the notebook figure (figure.js) into screwbender/static/figure.js with esbuild (the
 // root node_modules): one ES module holding the viewer's sources, its stylesheet, the bunny
-// preset's mesh and the playground's WebAssembly module (WebGPU and WebGL2 in one module), so
+// preset's mesh and the figure's two WebAssembly renderer modules (WebGPU, and WebGL2 where
+// WebGPU has no adapter; only the one the browser draws with is instantiated), so
 // that a notebook, a JupyterLab, VS Code or an exported HTML page needs no server, no CDN and
 // no network.
 //
@@ -10,7 +11,7 @@
 // stylesheet link of element/chrome.js becomes a <style> with the CSS text (a bundle has no
 // folder to link into); the bunny mesh URL of view/drawing.js becomes a data: URL.
 //
-//   node python/widget/build.mjs [WASM_PKG_DIR]     # default www/pkg (scripts/serve.sh builds it)
+//   node python/widget/build.mjs [WWW_DIR]   # default www/ (pkg-webgpu/ and pkg-gl/, scripts/serve.sh)
 import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -21,10 +22,12 @@ const ROOT = path.resolve(HERE, '../..');
 const require = createRequire(path.join(ROOT, 'package.json'));
 const esbuild = require('esbuild');
 
-const pkg = path.resolve(process.argv[2] ?? path.join(ROOT, 'www/pkg'));
-const glue = path.join(pkg, 'screwbender.js');
-const wasm = path.join(pkg, 'screwbender_bg.wasm');
-for (const f of [glue, wasm]) if (!fs.existsSync(f)) throw new Error(`${f} is missing: build the playground's wasm (scripts/serve.sh) first`);
+const www = path.resolve(process.argv[2] ?? path.join(ROOT, 'www'));
+const glue = path.join(www, 'pkg-webgpu/screwbender.js');
+const wasm = path.join(www, 'pkg-webgpu/screwbender_bg.wasm');
+const glueGl = path.join(www, 'pkg-gl/screwbender.js');
+const wasmGl = path.join(www, 'pkg-gl/screwbender_bg.wasm');
+for (const f of [glue, wasm, glueGl, wasmGl]) if (!fs.existsSync(f)) throw new Error(`${f} is missing: build the playground's wasm (scripts/serve.sh) first`);
 const out = path.join(ROOT, 'python/screwbender/static/figure.js');
 
 /** Replaces `from` by `to` in `text`, failing loudly when the source no longer has it. */
@@ -42,9 +45,11 @@ const adapt = {
       loader: 'js',
       contents: `
         import init, * as glue from ${JSON.stringify(glue)};
+        import initGl, * as glueGl from ${JSON.stringify(glueGl)};
         import bytes from ${JSON.stringify(wasm)};
+        import bytesGl from ${JSON.stringify(wasmGl)};
         export const loadMain = async () => ({ ...glue, default: () => init({ module_or_path: bytes }) });
-        export const loadGl = null;`,
+        export const loadGl = async () => ({ ...glueGl, default: () => initGl({ module_or_path: bytesGl }) });`,
     }));
     build.onLoad({ filter: /element[\\/]wasm\.js$/ }, (a) => {
       const text = fs.readFileSync(a.path, 'utf8');
@@ -85,5 +90,6 @@ const text = fs.readFileSync(out, 'utf8');
 // here) is the one use of import.meta left: any other is a path the bundle cannot resolve.
 const rest = text.replaceAll('new URL("screwbender_bg.wasm",import.meta.url)', '');
 if (rest.includes('import.meta')) throw new Error(`${out}: uses import.meta (a path the bundle cannot resolve)`);
-console.log(`${path.relative(ROOT, out)}: ${(fs.statSync(out).size / 1e6).toFixed(2)} MB (wasm ${(fs.statSync(wasm).size / 1e6).toFixed(2)} MB before base64)`);
+const wasmBytes = fs.statSync(wasm).size + fs.statSync(wasmGl).size;
+console.log(`${path.relative(ROOT, out)}: ${(fs.statSync(out).size / 1e6).toFixed(2)} MB (wasm ${(wasmBytes / 1e6).toFixed(2)} MB before base64)`);
 void result;

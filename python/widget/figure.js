@@ -66,14 +66,20 @@ function render({ model, el }) {
     if (sent && JSON.stringify(rows) === sent) return;
     const motion = handle.motion;
     const doc = documentOf(model);
-    if (motion && handle.viewer && motion.poseCount === rows.length && motion.closed === doc.closed) {
-      // In place: the camera, the selection and the playhead stay.
-      motion.loadDocument(doc);
-      handle.viewer.rebuild();
-    } else {
+    try {
+      if (motion && handle.viewer && motion.poseCount === rows.length && motion.closed === doc.closed) {
+        // In place: the camera, the selection and the playhead stay.
+        motion.loadDocument(doc);
+        handle.viewer.rebuild();
+      } else {
+        handle.document = doc;
+      }
+    } catch {
+      // The figure was not ready for an in-place change (still loading): load the document.
       handle.document = doc;
+    } finally {
+      host.dataset.posesVersion = String((Number(host.dataset.posesVersion) || 0) + 1);
     }
-    host.dataset.posesVersion = String((Number(host.dataset.posesVersion) || 0) + 1);
   };
   const onOptions = () => {
     handle.options = figureOptions(model);

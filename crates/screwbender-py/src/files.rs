@@ -10,12 +10,11 @@ use pyo3::prelude::*;
 use screwbender::mesh::Mesh;
 use screwbender::{
     export_motion, import_motion_file, presets, Error, ErrorKind, ExportFormat, ExportSamples,
-    ExportSettings, MotionDocument, NodeSelection, PipMorph, SamplingMode, DEFAULT_TOLERANCE,
-    MAX_GLTF_BYTES,
+    ExportSettings, MotionDocument, NodeSelection, PipMorph, SamplingMode, Subdivision,
+    DEFAULT_TOLERANCE, MAX_GLTF_BYTES,
 };
 
 use crate::convert::detached;
-use crate::motion::State;
 
 /// An `OSError` of the matching subclass whose message names `path`.
 fn os_error(path: &Path, e: std::io::Error) -> PyErr {
@@ -126,30 +125,34 @@ fn format_of(path: &Path, format: Option<&str>) -> PyResult<Option<ExportFormat>
     })
 }
 
-/// Writes the motion of `state` to `path`; returns the number of samples written.
-pub fn export(py: Python<'_>, state: &State, path: &Path, o: &ExportOptions) -> PyResult<usize> {
+/// Writes the motion of `doc` subdivided by `sub` to `path`; returns the number of samples written.
+pub fn export(
+    py: Python<'_>,
+    doc: &MotionDocument,
+    sub: Subdivision,
+    path: &Path,
+    o: &ExportOptions,
+) -> PyResult<usize> {
     let write = |p: &Path, data: &[u8]| std::fs::write(p, data).map_err(|e| os_error(p, e));
     let Some(format) = format_of(path, o.format)? else {
-        write(path, state.doc.to_json().as_bytes())?;
-        return Ok(state.doc.poses.len());
+        write(path, doc.to_json().as_bytes())?;
+        return Ok(doc.poses.len());
     };
     if o.tolerance.is_some() && o.fps.is_some() {
         return Err(PyValueError::new_err(
             "fps: give either tolerance (adaptive sampling) or fps (fixed rate), not both",
         ));
     }
-    let mesh = state
-        .doc
+    let mesh = doc
         .name
         .as_deref()
         .and_then(presets::preset)
         .map(|sc| Mesh::for_preset(&sc));
     // A preset with one shape per control pose (A8) exports its morph, as the CLI does.
-    let morph = state
-        .doc
+    let morph = doc
         .name
         .as_deref()
-        .and_then(|id| PipMorph::for_preset(id, state.doc.poses.len(), state.doc.closed));
+        .and_then(|id| PipMorph::for_preset(id, doc.poses.len(), doc.closed));
     let sampling = match o.fps {
         Some(fps) => SamplingMode::FixedRate(fps),
         None => SamplingMode::Adaptive(o.tolerance.unwrap_or(DEFAULT_TOLERANCE)),
@@ -177,8 +180,6 @@ pub fn export(py: Python<'_>, state: &State, path: &Path, o: &ExportOptions) -> 
         morph: morph.as_ref(),
         bin_name: &bin_name,
     };
-    let sub = state.subdivision;
-    let doc = &state.doc;
     let settings = &settings;
     if format == ExportFormat::Csv {
         let samples = detached(py, || ExportSamples::new(doc, sub, settings))?

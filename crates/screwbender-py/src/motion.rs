@@ -466,7 +466,8 @@ impl PyMotion {
             radius,
             control_nodes,
         };
-        files::export(py, &self.state, Path::new(&path), &options)
+        let State { doc, subdivision } = &self.state;
+        files::export(py, doc, *subdivision, Path::new(&path), &options)
     }
 
     /// An independent copy.

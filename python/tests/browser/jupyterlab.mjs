@@ -17,14 +17,26 @@ try {
   const page = await browser.newPage({ viewport: { width: 1280, height: 1000 } });
   const problems = [];
   page.on('pageerror', (e) => problems.push(e.message));
+  const consoleErrors = [];
+  page.on('console', (m) => {
+    if (m.type() === 'error') consoleErrors.push(m.text().slice(0, 300));
+  });
+  out.console = consoleErrors;
   await page.goto(url);
   await page.waitForFunction(() => window.jupyterapp?.shell?.currentWidget?.sessionContext?.session?.kernel, null, { timeout: 180000 });
   await page.waitForFunction(() => window.jupyterapp.shell.currentWidget.sessionContext.session.kernel.status === 'idle', null, { timeout: 180000 });
-  await page.evaluate(() => window.jupyterapp.commands.execute('notebook:run-all-cells'));
-  await page.waitForFunction(() => {
-    const figs = [...document.querySelectorAll('.screwbender-figure')];
-    return figs.length === 2 && figs.every((f) => f.dataset.ready === 'true');
-  }, null, { timeout: 240000 });
+  // The cells one at a time, each figure ready before the next starts.
+  for (let cell = 0; cell < 2; cell++) {
+    await page.evaluate(async (i) => {
+      const panel = window.jupyterapp.shell.currentWidget;
+      panel.content.activeCellIndex = i;
+      await window.jupyterapp.commands.execute('notebook:run-cell');
+    }, cell);
+    await page.waitForFunction((n) => {
+      const figs = [...document.querySelectorAll('.screwbender-figure')];
+      return figs.length === n && figs.every((f) => f.dataset.ready === 'true');
+    }, cell + 1, { timeout: 240000 });
+  }
   await page.waitForTimeout(2000);
 
   /** Runs `code` in the notebook's kernel; resolves with its standard output. */
@@ -53,7 +65,12 @@ try {
   // Python -> figure.
   const version = await page.evaluate(() => Number(document.querySelector('.screwbender-figure').dataset.posesVersion || 0));
   out.setPoses = await run('Q = fig.poses.copy(); Q[2, :3] += [0, 0, 2.5]; fig.poses = Q; print("set")');
-  await page.waitForFunction((v) => Number(document.querySelector('.screwbender-figure').dataset.posesVersion || 0) > v, version, { timeout: 30000 });
+  try {
+    await page.waitForFunction((v) => Number(document.querySelector('.screwbender-figure').dataset.posesVersion || 0) > v, version, { timeout: 60000 });
+  } catch (e) {
+    console.error(JSON.stringify({ ...out, problems }));
+    throw e;
+  }
   await page.waitForTimeout(1000);
   const moved = await shot(0, 'jupyterlab-python-to-figure.png');
   out.pictureChanged = await page.evaluate(async ([a, b]) => {
@@ -92,6 +109,7 @@ try {
   out.observed = (await run('print(len(moves))')).trim();
   await shot(0, 'jupyterlab-after-drag.png');
   out.problems = problems;
+  delete out.console;
   console.log(JSON.stringify(out));
 } finally {
   await browser.close();

@@ -49,7 +49,7 @@ export class Figure {
       showPoster(this);
       await whenNear(this);
       if (this.disposed) return;
-      const w = await loadWasm();
+      const w = await loadWasm({ webgl2: this.opts.backend === 'webgl2' });
       if (this.disposed) return;
       this.wasm = w;
       this.limits = w.limits();

@@ -4,11 +4,22 @@
 import { loadMain, loadGl } from './modules.js';
 
 let wasmReady = null;
+let glReady = null;
 /**
  * The one wasm module instance all figures share (initialised on first use): the main module,
- * or the WebGL2 module when there is one and WebGPU offers no usable adapter.
+ * or the WebGL2 module when there is one and WebGPU offers no usable adapter. A figure that asks
+ * for WebGL2 (`webgl2`) gets the WebGL2 module where there is one, shared by such figures, since
+ * the WebGPU-only module cannot draw with WebGL2.
  */
-export function loadWasm() {
+export function loadWasm({ webgl2 = false } = {}) {
+  if (webgl2 && loadGl) {
+    glReady ??= (async () => {
+      const m = await loadGl();
+      await m.default();
+      return m;
+    })();
+    return glReady;
+  }
   wasmReady ??= (async () => {
     let adapter = null;
     if (loadGl && navigator.gpu) {
