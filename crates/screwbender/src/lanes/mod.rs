@@ -20,8 +20,8 @@ mod avx;
 mod avx512;
 #[cfg(lanes)]
 mod dispatch;
-#[cfg(portable_lanes)]
 pub(crate) mod pair;
+#[cfg(portable_lanes)]
 mod portable;
 mod real;
 pub(crate) mod trig;
