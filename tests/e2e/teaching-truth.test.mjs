@@ -95,6 +95,16 @@ test(`${BACKEND}: the methods table on the L cycle: C¹ jumps are 0, SLERP + lin
   assert.deepEqual(problems, []);
 });
 
+/** After Ease in / out: the times and velocities in use, du/dt of the timing map at its first, middle and last sample, and the banner. */
+const easeState = () =>
+  sb(async () => {
+    const { app } = window.screwbender;
+    const { timingMap } = await import('./pkg/screwbender.js');
+    const m = app.motion;
+    const d = timingMap(app.keyTimes(), m.poseCount, m.closed, 400, app.velocities() ?? undefined);
+    return { times: app.keyTimes(), velocities: app.velocities(), first: d[2], last: d[d.length - 1], mid: d[3 * 200 + 2], banner: document.querySelector('#banner .msg').textContent };
+  });
+
 test(`${BACKEND}: Ease in / out gives du/dt = 0 at both ends, keeps the times, says so, and one undo takes it back`, async () => {
   await page.setViewportSize({ width: 1280, height: 800 });
   await sb(() => {
@@ -105,13 +115,7 @@ test(`${BACKEND}: Ease in / out gives du/dt = 0 at both ends, keeps the times, s
     window.screwbender.flushViews();
   });
   await page.locator('#dock section[data-view=timing] button', { hasText: 'Ease in / out' }).click();
-  const r = await sb(async () => {
-    const { app } = window.screwbender;
-    const { timingMap } = await import('./pkg/screwbender.js');
-    const m = app.motion;
-    const d = timingMap(app.keyTimes(), m.poseCount, m.closed, 400, app.velocities() ?? undefined);
-    return { times: app.keyTimes(), velocities: app.velocities(), first: d[2], last: d[d.length - 1], mid: d[3 * 200 + 2], banner: document.querySelector('#banner .msg').textContent };
-  });
+  const r = await easeState();
   assert.deepEqual(r.times, [0, 1, 3, 4, 6, 7], 'the times stay');
   // The samples of a cycle's map end one step before its end time: du/dt falls towards 0 there.
   assert.ok(Math.abs(r.first) < 1e-12 && Math.abs(r.last) < 0.1 * r.mid, `du/dt at the ends: ${r.first}, ${r.last} (middle ${r.mid})`);
@@ -128,13 +132,7 @@ test(`${BACKEND}: Ease in / out gives du/dt = 0 at both ends, keeps the times, s
     window.screwbender.flushViews();
   });
   await page.locator('#dock section[data-view=timing] button', { hasText: 'Ease in / out' }).click();
-  const open = await sb(async () => {
-    const { app } = window.screwbender;
-    const { timingMap } = await import('./pkg/screwbender.js');
-    const m = app.motion;
-    const d = timingMap(app.keyTimes(), m.poseCount, m.closed, 400, app.velocities() ?? undefined);
-    return { velocities: app.velocities(), first: d[2], last: d[d.length - 1], banner: document.querySelector('#banner .msg').textContent };
-  });
+  const open = await easeState();
   assert.deepEqual(open.velocities, [0, null, null, null, 0]);
   assert.ok(Math.abs(open.first) < 1e-12 && Math.abs(open.last) < 1e-12, `open: du/dt at the ends ${open.first}, ${open.last}`);
   assert.match(open.banner, /velocity 0 at poses 0 and 4/);
@@ -380,5 +378,35 @@ test(`${BACKEND}: the Top view frames the poses below the header, above the time
     await page.screenshot({ path: shotPath(`truth-top-${w}x${h}.png`) });
   }
   await page.setViewportSize({ width: 1280, height: 800 });
+  assert.deepEqual(problems, []);
+});
+
+test(`${BACKEND}: a preset is framed clear of the panel and the dock: pose 2's rotate gizmo of the tumbling cylinder stays between them`, async () => {
+  await page.setViewportSize({ width: 1280, height: 800 });
+  await sb(() => {
+    const { app } = window.screwbender;
+    app.ui.gui.open();
+    window.screwbender.openView('axes');
+    window.screwbender.flushViews();
+    app.loadPreset('cylinder5');
+    app.select(2);
+    app.setMode('rotate');
+  });
+  await waitFrames(page, 2);
+  const g = await sb(() => {
+    const { app } = window.screwbender;
+    const c = app.screenOfPose(2);
+    const radius = Math.max(...['ring-x', 'ring-y', 'ring-z'].map((n) => {
+      const p = app.screenOfGizmo(n);
+      return Math.hypot(p.x - c.x, p.y - c.y);
+    }));
+    const panel = document.getElementById('panel').getBoundingClientRect();
+    const dock = document.getElementById('dock').getBoundingClientRect();
+    return { c, radius, panelLeft: panel.left, panelBottom: panel.bottom, dockRight: dock.right };
+  });
+  assert.ok(g.c.x - g.radius > g.dockRight, `the rings reach x = ${(g.c.x - g.radius).toFixed(0)}, the dock ends at ${g.dockRight}`);
+  // Where the panel reaches down beside the rings, they stay left of it.
+  if (g.panelBottom > g.c.y - g.radius) assert.ok(g.c.x + g.radius < g.panelLeft, `the rings reach x = ${(g.c.x + g.radius).toFixed(0)}, the panel starts at ${g.panelLeft}`);
+  await page.screenshot({ path: shotPath('truth-gizmo.png') });
   assert.deepEqual(problems, []);
 });

@@ -222,8 +222,10 @@ export class App {
     this.viewer.updateAnim();
   }
 
+  /** Frames the control poses in the part of the view the page's cards and bars leave free (editor/viewpoint.js). */
   frameAll() {
-    this.viewer.frameAll();
+    if (this.parts?.viewpoint) this.parts.viewpoint.fit();
+    else this.viewer.frameAll();
   }
 
   setPlaying(on) {

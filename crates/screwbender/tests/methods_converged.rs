@@ -23,12 +23,12 @@ fn slerp_jumps(poses: &[Pose]) -> (f64, f64) {
         (b.origin - a.origin, w)
     };
     let (mut v, mut w) = (0.0f64, 0.0f64);
-    for i in 0..n {
+    for (i, pose) in poses.iter().enumerate() {
         let (dl, wl) = span(i + n - 1);
         let (dr, wr) = span(i);
         w = w.max((wr - wl).length());
         for p in POINTS {
-            let rp = poses[i].rotation * p;
+            let rp = pose.rotation * p;
             v = v.max(((dr + wr.cross(rp)) - (dl + wl.cross(rp))).length());
         }
     }

@@ -91,7 +91,7 @@ export default {
      * reach under the header otherwise).
      */
     function frameFree() {
-      app.frameAll();
+      app.viewer.frameAll();
       const canvas = app.canvas.getBoundingClientRect();
       let free = { left: canvas.left, top: canvas.top, width: canvas.width, height: canvas.height };
       for (const id of ['title', 'hint', 'toolbar', 'timeline', 'panel']) {
@@ -162,6 +162,11 @@ export default {
       frame() {
         frameFree();
         moved();
+      },
+      /** The same without saving the session (app.frameAll: a preset, an import, a session without a camera). */
+      fit() {
+        frameFree();
+        app.viewer.cameraMoved();
       },
       setOrtho,
       toggleFullscreen,
