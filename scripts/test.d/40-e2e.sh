@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Playground end-to-end tests (tests/e2e/, playwright-core + Debian Chromium), run twice:
 # once with the WebGPU flags (expects the WebGPU backend) and once forcing WebGL2.
-# Builds the playground first (release wasm with the renderer, like scripts/serve.sh).
+# Builds the playground first (scripts/serve.sh: its three wasm modules, shared with the npm build).
 # Screenshots of every preset land in artifacts/e2e-webgpu/ and artifacts/e2e-webgl2/.
 #
-#   SKIP_E2E_BUILD=1 scripts/test.d/40-e2e.sh   # reuse www/pkg as built
+#   SKIP_E2E_BUILD=1 scripts/test.d/40-e2e.sh   # reuse www/ as built
 #   E2E_BACKENDS=webgl2 scripts/test.d/40-e2e.sh  # one backend only
 set -euo pipefail
 # shellcheck source=scripts/lib.sh
