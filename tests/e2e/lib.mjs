@@ -40,8 +40,13 @@ async function freePort() {
 /** Serves www/ with scripts/serve.mjs on a free port; returns {url, stop()}. */
 export async function serveWww() {
   if (!fs.existsSync(path.join(ROOT, 'www/pkg-webgpu/screwbender_bg.wasm'))) throw new Error('build the wasm first (scripts/serve.sh)');
+  return serveDir(path.join(ROOT, 'www'));
+}
+
+/** Serves the folder `dir` with scripts/serve.mjs on a free port; returns {url, stop()}. */
+export async function serveDir(dir) {
   const port = await freePort();
-  const server = spawn(process.execPath, [path.join(ROOT, 'scripts/serve.mjs'), path.join(ROOT, 'www')], {
+  const server = spawn(process.execPath, [path.join(ROOT, 'scripts/serve.mjs'), dir], {
     env: { ...process.env, PORT: String(port), SERVE_QUIET: '1' },
     stdio: ['ignore', 'pipe', 'inherit'],
   });
