@@ -19,7 +19,6 @@ import path from 'node:path';
 import zlib from 'node:zlib';
 import { launch, serveDir as serve } from '../tests/e2e/lib.mjs';
 
-
 function args() {
   const a = process.argv.slice(2);
   const o = { dir: 'www', backend: 'webgpu', lesson: null, runs: 1, json: false, compare: null };
