@@ -152,7 +152,7 @@ wasm_module() {
 # renderer), for developers who want those without the playground. A module of its own, so that
 # the main entry stays light; -Os like the main module (speed matters more than a few KB here).
 if [[ ${FULL:-1} == 1 ]]; then
-  wasm_module files,methods,tracks,teaching "$PKG_DIR/full" -Os node
+  wasm_module export,methods,tracks,teaching "$PKG_DIR/full" -Os node
 fi
 
 if [[ ${VIEWER:-1} == 1 ]]; then

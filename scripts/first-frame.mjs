@@ -14,15 +14,10 @@
 // renderer drew the motion. With --lesson the page is ?lesson=NAME and the measure ends when the
 // lesson card is shown too (the frame and the card are what the visitor waits for). A file counts
 // when its response ended before that moment; files still in flight are listed apart.
-import { spawn } from 'node:child_process';
 import fs from 'node:fs';
-import net from 'node:net';
 import path from 'node:path';
 import zlib from 'node:zlib';
-import { fileURLToPath } from 'node:url';
-import { launch } from '../tests/e2e/lib.mjs';
-
-const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
+import { launch, serveDir as serve } from '../tests/e2e/lib.mjs';
 
 function args() {
   const a = process.argv.slice(2);
@@ -40,29 +35,6 @@ function args() {
   if (!['webgpu', 'webgl2'].includes(o.backend)) throw new Error(`--backend: webgpu or webgl2, not ${o.backend}`);
   if (!(Number.isInteger(o.runs) && o.runs >= 1)) throw new Error('--runs: a positive integer');
   return o;
-}
-
-async function freePort() {
-  return new Promise((resolve) => {
-    const s = net.createServer();
-    s.listen(0, '127.0.0.1', () => {
-      const { port } = s.address();
-      s.close(() => resolve(port));
-    });
-  });
-}
-
-async function serve(dir) {
-  const port = await freePort();
-  const server = spawn(process.execPath, [path.join(ROOT, 'scripts/serve.mjs'), dir], {
-    env: { ...process.env, PORT: String(port), SERVE_QUIET: '1' },
-    stdio: ['ignore', 'pipe', 'inherit'],
-  });
-  await new Promise((resolve, reject) => {
-    server.stdout.on('data', (d) => d.toString().includes('http://') && resolve());
-    server.on('exit', (c) => reject(new Error(`server exited ${c}`)));
-  });
-  return { url: `http://127.0.0.1:${port}/`, stop: () => server.kill() };
 }
 
 const gzipCache = new Map();

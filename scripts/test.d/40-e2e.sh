@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Playground end-to-end tests (tests/e2e/, playwright-core + Debian Chromium).
-# Builds the playground first (release wasm with the renderer, like scripts/serve.sh).
+# Builds the playground first (scripts/serve.sh: its three wasm modules, shared with the npm build).
 #
 # Every test file runs on WebGPU. A file whose behaviour depends on how the page draws (pixels,
 # the renderer's start-up and fallback, canvas captures) says so in a line of its own near the
@@ -12,7 +12,7 @@
 # SwiftShader draws on the other core); each file has its own server and browser.
 # Screenshots land in artifacts/e2e-webgpu/ and artifacts/e2e-webgl2/.
 #
-#   SKIP_E2E_BUILD=1 scripts/test.d/40-e2e.sh      # reuse www/pkg as built
+#   SKIP_E2E_BUILD=1 scripts/test.d/40-e2e.sh      # reuse www/ as built
 #   E2E_BACKENDS=webgl2 scripts/test.d/40-e2e.sh   # one backend only
 #   E2E_FILES="tests/e2e/viewer.test.mjs" scripts/test.d/40-e2e.sh   # some files only
 #   E2E_JOBS=1 scripts/test.d/40-e2e.sh            # one file at a time

@@ -122,7 +122,7 @@ test(`${BACKEND}: a dropped glTF sets the title and brings its mesh`, async () =
   await sb(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
   const bytes = await sb(async () => {
     const { exportMotion } = await import('./js/editor/files.js');
-    return [...exportMotion(window.screwbender.app, 'glb', {}, { save: false }).data];
+    return [...(await exportMotion(window.screwbender.app, 'glb', {}, { save: false })).data];
   });
   await sb(() => window.screwbender.app.loadPreset('cylinder5'));
   assert.doesNotMatch(await page.locator('#scene-title').textContent(), /L cycle/);

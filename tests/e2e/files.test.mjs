@@ -184,7 +184,7 @@ test(`${BACKEND}: a dropped OBJ becomes the object's mesh`, async () => {
   // expected here, but the mesh's 4 triangles must be there.
   const file = await page.evaluate(async () => {
     const { exportMotion } = await import('./js/editor/files.js');
-    const f = exportMotion(window.screwbender.app, 'gltf', {}, { save: false });
+    const f = await exportMotion(window.screwbender.app, 'gltf', {}, { save: false });
     return new TextDecoder().decode(f.data);
   });
   const json = JSON.parse(file);

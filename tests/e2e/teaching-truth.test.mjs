@@ -99,7 +99,7 @@ test(`${BACKEND}: the methods table on the L cycle: C¹ jumps are 0, SLERP + lin
 const easeState = () =>
   sb(async () => {
     const { app } = window.screwbender;
-    const { timingMap } = await import('./pkg/screwbender.js');
+    const { timingMap } = await app.analysis();
     const m = app.motion;
     const d = timingMap(app.keyTimes(), m.poseCount, m.closed, 400, app.velocities() ?? undefined);
     return { times: app.keyTimes(), velocities: app.velocities(), first: d[2], last: d[d.length - 1], mid: d[3 * 200 + 2], banner: document.querySelector('#banner .msg').textContent };

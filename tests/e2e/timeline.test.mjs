@@ -339,7 +339,7 @@ test(`${BACKEND}: the CSV and glTF exports follow the motion's key times and vel
   const out = await sb(async () => {
     const { exportMotion } = await import('./js/editor/files.js');
     const { app } = window.screwbender;
-    const csv = exportMotion(app, 'csv', { tolerance: 1e-4 }, { save: false });
+    const csv = await exportMotion(app, 'csv', { tolerance: 1e-4 }, { save: false });
     const rows = new TextDecoder().decode(csv.data).trim().split('\n');
     // Each row's (t, u) against the playback's map u = p(t) (which wraps u = 6 to 0 at 9 s).
     let worst = 0;
@@ -348,7 +348,7 @@ test(`${BACKEND}: the CSV and glTF exports follow the motion's key times and vel
       const d = Math.abs(u - app.motion.parameterAt(t));
       worst = Math.max(worst, Math.min(d, Math.abs(d - 6)));
     }
-    const gltf = exportMotion(app, 'gltf', {}, { save: false });
+    const gltf = await exportMotion(app, 'gltf', {}, { save: false });
     const json = JSON.parse(new TextDecoder().decode(gltf.data));
     const input = json.accessors[json.animations[0].samplers[0].input];
     return { header: rows[0], count: rows.length - 1, last: rows[rows.length - 1].split(',').slice(0, 2).map(Number), worst, gltf: [input.min[0], input.max[0]] };

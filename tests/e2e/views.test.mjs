@@ -152,7 +152,7 @@ test(`${BACKEND}: Timing retimes the plots; bad times are refused and change not
   // The glTF export uses the times: the animation lasts 12 s.
   const duration = await sb(async () => {
     const { exportMotion } = await import('./js/editor/files.js');
-    const f = exportMotion(window.screwbender.app, 'gltf', {}, { save: false });
+    const f = await exportMotion(window.screwbender.app, 'gltf', {}, { save: false });
     const json = JSON.parse(new TextDecoder().decode(f.data));
     const input = json.animations[0].samplers[0].input;
     return json.accessors[input].max[0];

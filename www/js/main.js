@@ -39,6 +39,8 @@ const loadPlayer = lazy('the lessons', (a) => import(a ? `./lessons/player.js?re
 const lessons = ready.then(
   async () => {
     try {
+      // Two animation frames: the viewer's first frame is drawn before the lessons are asked for.
+      await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
       const { startLessons } = await loadPlayer();
       return startLessons(app);
     } catch (e) {

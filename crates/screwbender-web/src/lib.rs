@@ -3,8 +3,8 @@
 //! * `MotionHandle` — the JS class `Motion`: an editable motion document with subdivision
 //!   options, and the smooth motion it defines (poses, samples, kinematics, span screws).
 //! * Free functions: `screw`, `screwPoses`, `screwPairs`, `screwInfo`, `posesToMatrices`,
-//!   `presets`, `limits`, `version`, `importMotionFile` (feature `files`; so is
-//!   `Motion.exportFile`), `methods` (feature `methods`: the comparison methods; see `Motion.methodSample`,
+//!   `presets`, `limits`, `version`, `importMotionFile` (feature `files`; `Motion.exportFile`
+//!   and `Motion.controlPosesCsv` are feature `export`), `methods` (feature `methods`: the comparison methods; see `Motion.methodSample`,
 //!   `compareMethods`, `quaternionSpline`); `Motion.keyframeTracks` (three.js keyframe arrays,
 //!   feature `tracks`); the teaching views' `subdividePolygon`, `polygonPresets`, `spanScrewsOf`,
 //!   `splitTweakStep`, `subdivideDecoupled`, `compareFrames` (feature `teaching`).
@@ -23,6 +23,8 @@ use wasm_bindgen::prelude::*;
 
 mod analysis;
 pub mod convert;
+#[cfg(feature = "export")]
+mod export;
 #[cfg(feature = "files")]
 mod files;
 #[cfg(feature = "methods")]

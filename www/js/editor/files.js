@@ -48,12 +48,17 @@ export function exportSettings(app, format, extra = {}) {
 }
 
 /**
- * Exports the motion; returns the ExportedFile (tests read it) or null after showing the
- * error. `download: false` only builds the file.
+ * Exports the motion; resolves to the ExportedFile (tests read it) or null after showing the
+ * error. `download: false` only builds the file. Motion.exportFile is the analysis module's
+ * (editor/modules.js): the first export fetches it, with a toast meanwhile.
  */
-export function exportMotion(app, format, extra = {}, { save = true } = {}) {
+export async function exportMotion(app, format, extra = {}, { save = true } = {}) {
   let file;
   try {
+    if (!app.motion.exportFile) {
+      app.ui?.toast('Loading the file writer…');
+      await app.analysis();
+    }
     file = app.motion.exportFile(exportSettings(app, format, extra));
   } catch (e) {
     app.showError(`Export failed: ${e.message}`);
