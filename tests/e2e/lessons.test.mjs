@@ -153,7 +153,7 @@ test('every exercise fails on a scripted wrong answer and passes on a right one;
 test('the multiple-choice answers agree with what the wasm API measures', async () => {
   const r = await page.evaluate(async () => {
     const wasm = await window.screwbender.app.analysis();
-    const circle = wasm.Motion.fromScene('circle4');
+    const circle = wasm.Motion.fromPreset('circle4');
     const frameDep = Object.fromEntries(circle.compareMethods().rows.map((row) => [row.method, row.frame_dependence]));
     // One decoupled 4-point step on the circle: the new origins' radius (lesson 5).
     const d = wasm.subdivideDecoupled(circle.poses(), true, { scheme: 'fourpoint', levels: 1 });
@@ -161,9 +161,9 @@ test('the multiple-choice answers agree with what the wasm API measures', async 
     for (let k = 0; k < d.length; k += 7) radii.push(Math.hypot(d[k], d[k + 1]));
     // The 4-point split-then-tweak step: which slots move (lesson 3).
     const st = wasm.splitTweakStep(circle.poses(), true, { scheme: 'fourpoint', rules: 'split' }, 0);
-    const sphere = wasm.Motion.fromScene('rb_sphere7');
+    const sphere = wasm.Motion.fromPreset('rb_sphere7');
     const rows = Object.fromEntries(sphere.compareMethods().rows.map((row) => [row.method, row]));
-    const jarek = wasm.Motion.fromScene('circle4');
+    const jarek = wasm.Motion.fromPreset('circle4');
     jarek.setScheme('jarek');
     return {
       frameDep, radii, tweaked: Array.from(st.tweaked), jarekJ: jarek.options().j,
@@ -195,7 +195,7 @@ test('schema.json names what the page accepts; index.json lists every lesson', a
     const fmt = await import('./js/lessons/format.js');
     const { VIEW_IDS } = await import('./js/views/index.js');
     return {
-      scenes: wasm.scenes().map((s) => s.id),
+      scenes: wasm.presets().map((s) => s.id),
       views: VIEW_IDS,
       checks: Object.fromEntries(Object.entries(fmt.CHECK_FIELDS).map(([k, v]) => [k, [...v].sort()])),
       metrics: fmt.METRIC_FIELDS,

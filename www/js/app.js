@@ -419,7 +419,7 @@ export class App {
     const info = this.scenes.find((s) => s.id === id);
     if (!info) return this.showError(`unknown preset ${id}`);
     const apply = () => {
-      const motion = this.wasm.Motion.fromScene(id);
+      const motion = this.wasm.Motion.fromPreset(id);
       this.motion?.free();
       this.motion = motion;
       this.view.scene = id;

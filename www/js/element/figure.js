@@ -289,7 +289,7 @@ export class Figure {
     let motion;
     const attr = this.opts.src ? 'src' : this.opts.share ? 'share' : this.opts.inline != null ? 'script' : 'preset';
     try {
-      motion = src.scene ? w.Motion.fromScene(src.scene) : new w.Motion(src.doc, src.options ?? {});
+      motion = src.scene ? w.Motion.fromPreset(src.scene) : new w.Motion(src.doc, src.options ?? {});
       if (!src.scene && src.view?.scene) model.view.scene = String(src.view.scene);
     } catch (e) {
       throw new OptionError(attr, attr === 'preset' ? src.scene : attr === 'script' ? 'application/json' : this.opts[attr], e.message);

@@ -84,7 +84,7 @@ export class Viewer {
     this.isShown = () => true;
     this.wheelNeedsFocus = wheelNeedsFocus;
     this.what = what;
-    this.scenes = wasm.scenes();
+    this.scenes = wasm.presets();
     this.camera = new OrbitCamera();
     this.drawing = new Drawing(this);
     this.dirty = true;

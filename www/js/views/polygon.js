@@ -6,7 +6,7 @@
 import { el as h } from './plot.js';
 
 /** The wasm functions of this view, from the analysis module the dock hands to create(). */
-let polygonScenes, subdividePolygon, splitTweakStep;
+let polygonPresets, subdividePolygon, splitTweakStep;
 
 const SCHEMES = [
   { id: 'bspline', name: 'B-spline', color: '#d1202f' },
@@ -35,8 +35,8 @@ export default {
   hint: 'Point subdivision of a planar polygon: B-spline, 4-point, Jarek (paper Figs. 2–3); drag the vertices',
   live: true,
   create(app, el, wasm) {
-    ({ polygonScenes, subdividePolygon, splitTweakStep } = wasm);
-    const presets = polygonScenes();
+    ({ polygonPresets, subdividePolygon, splitTweakStep } = wasm);
+    const presets = polygonPresets();
     // Static markup: index.html's <template id="view-polygon"> (no HTML from strings).
     el.append(document.getElementById('view-polygon').content.cloneNode(true));
     el.querySelector('canvas').height = HEIGHT;
