@@ -13,8 +13,10 @@ use support::run;
 fn export_glb(id: &str) -> Vec<u8> {
     let doc = run(&["preset", id], "");
     assert_eq!(doc.code, 0, "{}", doc.stderr);
-    let path = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join(format!("cli_preset_objects-{id}-{}.glb", std::process::id()));
+    let path = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!(
+        "cli_preset_objects-{id}-{}.glb",
+        std::process::id()
+    ));
     let out = run(
         &["export", "--format", "glb", "-o", path.to_str().unwrap()],
         &doc.stdout,
