@@ -174,50 +174,18 @@ impl Builder {
 
     /// A mesh of one primitive: positions (with bounds), normals, `u32` indices.
     fn mesh(&mut self, name: &str, mesh: &Mesh) -> json::Index<json::Mesh> {
-        let positions = f32s(&mesh.positions);
-        let normals: Vec<f32> = mesh
+        let normals: Vec<glam::DVec3> = mesh
             .normals
             .iter()
-            .flat_map(|n| n.normalize_or(glam::DVec3::Z).to_array().map(|x| x as f32))
+            .map(|n| n.normalize_or(glam::DVec3::Z))
             .collect();
-        use json::accessor::Type;
-        use json::buffer::Target;
-        let pos = self.accessor(
-            Data::F32(&positions),
-            Type::Vec3,
-            Some(Target::ArrayBuffer),
-            true,
-        );
-        let nor = self.accessor(
-            Data::F32(&normals),
-            Type::Vec3,
-            Some(Target::ArrayBuffer),
-            false,
-        );
-        let idx = self.accessor(
-            Data::U32(&mesh.indices),
-            Type::Scalar,
-            Some(Target::ElementArrayBuffer),
-            false,
-        );
-        let mut attributes = BTreeMap::new();
-        attributes.insert(Valid(json::mesh::Semantic::Positions), pos);
-        attributes.insert(Valid(json::mesh::Semantic::Normals), nor);
-        self.root.push(json::Mesh {
-            extensions: None,
-            extras: None,
-            name: Some(name.to_string()),
-            primitives: vec![json::mesh::Primitive {
-                attributes,
-                extensions: None,
-                extras: None,
-                indices: Some(idx),
-                material: None,
-                mode: Valid(json::mesh::Mode::Triangles),
-                targets: None,
-            }],
-            weights: None,
-        })
+        self.primitive_mesh(
+            name,
+            &f32s(&mesh.positions),
+            &f32s(&normals),
+            Some(&mesh.indices),
+            None,
+        )
     }
 
     /// The pieces of one morph span as one mesh at blend 0 (no indices: every triangle has its
@@ -230,52 +198,69 @@ impl Builder {
             normals.extend_from_slice(&p.normals);
         }
         let base = f32s(&from);
-        let end = f32s(&to);
         // The target's displacement in f32, so that base + displacement is the end position
         // as closely as f32 allows.
-        let delta: Vec<f32> = end.iter().zip(&base).map(|(e, b)| e - b).collect();
-        let normals = f32s(&normals);
+        let delta: Vec<f32> = f32s(&to).iter().zip(&base).map(|(e, b)| e - b).collect();
+        self.primitive_mesh(name, &base, &f32s(&normals), None, Some(&delta))
+    }
+
+    /// A mesh of one triangle primitive from `f32` triples, with optional indices and one
+    /// optional morph target of position displacements (its weight starts at 0).
+    fn primitive_mesh(
+        &mut self,
+        name: &str,
+        positions: &[f32],
+        normals: &[f32],
+        indices: Option<&[u32]>,
+        target: Option<&[f32]>,
+    ) -> json::Index<json::Mesh> {
         use json::accessor::Type;
         use json::buffer::Target;
-        let pos = self.accessor(
-            Data::F32(&base),
-            Type::Vec3,
-            Some(Target::ArrayBuffer),
-            true,
-        );
-        let nor = self.accessor(
-            Data::F32(&normals),
-            Type::Vec3,
-            Some(Target::ArrayBuffer),
-            false,
-        );
-        let target = self.accessor(
-            Data::F32(&delta),
-            Type::Vec3,
-            Some(Target::ArrayBuffer),
-            true,
-        );
+        let vec3 = |b: &mut Self, data: &[f32], bounds: bool| {
+            b.accessor(
+                Data::F32(data),
+                Type::Vec3,
+                Some(Target::ArrayBuffer),
+                bounds,
+            )
+        };
+        let pos = vec3(self, positions, true);
+        let nor = vec3(self, normals, false);
+        let target = target.map(|t| json::mesh::MorphTarget {
+            positions: Some(vec3(self, t, true)),
+            normals: None,
+            tangents: None,
+        });
+        let indices = indices.map(|i| {
+            self.accessor(
+                Data::U32(i),
+                Type::Scalar,
+                Some(Target::ElementArrayBuffer),
+                false,
+            )
+        });
         let mut attributes = BTreeMap::new();
         attributes.insert(Valid(json::mesh::Semantic::Positions), pos);
         attributes.insert(Valid(json::mesh::Semantic::Normals), nor);
+        let morphing = target.is_some();
         self.root.push(json::Mesh {
             extensions: None,
-            extras: raw(&js!({ "targetNames": ["blend"] })).ok(),
+            extras: if morphing {
+                raw(&js!({ "targetNames": ["blend"] })).ok()
+            } else {
+                None
+            },
             name: Some(name.to_string()),
             primitives: vec![json::mesh::Primitive {
                 attributes,
                 extensions: None,
                 extras: None,
-                indices: None,
+                indices,
                 material: None,
                 mode: Valid(json::mesh::Mode::Triangles),
-                targets: Some(vec![json::mesh::MorphTarget {
-                    positions: Some(target),
-                    normals: None,
-                    tangents: None,
-                }]),
+                targets: target.map(|t| vec![t]),
             }],
-            weights: Some(vec![0.0]),
+            weights: morphing.then(|| vec![0.0]),
         })
     }
 
