@@ -42,6 +42,9 @@ log "${#files[@]} files exported"
 header "Khronos glTF-Validator"
 timed "gltf-validator (${#files[@]} files)" node tests/gltf/validate.mjs "${files[@]}"
 
+header "three.js plays the morphing preset"
+SCREWBENDER_BIN=$bin timed "node --test tests/gltf/morph.test.mjs" node --test tests/gltf/morph.test.mjs
+
 header "import round trip"
 for id in "${presets[@]}"; do
   "$bin" import "$work/$id-fourpoint.glb" -o "$work/$id-back.json"
