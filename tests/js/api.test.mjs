@@ -684,14 +684,14 @@ describe('bad input: clear Error, state unchanged', () => {
     const m = fresh();
     throwsUnchanged(m, () => m.setScheme('cubic'), "scheme: unknown value 'cubic' (expected bspline, fourpoint, jarek, j)");
     throwsUnchanged(m, () => m.setScheme(3), 'scheme: expected a string, got number');
-    throwsUnchanged(m, () => m.setRules('v3'), "rules: unknown value 'v3' (expected direct, split)");
+    throwsUnchanged(m, () => m.setRules('v3'), "rules: unknown value 'v3' (expected direct, split-then-tweak (also split))");
     throwsUnchanged(m, () => m.setJ(NaN), 'j: not a finite number (NaN or infinity)');
     throwsUnchanged(m, () => m.setJ('0.5'), 'j: expected a number, got string');
     throwsUnchanged(m, () => m.setOptions({ scheme: 'fourpoint', j: 0.3 }), "j: j = 0.3 contradicts scheme 'fourpoint' (whose J_s parameter is 0); use scheme 'j' for other values");
     throwsUnchanged(m, () => m.setOptions({ levle: 3 }), 'invalid options: unknown field `levle`, expected one of `scheme`, `j`, `rules`, `levels`');
     throwsUnchanged(m, () => m.setOptions({ levels: '3' }), 'levels: invalid options: invalid type: string "3", expected f64');
     throwsUnchanged(m, () => m.setOptions('fast'), 'invalid options: expected an object {scheme?, j?, rules?, levels?}, got string');
-    throwsUnchanged(m, () => m.setOptions({ scheme: 'jarek', levels: 2, rules: 'nope' }), "rules: unknown value 'nope' (expected direct, split)");
+    throwsUnchanged(m, () => m.setOptions({ scheme: 'jarek', levels: 2, rules: 'nope' }), "rules: unknown value 'nope' (expected direct, split-then-tweak (also split))");
     m.setJ(0.2);
     throwsUnchanged(m, () => m.setRules('split'), 'rules: the J_s family is defined with the direct rules only');
     m.setScheme('fourpoint');
