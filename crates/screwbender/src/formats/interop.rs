@@ -72,8 +72,8 @@ pub struct ExportSettings<'a> {
     pub control_nodes: bool,
     /// glTF only: the object's mesh (`None`: the placeholder box).
     pub mesh: Option<&'a Mesh>,
-    /// glTF only: a morphing object, one shape per control pose (replaces `mesh`; see
-    /// [`crate::formats::gltf::export`]).
+    /// glTF only: a morphing object, one shape per control pose (replaces `mesh`; the file
+    /// layout is in docs/math/pip-morph.md).
     pub morph: Option<&'a PipMorph>,
     /// glTF `.gltf` only: the file name the JSON uses for its buffer (`motion.bin`).
     pub bin_name: &'a str,

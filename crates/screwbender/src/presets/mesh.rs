@@ -647,7 +647,7 @@ fn base64_decode(text: &str) -> Option<Vec<u8>> {
     Some(out)
 }
 
-/// The side of the cube the Stanford bunny is scaled to fit ([`Mesh::bunny`]), as the page
+/// The side of the cube the Stanford bunny is scaled to fit (`Mesh::bunny`, feature `bunny`), as the page
 /// shows it for preset `bunny6`.
 pub const BUNNY_SIZE: f64 = 1.2;
 
