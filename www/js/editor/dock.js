@@ -22,28 +22,10 @@
 // scene is framed where it can be seen. Charts (views/plot.js) get their
 // playhead from playback, and hovering a chart shows that instant's pose (preview).
 import { setPlayheadSource } from '../views/plot.js';
+import { without } from './rects.js';
 
 /** The smallest free part of the window (CSS px) the 3-D view moves into beside the dock. */
 const MIN_FREE = { width: 240, height: 200 };
-
-/**
- * Part `p` ({left, top, width, height}) less the rectangle `o` (a DOMRect) where they overlap:
- * `p` cut at one side of `o`, the side that keeps the most of it. `p` itself if they do not.
- */
-export function without(p, o) {
-  const right = p.left + p.width;
-  const bottom = p.top + p.height;
-  if (o.width === 0 || o.height === 0 || o.right <= p.left || o.left >= right || o.bottom <= p.top || o.top >= bottom) return p;
-  const cuts = [
-    { left: o.right, top: p.top, width: right - o.right, height: p.height },
-    { left: p.left, top: p.top, width: o.left - p.left, height: p.height },
-    { left: p.left, top: o.bottom, width: p.width, height: bottom - o.bottom },
-    { left: p.left, top: p.top, width: p.width, height: o.top - p.top },
-  ];
-  let best = null;
-  for (const c of cuts) if (c.width > 0 && c.height > 0 && (!best || c.width * c.height > best.width * best.height)) best = c;
-  return best ?? { left: p.left, top: p.top, width: 0, height: 0 };
-}
 
 export class Dock {
   /** `views`: the view descriptors in tab order (views/index.js loadViews); `wasm`: the analysis module. */

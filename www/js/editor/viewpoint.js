@@ -5,7 +5,7 @@
 // view focused: Shift+F / Shift+T / Shift+S / Shift+I the named views, O orthographic
 // (lower-case f and i stay the 4-point scheme and insert, editor/input.js).
 
-import { without } from './dock.js';
+import { without } from './rects.js';
 
 /** Shift + key → named camera view. */
 const PRESET_KEYS = { F: 'front', T: 'top', S: 'side', I: 'iso' };
