@@ -30,10 +30,10 @@ const SIZES = [[1280, 800], [390, 844], [844, 390]];
 
 test(`${BACKEND}: the methods table on the L cycle: C¹ jumps are 0, SLERP + linear's are its closed form and its accelerations impulses`, async () => {
   await page.setViewportSize({ width: 1280, height: 800 });
-  const r = await sb(() => {
+  const r = await sb(async () => {
     const { app } = window.screwbender;
     app.loadPreset('l_cycle_rotated');
-    window.screwbender.openView('methods');
+    await window.screwbender.openView('methods');
     app.dock.current.select(['fourpoint', 'decoupled', 'slerp']);
     window.screwbender.flushViews();
     const rows = [...document.querySelectorAll('#dock section[data-view=methods] table.metrics tr')];
@@ -107,11 +107,11 @@ const easeState = () =>
 
 test(`${BACKEND}: Ease in / out gives du/dt = 0 at both ends, keeps the times, says so, and one undo takes it back`, async () => {
   await page.setViewportSize({ width: 1280, height: 800 });
-  await sb(() => {
+  await sb(async () => {
     const { app } = window.screwbender;
     app.loadPreset('cylinder5');
     app.setTimes([0, 1, 3, 4, 6, 7]);
-    window.screwbender.openView('timing');
+    await window.screwbender.openView('timing');
     window.screwbender.flushViews();
   });
   await page.locator('#dock section[data-view=timing] button', { hasText: 'Ease in / out' }).click();
@@ -383,10 +383,10 @@ test(`${BACKEND}: the Top view frames the poses below the header, above the time
 
 test(`${BACKEND}: a preset is framed clear of the panel and the dock: pose 2's rotate gizmo of the tumbling cylinder stays between them`, async () => {
   await page.setViewportSize({ width: 1280, height: 800 });
-  await sb(() => {
+  await sb(async () => {
     const { app } = window.screwbender;
     app.ui.gui.open();
-    window.screwbender.openView('axes');
+    await window.screwbender.openView('axes');
     window.screwbender.flushViews();
     app.loadPreset('cylinder5');
     app.select(2);
