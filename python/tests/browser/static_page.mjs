@@ -21,6 +21,9 @@ try {
   await page.goto(`file://${file}`);
   const fig = page.locator('.screwbender-figure').first();
   await fig.waitFor({ timeout: 60000 });
+  // Figures start when they near the viewport (as a reader scrolls to them): in an exported
+  // notebook the first one may sit below a page of text and plots.
+  await fig.scrollIntoViewIfNeeded();
   await page.waitForFunction(() => document.querySelector('.screwbender-figure')?.dataset.ready === 'true', null, { timeout: 120000 });
   await page.waitForTimeout(1500);
   await fig.scrollIntoViewIfNeeded();
