@@ -4,21 +4,13 @@
 // where they apply (currentTime, duration, paused, playbackRate, loop; play, pause, ended,
 // timeupdate, seeked). Every member is optional here: a framework may set any of them.
 import type { MotionDocumentInput, SubdivisionOptions } from './screwbender.js';
-import type { ScrewBenderElement } from './viewer.js';
+import type { CameraState, ScrewBenderElement } from './viewer.js';
 
 /** A boolean attribute: present (`true`, `''`, any string but `'false'`) or absent. */
 export type BooleanAttribute = boolean | '' | 'true' | 'false';
 /** A number attribute: a number, or its decimal text as attributes carry it. */
 export type NumberAttribute = number | `${number}`;
 
-/** The camera as state: angles in radians, distance and target in scene units. */
-export interface CameraState {
-  yaw: number;
-  pitch: number;
-  distance: number;
-  target: [number, number, number];
-  projection: 'perspective' | 'orthographic';
-}
 
 /**
  * The attributes of <screw-bender> (strings in HTML; a framework may pass numbers and booleans,
@@ -76,17 +68,6 @@ export interface PlayOptions {
   repetitions?: number;
 }
 
-/** Options of toBlob() and toDataURL(): the picture's format and size. */
-export interface PictureOptions {
-  /** `'image/png'` (default), `'image/jpeg'` or `'image/webp'`. */
-  type?: string;
-  /** 0 to 1, for the lossy types. */
-  quality?: number;
-  /** Pixels per CSS pixel of the figure (drawn at that size, not upscaled). */
-  scale?: number;
-  /** A transparent background instead of the theme's. */
-  transparent?: boolean;
-}
 
 /**
  * The properties a framework sets on the element (besides the attributes): the motion

@@ -23,9 +23,9 @@
 // shown.
 import { download } from './files.js';
 import { picture } from '../view/picture.js';
-import {
-  BufferTarget, EncodedPacket, EncodedVideoPacketSource, Mp4OutputFormat, Output, WebMOutputFormat,
-} from '../../vendor/mediabunny.min.mjs';
+
+/** The muxer, fetched with the first video (it is not needed for the page's first frame). */
+const loadMuxer = () => import('../../vendor/mediabunny.min.mjs');
 
 /** Frames per second of the video. */
 export const FPS = 30;
@@ -238,6 +238,15 @@ export default {
       }
       const { config, mux } = chosen;
       const fmt = VIDEO_FORMATS[chosen.format];
+      let muxer;
+      try {
+        muxer = await loadMuxer();
+      } catch (e) {
+        recording = null;
+        app.showError(`No video: the video writer could not load (${e.message}).`, 'warn');
+        return null;
+      }
+      const { BufferTarget, EncodedPacket, EncodedVideoPacketSource, Mp4OutputFormat, Output, WebMOutputFormat } = muxer;
       // A cycle ends where it began: its last frame is the one before the first again; an open
       // motion shows its end pose too.
       const steps = Math.max(1, Math.round(c.duration * FPS));
