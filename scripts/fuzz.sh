@@ -7,7 +7,7 @@
 #
 # Targets (fuzz/fuzz_targets/, see docs/fuzzing.md): document_json, subdivide, screw, csv_import,
 # gltf_import. Not part of scripts/test.sh (too long); every crash it finds becomes a named test
-# in tests/fuzz_regressions.rs, which is.
+# in crates/screwbender/tests/properties/fuzz_regressions.rs, which is.
 #
 # Installs cargo-fuzz (`cargo install cargo-fuzz --locked`) when missing. libFuzzer needs nightly
 # compiler flags: only stable Rust exists here, so the build runs with RUSTC_BOOTSTRAP=1. Built

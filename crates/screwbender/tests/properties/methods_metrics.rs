@@ -2,8 +2,6 @@
 //! qualitative claims on scene A2 (`l_cycle_rotated`), and the text / JSON table.
 
 #[cfg(target_arch = "wasm32")]
-wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
-#[cfg(target_arch = "wasm32")]
 use wasm_bindgen_test::wasm_bindgen_test as test;
 
 use glam::{DQuat, DVec3};

@@ -5,8 +5,6 @@
 //! motion); the data are regenerated here from the same exact motion.
 
 #[cfg(target_arch = "wasm32")]
-wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
-#[cfg(target_arch = "wasm32")]
 use wasm_bindgen_test::wasm_bindgen_test as test;
 
 use glam::{DQuat, DVec3};

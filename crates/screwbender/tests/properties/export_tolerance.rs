@@ -5,11 +5,9 @@
 //! mesh vertices are compared with the same vertices carried by the true motion.
 
 #[cfg(target_arch = "wasm32")]
-wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
-#[cfg(target_arch = "wasm32")]
 use wasm_bindgen_test::wasm_bindgen_test as test;
 
-mod support;
+use crate::support;
 
 use glam::{DMat3, DQuat, DVec3};
 use screwbender::mesh::Mesh;

@@ -3,8 +3,6 @@
 //! changes the decoupled ones (`compare_frames`, `DecoupledPose`).
 
 #[cfg(target_arch = "wasm32")]
-wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
-#[cfg(target_arch = "wasm32")]
 use wasm_bindgen_test::wasm_bindgen_test as test;
 
 use glam::DVec3;

@@ -5,8 +5,6 @@
 //! Expected numbers are copied from docs/math/quaternion-splines.md §8 (computed by a reference implementation outside the crate).
 
 #[cfg(target_arch = "wasm32")]
-wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
-#[cfg(target_arch = "wasm32")]
 use wasm_bindgen_test::wasm_bindgen_test as test;
 
 use glam::{DQuat, DVec3};
