@@ -2,7 +2,7 @@
 (the ``<screw-bender>`` element's figure: WebGPU, with the WebGL2 fallback), bundled into
 ``static/figure.js`` with the renderer's WebAssembly modules.
 
-The bundle (one self-contained ES module, about 6.4 MB with the wasm inlined) is what a figure
+The bundle (one self-contained ES module, about 5.2 MB with the wasm inlined) is what a figure
 needs in the browser; what each figure carries is small:
 
 * live, each figure's own ES module is ``static/loader.js``, which imports the bundle from one
@@ -127,7 +127,7 @@ class Figure(anywidget.AnyWidget):
     :meth:`to_html`), which ``jupyter nbconvert --to html`` uses when the notebook has no saved
     widget state: the exported page draws the figure live from ``file://`` with no kernel and no
     network (orbit, play, drag). The first figure shown in a kernel carries the viewer (about
-    6.4 MB) in its copy and the others a few kilobytes that start from it; set
+    5.2 MB) in its copy and the others a few kilobytes that start from it; set
     ``Figure.embed_static = False`` to leave the copies out.
     """
 
@@ -269,7 +269,7 @@ class Figure(anywidget.AnyWidget):
     def to_html(self) -> str:
         """A self-contained HTML fragment that draws this figure live in any page, with no
         kernel and no network (opened from ``file://`` too): the figure's bundle and wasm
-        (about 6.4 MB) and its current poses and options. Changes in it stay in the page."""
+        (about 5.2 MB) and its current poses and options. Changes in it stay in the page."""
         return self._static_copy(with_bundle=True)
 
     def _static_copy(self, with_bundle: bool) -> str:
