@@ -1,9 +1,9 @@
 """Benchmarks of the Python package (not timed tests: they print numbers, they assert nothing).
 
 1. ``Motion.subdivide()`` at 10^5 and 10^6 refined poses against the Rust core doing the same
-   work natively (``Subdivision::apply`` on the same control poses plus the ``(N, 7)`` rows),
-   run interleaved (one Python run, one Rust run, ...) so that both see the same machine load;
-   min / median / max of each and the ratios.
+   work natively (``Subdivision::apply_into`` on the same control poses plus the ``(N, 7)`` rows
+   in a fresh array), run interleaved (one Python run, one Rust run, ...) so that both see the
+   same machine load, each side warm in one process; min / median / max of each and the ratios.
 2. ``sb.screw`` on 10^6 pairs against a Python loop over ``modern_robotics``
    (``X0 @ MatrixExp6(MatrixLog6(TransInv(X0) @ X1) * t)``, timed on a sample of pairs and scaled)
    and against pytransform3d's batched ``dual_quaternions_sclerp`` (its native dual
@@ -58,23 +58,49 @@ def spread(ts) -> str:
 
 
 def bench_subdivide(binary, refined: int, rounds: int) -> None:
+    """Interleaved, one Python run and one Rust run per round (alternating which goes first), both
+    sides warm in one long-lived process each: Python in this one, Rust in ``core_timing serve``
+    (one subdivision per line it reads). Both do the same work: subdivide in working memory kept
+    from the run before, then write the ``(N, 7)`` rows into a fresh array, which Python returns
+    and this loop drops before the next round, as the Rust side drops its own."""
     levels = 5
     n = refined // 2**levels
     rows = np.array([[float(v) for v in line.split()] for line in run_core(binary, "poses", n, 1).splitlines()])
     m = sb.Motion(rows, closed=True, scheme="fourpoint", levels=levels, rules="direct")
-    py, rust = [], []
-    for _ in range(rounds):
+    rust_process = subprocess.Popen([str(binary), "serve"], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+
+    def rust_run() -> float:
+        rust_process.stdin.write(f"subdivide {n} {levels}\n")
+        rust_process.stdin.flush()
+        return float(rust_process.stdout.readline())
+
+    def python_run() -> float:
         m.levels = levels  # a change: the next subdivide() computes afresh
         start = time.perf_counter()
         out = m.subdivide()
-        py.append(time.perf_counter() - start)
-        # Three in one process, the last one kept: warm, as the Python process is (its thread
-        # keeps the subdivision's working buffers from one call to the next, and so does Rust's).
-        rust.append([float(t) for t in run_core(binary, "subdivide", n, levels, 3).split()][-1])
-    assert out.shape == (n * 2**levels, 7)
+        elapsed = time.perf_counter() - start
+        assert out.shape == (n * 2**levels, 7)
+        return elapsed
+
+    py, rust = [], []
+    try:
+        for _ in range(2):  # both sides grow their working memory once, untimed
+            python_run(), rust_run()
+        for i in range(rounds):
+            if i % 2:
+                rust.append(rust_run())
+                py.append(python_run())
+            else:
+                py.append(python_run())
+                rust.append(rust_run())
+    finally:
+        rust_process.stdin.close()
+        rust_process.wait()
+    ratios = sorted(a / b for a, b in zip(py, rust))
     print(f"Motion.subdivide() {n * 2**levels:>8} poses  python {spread(py)}")
     print(f"{'':>26} rust   {spread(rust)}")
-    print(f"{'':>26} ratio python/rust: median {statistics.median(py) / statistics.median(rust):.3f}, min {min(py) / min(rust):.3f}")
+    print(f"{'':>26} ratio python/rust: of medians {statistics.median(py) / statistics.median(rust):.3f}, "
+          f"of minima {min(py) / min(rust):.3f}, per round min {ratios[0]:.3f} median {statistics.median(ratios):.3f} max {ratios[-1]:.3f}")
 
 
 def random_pairs(count: int, seed: int):
@@ -136,14 +162,23 @@ def bench_screw(binary, pairs: int, rounds: int, loop_sample: int) -> None:
 
 def main() -> None:
     p = argparse.ArgumentParser()
-    p.add_argument("--rounds", type=int, default=9)
+    p.add_argument("--rounds", type=int, default=15)
     p.add_argument("--quick", action="store_true", help="10^5 only, fewer pairs")
+    p.add_argument("--subdivide-only", action="store_true", help="only Motion.subdivide()")
     args = p.parse_args()
     print(f"CPU: {cpu()}; numpy {np.__version__}; screwbender {sb.__version__}")
     binary = core_binary()
-    for refined in ([100_000] if args.quick else [100_000, 1_000_000]):
-        bench_subdivide(binary, refined, args.rounds)
-    bench_screw(binary, 100_000 if args.quick else 1_000_000, args.rounds, 2_000 if args.quick else 20_000)
+    # numpy asks the kernel for huge pages for its large arrays (where transparent huge pages are
+    # "madvise"), which makes the first touches of a fresh result cheaper than those of the Rust
+    # side's Vec: timed both ways, the second with the same page size on both sides.
+    for hugepages in (True, False):
+        np.core.multiarray._set_madvise_hugepage(hugepages)
+        print(f"numpy huge pages for large arrays: {'on (its default)' if hugepages else 'off (as the Rust side)'}")
+        for refined in [100_000] if args.quick else [100_000, 1_000_000]:
+            bench_subdivide(binary, refined, args.rounds)
+    np.core.multiarray._set_madvise_hugepage(True)
+    if not args.subdivide_only:
+        bench_screw(binary, 100_000 if args.quick else 1_000_000, args.rounds, 2_000 if args.quick else 20_000)
 
 
 if __name__ == "__main__":

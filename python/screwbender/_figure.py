@@ -1,13 +1,20 @@
 """The notebook figure :class:`Figure`: an anywidget whose front end is the project's own viewer
 (the ``<screw-bender>`` element's figure: WebGPU, with the WebGL2 fallback), bundled into
-``static/figure.js`` with the renderer's WebAssembly module.
+``static/figure.js`` with the renderer's WebAssembly modules.
 
-The wasm module is inlined in the widget's ES module (base64, about 6.4 MB in all) rather than
-sent as a separate buffer: anywidget has no asset mechanism for a ``.wasm`` file, and one
-self-contained module works unchanged wherever the widget is shown (JupyterLab, Notebook 7,
-VS Code) and in a static page (:meth:`Figure.to_html`), with no server, CDN or network. The
-module is sent with each figure; in the browser every figure uses the first one's wasm instance
-and WebGPU device.
+The bundle (one self-contained ES module, about 5.2 MB with the wasm inlined) is what a figure
+needs in the browser; what each figure carries is small:
+
+* live, each figure's own ES module is ``static/loader.js``, which imports the bundle from one
+  asset model per kernel (:class:`_Assets`) that every figure references: the bundle crosses the
+  comm once per kernel, a saved widget state holds it once, and a page evaluates it once (one
+  wasm instance and one WebGPU device for every figure);
+* in static pages (the figures' ``text/html`` copies, nbconvert), the first figure shown in a
+  kernel carries the bundle and the others start from it: an executed notebook and its HTML
+  export hold it once. :meth:`Figure.to_html` always carries it (a fragment that stands alone).
+
+Both work unchanged wherever the widget is shown (JupyterLab, Notebook 7, VS Code) and from
+``file://``, with no server, CDN or network.
 """
 
 from __future__ import annotations
@@ -19,12 +26,15 @@ import uuid
 from typing import Any, Optional, Union
 
 import anywidget
+import ipywidgets
 import numpy as np
 import traitlets
 
 from ._screwbender import Motion
 
-_BUNDLE = pathlib.Path(__file__).parent / "static" / "figure.js"
+_STATIC = pathlib.Path(__file__).parent / "static"
+_BUNDLE = _STATIC / "figure.js"
+_LOADER = _STATIC / "loader.js"
 
 
 def _poses_to_json(value: Any, widget: Any) -> Any:
@@ -42,6 +52,56 @@ def _bundle() -> str:
             "(build it with python/build-figure.sh before the wheel)"
         )
     return _BUNDLE.read_text(encoding="utf-8")
+
+
+class _Assets(ipywidgets.Widget):
+    """The viewer bundle (``static/figure.js``) as a widget model without a view: one per kernel
+    (:func:`_shared_assets`), referenced by every :class:`Figure`."""
+
+    code = traitlets.Unicode("").tag(sync=True)
+
+
+_assets: Optional[_Assets] = None
+
+
+def _shared_assets() -> Optional[_Assets]:
+    """The kernel's asset model (made again if it was closed), ``None`` without a bundle."""
+    global _assets
+    if not _BUNDLE.exists():
+        return None
+    if _assets is None or _assets.comm is None:
+        _assets = _Assets(code=_bundle())
+    return _assets
+
+
+def _execution() -> tuple:
+    """``(cell id, request id)`` of the code the kernel is running (``None`` where unknown:
+    outside a kernel, or a client that does not name its cells)."""
+    try:
+        from IPython import get_ipython
+
+        kernel = getattr(get_ipython(), "kernel", None)
+        parent = kernel.get_parent() if kernel is not None else {}
+    except Exception:  # no IPython, or a kernel without get_parent: nothing is known
+        parent = {}
+    return (parent.get("metadata") or {}).get("cellId"), (parent.get("header") or {}).get("msg_id")
+
+
+class _StaticCopies:
+    """Which figure output carries the bundle in its static copy: the first one shown in the
+    kernel, and again the next one of the same cell run anew (its new outputs replace the old)."""
+
+    #: ``(cell id, request id)`` of the output that carries it, ``None`` before the first.
+    carrier: Optional[tuple] = None
+
+    @classmethod
+    def take(cls) -> bool:
+        """Whether the figure being shown now carries the bundle (and then it is the carrier)."""
+        cell, request = _execution()
+        if cls.carrier is None or (cell is not None and cls.carrier[0] == cell and cls.carrier[1] != request):
+            cls.carrier = (cell, request)
+            return True
+        return False
 
 
 class Figure(anywidget.AnyWidget):
@@ -63,15 +123,18 @@ class Figure(anywidget.AnyWidget):
     ``controls`` (``"none"``, ``"minimal"``, ``"full"``); ``theme`` (``"light"``, ``"dark"``);
     ``height`` in pixels; ``backend`` ``"webgl2"`` to skip WebGPU.
 
-    Exported pages: the figure's display data carries a static copy (``text/html``, the same as
+    Exported pages: the figure's display data carries a static copy (``text/html``, as
     :meth:`to_html`), which ``jupyter nbconvert --to html`` uses when the notebook has no saved
     widget state: the exported page draws the figure live from ``file://`` with no kernel and no
-    network (orbit, play, drag). It adds about 6.4 MB per figure to the notebook and the page;
-    set ``Figure.embed_static = False`` to leave it out.
+    network (orbit, play, drag). The first figure shown in a kernel carries the viewer (about
+    5.2 MB) in its copy and the others a few kilobytes that start from it; set
+    ``Figure.embed_static = False`` to leave the copies out.
     """
 
     # The module's text, not its path: a path makes anywidget watch the file for changes.
-    _esm = _BUNDLE.read_text(encoding="utf-8") if _BUNDLE.exists() else "export default { render() {} };"
+    _esm = _LOADER.read_text(encoding="utf-8") if _LOADER.exists() else "export default { render() {} };"
+    #: The kernel's one asset model holding the viewer bundle (see the module doc).
+    _assets = traitlets.Instance(_Assets, allow_none=True).tag(sync=True, **ipywidgets.widget_serialization)
 
     #: Whether the display data carries the static copy of the figure (see the class doc).
     embed_static = True
@@ -129,6 +192,7 @@ class Figure(anywidget.AnyWidget):
             raise ValueError(f"strobe: {strobe!r} is out of range (expected a whole number 0 to 20000)")
         self.errors: list = []
         super().__init__(
+            _assets=_shared_assets(),
             poses=m.poses,
             closed=m.closed,
             name=m.name,
@@ -205,15 +269,24 @@ class Figure(anywidget.AnyWidget):
     def to_html(self) -> str:
         """A self-contained HTML fragment that draws this figure live in any page, with no
         kernel and no network (opened from ``file://`` too): the figure's bundle and wasm
-        (about 6.4 MB) and its current poses and options. Changes in it stay in the page."""
-        code = _bundle().replace("</script", "<\\/script")
+        (about 5.2 MB) and its current poses and options. Changes in it stay in the page."""
+        return self._static_copy(with_bundle=True)
+
+    def _static_copy(self, with_bundle: bool) -> str:
+        """The figure as HTML, starting from the page's bundle: its own copy (``with_bundle``),
+        or one that another figure's copy in the same page brings, before or after it."""
         fig_id = f"screwbender-{uuid.uuid4().hex}"
         state = json.dumps(self._state_for_page()).replace("</", "<\\/")
+        bundle = ""
+        if with_bundle:
+            code = _bundle().replace("</script", "<\\/script")
+            bundle = f'<script type="module">{code}\n</script>\n'
         return (
             f'<div id="{fig_id}" class="screwbender-static" style="width:100%"></div>\n'
-            f'<script type="module">{code}\n</script>\n'
+            f"{bundle}"
             '<script type="module">\n'
             f"const state = {state};\n"
+            f"const el = document.getElementById({json.dumps(fig_id)});\n"
             "const listeners = {};\n"
             "const model = {\n"
             "  get: (k) => state[k],\n"
@@ -223,7 +296,15 @@ class Figure(anywidget.AnyWidget):
             "  off() {},\n"
             "};\n"
             "const render = globalThis[Symbol.for('screwbender.figure.render')];\n"
-            f"render({{ model, el: document.getElementById({json.dumps(fig_id)}) }});\n"
+            "if (render) render({ model, el });\n"
+            "else {\n"
+            "  let started = false;\n"
+            "  (globalThis[Symbol.for('screwbender.figure.waiting')] ??= []).push((r) => { started = true; r({ model, el }); });\n"
+            "  addEventListener('load', () => {\n"
+            "    if (!started) el.textContent = 'This figure draws with the viewer that the first figure of the notebook '\n"
+            "      + 'brings, and this page has none: run the notebook again before exporting it.';\n"
+            "  });\n"
+            "}\n"
             "</script>\n"
         )
 
@@ -233,7 +314,7 @@ class Figure(anywidget.AnyWidget):
             return bundle
         data, metadata = bundle if isinstance(bundle, tuple) else (bundle, {})
         data = dict(data)
-        data["text/html"] = self.to_html()
+        data["text/html"] = self._static_copy(with_bundle=_StaticCopies.take())
         return data, metadata
 
     def __repr__(self) -> str:

@@ -72,19 +72,41 @@ def test_front_end_poses_arrive_as_an_array():
     assert fig.poses.shape == (6, 7) and abs(fig.poses[0, 0] - 0.25) < 1e-15
 
 
+#: Base64 of the WebAssembly magic number, which opens each of the bundle's two inlined modules.
+WASM = "AGFzbQ"
+
+
 @needs_bundle
 def test_display_data_carries_the_widget_and_a_static_copy():
-    fig = sb.Figure(P)
-    data, _ = fig._repr_mimebundle_()
+    from screwbender._figure import _StaticCopies
+
+    _StaticCopies.carrier = None  # as in a fresh kernel
+    first, second = sb.Figure(P), sb.Figure(P, levels=2)
+    data, _ = first._repr_mimebundle_()
     assert "application/vnd.jupyter.widget-view+json" in data
     assert data["text/html"].count('<script type="module">') == 2
-    assert len(data["text/html"]) < 8e6
+    assert data["text/html"].count(WASM) == 2 and len(data["text/html"]) < 8e6
+    # The second figure's copy starts from the first one's bundle.
+    data, _ = second._repr_mimebundle_()
+    assert data["text/html"].count('<script type="module">') == 1
+    assert WASM not in data["text/html"] and len(data["text/html"]) < 5e3
+    assert WASM in second.to_html()  # a fragment stands alone
     sb.Figure.embed_static = False
     try:
-        data, _ = fig._repr_mimebundle_()
+        data, _ = first._repr_mimebundle_()
         assert "text/html" not in data
     finally:
         sb.Figure.embed_static = True
+
+
+@needs_bundle
+def test_figures_share_one_asset_model():
+    figures = [sb.Figure(P), sb.Figure(P, levels=2), sb.Figure(sb.Motion.from_preset("circle4"))]
+    states = [f.get_state() for f in figures]
+    assert len({s["_assets"] for s in states}) == 1 and states[0]["_assets"].startswith("IPY_MODEL_")
+    # Each figure's own module is the loader: the bundle is in the asset model alone.
+    assert all(len(s["_esm"]) < 4e3 and WASM not in s["_esm"] for s in states)
+    assert figures[0]._assets.get_state()["code"].count(WASM) == 2
 
 
 @needs_bundle
@@ -98,3 +120,22 @@ def test_the_static_page_draws_offline_from_file(tmp_path, backend):
     assert result["requests"] == [] and result["problems"] == []
     assert result["backend"] == ("WebGPU" if backend == "webgpu" else "WebGL2")
     assert result["nonBackground"] > 0.05 and result["colours"] > 20
+
+
+@needs_bundle
+def test_three_static_copies_share_one_bundle_in_any_order(tmp_path):
+    from screwbender._figure import _StaticCopies
+
+    _StaticCopies.carrier = None
+    figures = [sb.Figure(sb.Motion.from_preset(name, levels=3), camera="iso", height=300)
+               for name in ["circle4", "l_cycle_rotated", "l_cycle_parallel"]]
+    # Shown in the order 2, 1, 3: the copy that carries the bundle is the middle one of the page.
+    html = {i: figures[i]._repr_mimebundle_()[0]["text/html"] for i in (1, 0, 2)}
+    body = "".join(html[i] for i in range(3))
+    assert body.count(WASM) == 2
+    page = tmp_path / "three.html"
+    page.write_text(f"<!doctype html><meta charset=utf-8><title>three</title><body>{body}</body>")
+    result = run_static_page(page, "webgl2", SHOTS / "static-three.png")
+    assert result["requests"] == [] and result["problems"] == []
+    assert result["figures"] == 3 and result["ready"], result
+    assert all(f["nonBackground"] > 0.05 for f in result["each"]), result

@@ -11,6 +11,9 @@
 // stylesheet link of element/chrome.js becomes a <style> with the CSS text (a bundle has no
 // folder to link into); the bunny mesh URL of view/drawing.js becomes a data: URL.
 //
+// It also writes screwbender/static/loader.js (loader.js minified), the ES module of each figure
+// widget, which imports the bundle from the kernel's one asset model.
+//
 //   node python/widget/build.mjs [WWW_DIR]   # default www/ (pkg-webgpu/ and pkg-gl/, scripts/serve.sh)
 import fs from 'node:fs';
 import path from 'node:path';
@@ -90,6 +93,9 @@ const text = fs.readFileSync(out, 'utf8');
 // here) is the one use of import.meta left: any other is a path the bundle cannot resolve.
 const rest = text.replaceAll('new URL("screwbender_bg.wasm",import.meta.url)', '');
 if (rest.includes('import.meta')) throw new Error(`${out}: uses import.meta (a path the bundle cannot resolve)`);
+// Each figure's own ES module: the small loader that imports the bundle from the shared asset model.
+const loader = path.join(ROOT, 'python/screwbender/static/loader.js');
+await esbuild.build({ entryPoints: [path.join(HERE, 'loader.js')], format: 'esm', minify: true, target: 'es2022', outfile: loader, logLevel: 'warning' });
 const wasmBytes = fs.statSync(wasm).size + fs.statSync(wasmGl).size;
 console.log(`${path.relative(ROOT, out)}: ${(fs.statSync(out).size / 1e6).toFixed(2)} MB (wasm ${(wasmBytes / 1e6).toFixed(2)} MB before base64)`);
 void result;

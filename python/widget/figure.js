@@ -112,7 +112,12 @@ function render({ model, el }) {
   };
 }
 
-// For static pages (Figure.to_html): the page's second module script finds render here.
-globalThis[Symbol.for('screwbender.figure.render')] ??= render;
+// For static pages (Figure.to_html and the figures' static copies): a figure's module script
+// finds render here, or, when it ran before the bundle (the bundle sits in another figure's
+// copy, further down the page), left its start in the waiting list.
+const RENDER = Symbol.for('screwbender.figure.render');
+const WAITING = Symbol.for('screwbender.figure.waiting');
+globalThis[RENDER] ??= render;
+for (const start of globalThis[WAITING]?.splice(0) ?? []) start(globalThis[RENDER]);
 
 export default { render };

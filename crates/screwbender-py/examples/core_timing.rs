@@ -3,15 +3,23 @@
 //! one line of seconds per repetition.
 //!
 //!   core_timing subdivide POSES LEVELS REPS    # Subdivision::apply + the (N, 7) rows
+//!   core_timing serve                          # the same, one run per line read (see below)
 //!   core_timing screw PAIRS REPS               # Pose::blends on PAIRS random pairs + rows
 //!
 //! The poses are the benchmark's own (a fixed pseudo-random cycle), so both sides do the same
 //! work; the Python side reads them from this program's `poses` command.
+//!
+//! `serve` is for interleaving in one long-lived process, as warm as the Python process it is
+//! compared with: each line `subdivide POSES LEVELS` on standard input runs one subdivision and
+//! prints its seconds. Like `Motion.subdivide()`, a run subdivides into working memory kept
+//! from the run before (`Subdivision::apply_into`) and writes the rows into a fresh array that
+//! it hands over (here: drops), so both sides pay the same first touches of fresh memory.
 
+use std::io::BufRead;
 use std::time::Instant;
 
 use glam::{DQuat, DVec3};
-use screwbender::{Blend, Pose, Rules, Scheme, Subdivision};
+use screwbender::{Blend, Pose, Rules, Scheme, Subdivision, SubdivisionBuffers};
 
 /// A fixed pseudo-random cycle of `n` poses (a small LCG: no dependency, the same everywhere).
 fn poses(n: usize, seed: u64) -> Vec<Pose> {
@@ -60,6 +68,30 @@ fn arg(args: &[String], i: usize) -> usize {
         .unwrap_or_else(|| panic!("argument {i}: expected a whole number (see the file's doc)"))
 }
 
+/// The `serve` command: one timed subdivision per line of standard input.
+fn serve() {
+    let mut control: Vec<Pose> = Vec::new();
+    let mut refined = Vec::new();
+    let mut buffers = SubdivisionBuffers::new();
+    for line in std::io::stdin().lock().lines() {
+        let line = line.expect("standard input");
+        let words: Vec<String> = line.split_whitespace().map(str::to_string).collect();
+        if words.first().map(String::as_str) != Some("subdivide") {
+            panic!("serve: expected `subdivide POSES LEVELS`, got {line:?}");
+        }
+        let (n, levels) = (arg(&words, 1), arg(&words, 2));
+        if control.len() != n {
+            control = poses(n, 1);
+        }
+        let sub = Subdivision::new(Scheme::FourPoint, Rules::Direct, levels as u32);
+        let start = Instant::now();
+        sub.apply_into(&control, true, &mut refined, &mut buffers)
+            .expect("valid options");
+        std::hint::black_box(rows(&refined));
+        println!("{}", start.elapsed().as_secs_f64());
+    }
+}
+
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     match args.get(1).map(String::as_str) {
@@ -78,6 +110,7 @@ fn main() {
                 rows(&sub.apply(&control, true).expect("valid options"))
             });
         }
+        Some("serve") => serve(),
         Some("screw") => {
             let (n, reps) = (arg(&args, 2), arg(&args, 3));
             let (a, b) = (poses(n, 2), poses(n, 3));

@@ -273,15 +273,21 @@ pub fn write_pose(out: &mut [f64], pose: &Pose) {
 /// Poses as 7 numbers each.
 pub fn pose_rows(poses: &[Pose]) -> Vec<f64> {
     let mut out = vec![0.0; poses.len() * POSE_STRIDE];
-    for (slot, pose) in out.chunks_exact_mut(POSE_STRIDE).zip(poses) {
-        write_pose(slot, pose);
-    }
+    write_rows(&mut out, poses);
     out
 }
 
-/// Poses as row-major 4×4 homogeneous matrices, 16 numbers each.
-pub fn pose_matrices(poses: &[Pose]) -> Vec<f64> {
-    let mut out = vec![0.0; poses.len() * 16];
+/// Writes `poses` as 7 numbers each into `out` (`7 · poses.len()` numbers).
+pub fn write_rows(out: &mut [f64], poses: &[Pose]) {
+    debug_assert_eq!(out.len(), poses.len() * POSE_STRIDE);
+    for (slot, pose) in out.chunks_exact_mut(POSE_STRIDE).zip(poses) {
+        write_pose(slot, pose);
+    }
+}
+
+/// Writes `poses` as row-major 4×4 homogeneous matrices into `out` (`16 · poses.len()` numbers).
+pub fn write_matrices(out: &mut [f64], poses: &[Pose]) {
+    debug_assert_eq!(out.len(), poses.len() * 16);
     for (slot, pose) in out.chunks_exact_mut(16).zip(poses) {
         let m = pose.to_matrix();
         for r in 0..4 {
@@ -290,7 +296,6 @@ pub fn pose_matrices(poses: &[Pose]) -> Vec<f64> {
             }
         }
     }
-    out
 }
 
 /// A float64 array of shape `shape` holding `data` (moved, not copied).

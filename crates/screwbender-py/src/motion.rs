@@ -9,18 +9,18 @@
 use std::path::Path;
 
 use glam::DVec3;
-use numpy::PyArrayDyn;
+use numpy::{PyArrayDyn, PyArrayMethods};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyInt, PyType};
 use screwbender::{
     presets, Error, ErrorKind, Motion, MotionDocument, Pose, Rules, Scheme, ScrewBender,
-    Subdivision,
+    Subdivision, SubdivisionBuffers,
 };
 
 use crate::convert::{
-    detached, flag, number, optional_number, optional_text, parameters, pose_from, pose_matrices,
-    pose_rows, poses_from, poses_to_array, text, to_array, value_error, POSE_STRIDE,
+    detached, flag, number, optional_number, optional_text, parameters, pose_from, poses_from,
+    poses_to_array, text, to_array, value_error, write_matrices, write_rows, POSE_STRIDE,
 };
 use crate::files;
 
@@ -216,6 +216,23 @@ fn point_from(obj: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<Option<DVe
     }
 }
 
+/// The memory `subdivide()` and `matrices()` subdivide in, kept from one call to the next: the
+/// subdivision's working sequences, and the refined poses of a state changed since (their
+/// capacity). Subdividing into fresh memory pays a page fault for every 4 KB it touches (see
+/// [`Subdivision::apply_into`]); with these, only the returned array is fresh. A copy of a
+/// `Motion` starts without them.
+#[derive(Default)]
+struct Workspace {
+    buffers: SubdivisionBuffers<Pose>,
+    spare: Vec<Pose>,
+}
+
+impl Clone for Workspace {
+    fn clone(&self) -> Self {
+        Workspace::default()
+    }
+}
+
 /// Control poses (a cycle or an open sequence) smoothed by screw subdivision.
 #[pyclass(module = "screwbender._screwbender", name = "Motion")]
 #[derive(Clone)]
@@ -225,6 +242,8 @@ pub struct PyMotion {
     refined: Option<Vec<Pose>>,
     /// The refined motion with its span screws, for evaluation.
     motion: Option<ScrewBender>,
+    /// Where `refined` is computed.
+    work: Workspace,
 }
 
 impl PyMotion {
@@ -235,6 +254,7 @@ impl PyMotion {
             state,
             refined: None,
             motion: None,
+            work: Workspace::default(),
         })
     }
 
@@ -249,7 +269,7 @@ impl PyMotion {
         change(&mut next)?;
         next.check().map_err(value_error)?;
         self.state = next;
-        self.refined = None;
+        self.work.spare = self.refined.take().unwrap_or_default();
         self.motion = None;
         Ok(())
     }
@@ -258,8 +278,12 @@ impl PyMotion {
     fn refined_poses(&mut self, py: Python<'_>) -> PyResult<&[Pose]> {
         if self.motion.is_none() && self.refined.is_none() {
             let State { doc, subdivision } = &self.state;
-            let poses =
-                detached(py, || subdivision.apply(&doc.poses, doc.closed))?.map_err(value_error)?;
+            let Workspace { buffers, spare } = &mut self.work;
+            let mut poses = std::mem::take(spare);
+            detached(py, || {
+                subdivision.apply_into(&doc.poses, doc.closed, &mut poses, buffers)
+            })?
+            .map_err(value_error)?;
             self.refined = Some(poses);
         }
         match (&self.motion, &self.refined) {
@@ -697,17 +721,17 @@ impl PyMotion {
     /// The refined poses, `(N, 7)`; refined pose `j` sits at `u = j / 2**levels`.
     fn subdivide<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let poses = self.refined_poses(py)?;
-        let n = poses.len();
-        let rows = detached(py, || pose_rows(poses))?;
-        to_array(py, vec![n, POSE_STRIDE], rows)
+        filled_array(py, vec![poses.len(), POSE_STRIDE], |out| {
+            write_rows(out, poses)
+        })
     }
 
     /// The refined poses as homogeneous matrices, `(N, 4, 4)`.
     fn matrices<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let poses = self.refined_poses(py)?;
-        let n = poses.len();
-        let m = detached(py, || pose_matrices(poses))?;
-        to_array(py, vec![n, 4, 4], m)
+        filled_array(py, vec![poses.len(), 4, 4], |out| {
+            write_matrices(out, poses)
+        })
     }
 
     /// The poses at parameters `u` (a number: `(7,)`; an array: `u.shape + (7,)`). Cycles wrap
@@ -811,6 +835,25 @@ impl PyMotion {
             ))
         })
     }
+}
+
+/// A new float64 array of shape `shape` whose every number `fill` writes, without the GIL,
+/// straight into numpy's memory (no second copy of the result). The array comes zeroed from
+/// numpy's allocator, for which fresh pages cost no pass: they are zero already.
+fn filled_array<'py>(
+    py: Python<'py>,
+    shape: Vec<usize>,
+    fill: impl FnOnce(&mut [f64]) + Send,
+) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    let array = PyArrayDyn::<f64>::zeros(py, shape, false);
+    {
+        let mut numbers = array.readwrite();
+        let out = numbers.as_slice_mut().map_err(|e| {
+            pyo3::exceptions::PyRuntimeError::new_err(format!("screwbender: internal error: {e}"))
+        })?;
+        detached(py, || fill(out))?;
+    }
+    Ok(array)
 }
 
 /// The preset ids, in the order of the page's menu.

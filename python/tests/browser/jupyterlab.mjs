@@ -1,13 +1,14 @@
 // Drives a running JupyterLab (started by test_jupyterlab.py with --LabApp.expose_app_in_browser
 // so that window.jupyterapp exists) in one headless Chromium with the WebGPU flags:
 //   node jupyterlab.mjs URL SHOT_DIR  -> one JSON line of what it saw
-// Opens the notebook, runs its cells (two figures: WebGPU, and WebGL2 by the figure's `backend`
-// option), screenshots both, then runs code in the notebook's kernel: Python -> figure (set
+// Opens the notebook, runs its cells (three figures: WebGPU, WebGL2 by the figure's `backend`
+// option, and a third sharing the first one's viewer), screenshots them (and the page at a
+// desktop and a phone width), then runs code in the notebook's kernel: Python -> figure (set
 // fig.poses: the picture changes) and figure -> Python (a real mouse drag of control pose 1,
 // then the kernel reads fig.poses).
 import fs from 'node:fs';
 import path from 'node:path';
-import { launch, pixelStats } from './pixels.mjs';
+import { elementStats, launch } from './pixels.mjs';
 
 const [url, shots] = process.argv.slice(2);
 fs.mkdirSync(shots, { recursive: true });
@@ -26,7 +27,8 @@ try {
   await page.waitForFunction(() => window.jupyterapp?.shell?.currentWidget?.sessionContext?.session?.kernel, null, { timeout: 180000 });
   await page.waitForFunction(() => window.jupyterapp.shell.currentWidget.sessionContext.session.kernel.status === 'idle', null, { timeout: 180000 });
   // The cells one at a time, each figure ready before the next starts.
-  for (let cell = 0; cell < 2; cell++) {
+  const cells = await page.evaluate(() => window.jupyterapp.shell.currentWidget.content.widgets.length);
+  for (let cell = 0; cell < cells; cell++) {
     await page.evaluate(async (i) => {
       const panel = window.jupyterapp.shell.currentWidget;
       panel.content.activeCellIndex = i;
@@ -54,13 +56,23 @@ try {
   const figures = page.locator('.screwbender-figure');
   const shot = async (i, name) => {
     await figures.nth(i).scrollIntoViewIfNeeded();
-    const png = await figures.nth(i).screenshot({ path: path.join(shots, name) });
-    return { png, stats: await pixelStats(page, png) };
+    const stats = await elementStats(page, figures.nth(i), path.join(shots, name));
+    return { png: stats.png, stats };
   };
   out.backends = await page.evaluate(() => [...document.querySelectorAll('.screwbender-figure')].map((f) => f.dataset.backend));
+  const third = await shot(2, 'jupyterlab-third.png');
   const gl = await shot(1, 'jupyterlab-webgl2.png');
   const first = await shot(0, 'jupyterlab-webgpu.png');
-  out.nonBackground = [first.stats.nonBackground, gl.stats.nonBackground];
+  out.nonBackground = [first.stats.nonBackground, gl.stats.nonBackground, third.stats.nonBackground];
+  // The page as a reader sees it: desktop, then a phone-sized width.
+  await page.screenshot({ path: path.join(shots, 'jupyterlab-desktop.png') });
+  await page.setViewportSize({ width: 420, height: 900 });
+  await page.evaluate(() => window.jupyterapp.shell.leftCollapsed || window.jupyterapp.commands.execute('application:toggle-left-area'));
+  await page.waitForTimeout(1500);
+  await figures.nth(0).scrollIntoViewIfNeeded();
+  await page.screenshot({ path: path.join(shots, 'jupyterlab-phone.png') });
+  await page.setViewportSize({ width: 1280, height: 1000 });
+  await page.waitForTimeout(1500);
 
   // Python -> figure.
   const version = await page.evaluate(() => Number(document.querySelector('.screwbender-figure').dataset.posesVersion || 0));

@@ -1,7 +1,9 @@
 // Opens an HTML page from file:// with the network cut off and reports whether the notebook
 // figures in it drew: node static_page.mjs PAGE.html BACKEND SHOT.png -> one JSON line
-// {figures, ready, backend, nonBackground, colours, requests}.
-import { launch, pixelStats } from './pixels.mjs';
+// {figures, ready, backend, nonBackground, colours, each: [{backend, nonBackground, colours}],
+// requests, problems} (backend, nonBackground and colours of the first figure; SHOT.png is the
+// first figure, SHOT-2.png, SHOT-3.png, … the others).
+import { elementStats, launch } from './pixels.mjs';
 
 const [file, backend = 'webgpu', shot] = process.argv.slice(2);
 const browser = await launch(backend);
@@ -19,21 +21,24 @@ try {
   const problems = [];
   page.on('pageerror', (e) => problems.push(e.message));
   await page.goto(`file://${file}`);
-  const fig = page.locator('.screwbender-figure').first();
-  await fig.waitFor({ timeout: 60000 });
-  // Figures start when they near the viewport (as a reader scrolls to them): in an exported
-  // notebook the first one may sit below a page of text and plots.
-  await fig.scrollIntoViewIfNeeded();
-  await page.waitForFunction(() => document.querySelector('.screwbender-figure')?.dataset.ready === 'true', null, { timeout: 120000 });
-  await page.waitForTimeout(1500);
-  await fig.scrollIntoViewIfNeeded();
-  const png = await fig.screenshot({ path: shot });
-  const stats = await pixelStats(page, png);
-  const info = await page.evaluate(() => ({
-    figures: document.querySelectorAll('.screwbender-figure').length,
-    backend: document.querySelector('.screwbender-figure').dataset.backend,
-  }));
-  console.log(JSON.stringify({ ...info, ready: true, ...stats, requests, problems }));
+  const statics = await page.locator('.screwbender-static').count();
+  const each = [];
+  for (let i = 0; i < statics; i++) {
+    // Figures start when they near the viewport (as a reader scrolls to them): in an exported
+    // notebook a figure may sit below a page of text and plots.
+    const fig = page.locator('.screwbender-static').nth(i);
+    await fig.scrollIntoViewIfNeeded();
+    const host = fig.locator('.screwbender-figure');
+    await host.waitFor({ timeout: 60000 });
+    await page.waitForFunction((k) => document.querySelectorAll('.screwbender-static')[k].querySelector('.screwbender-figure')?.dataset.ready === 'true', i, { timeout: 120000 });
+    await page.waitForTimeout(1500);
+    await host.scrollIntoViewIfNeeded();
+    const name = i === 0 ? shot : shot.replace(/\.png$/, `-${i + 1}.png`);
+    const { nonBackground, colours } = await elementStats(page, host, name);
+    each.push({ backend: await host.evaluate((h) => h.dataset.backend), nonBackground, colours });
+  }
+  const first = each[0] ?? {};
+  console.log(JSON.stringify({ figures: statics, ready: each.length === statics, ...first, each, requests, problems }));
 } finally {
   await browser.close();
 }
