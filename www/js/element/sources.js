@@ -2,30 +2,16 @@
 // share-link payload), an inline JSON document, or `scene` (a preset); and the opt-in saved copy
 // (`persist`), the only storage a figure ever touches.
 import { OptionError } from './options.js';
-import { loadFiles } from './modules.js';
+import { loadFiles } from './wasm.js';
 
 /** Largest motion file `src` may name (bytes); larger ones are refused before parsing. */
 const MAX_SRC_BYTES = 32 << 20;
 
-let filesReady = null;
 /**
  * The module that reads glTF and CSV motion files: `w` itself when it has file import, else the
- * files module (loaded once, on the first such `src`), so that the renderer module can leave the
- * glTF document model out.
+ * files module (wasm.js), so that the renderer module can leave the glTF document model out.
  */
-function fileImporter(w) {
-  if (w.importMotionFile) return w;
-  filesReady ??= loadFiles()
-    .then(async (m) => {
-      await m.default();
-      return m;
-    })
-    .catch((e) => {
-      filesReady = null;
-      throw e;
-    });
-  return filesReady;
-}
+const fileImporter = (w) => (w.importMotionFile ? w : loadFiles());
 
 /**
  * The motion document (and display hints) of the source that the options `o` name, with the
