@@ -12,10 +12,12 @@
 # The viewer also carries the bunny6 preset's mesh, viewer/vendor/bunny.obj (with bunny.NOTICE:
 # its origin and terms), beside the sources that fetch it.
 #
-# The viewer has two renderer modules: viewer/pkg/ with features webgpu,files (no wgpu-core, GL
-# backend or shader translation: the browser compiles the WGSL) and viewer/pkg-gl/ with webgl,files
-# (WebGL2 through wgpu's GL backend and naga), which the element imports only when WebGPU has no
-# usable adapter. Both go through wasm-bindgen --remove-name-section and wasm-opt -Oz.
+# The viewer has two renderer modules: viewer/pkg/ with feature webgpu only (no wgpu-core, GL
+# backend or shader translation: the browser compiles the WGSL; no file import either: the
+# element reads a glTF or CSV `src` with the `screwbender/full` module, fetched for that only) and
+# viewer/pkg-gl/ with webgl,files (WebGL2 through wgpu's GL backend and naga; the playground's
+# module), which the element imports only when WebGPU has no usable adapter. Both go through
+# wasm-bindgen --remove-name-section and wasm-opt -Oz.
 #
 # Steps: cargo build --profile wasm-release (release, with the dependencies optimised for size:
 # see Cargo.toml) for wasm32 without features (so no wgpu), wasm-bindgen
@@ -158,7 +160,9 @@ fi
 if [[ ${VIEWER:-1} == 1 ]]; then
   viewer=$PKG_DIR/viewer
   rm -rf "$viewer/js" "$viewer/css"
-  wasm_module webgpu,files "$viewer/pkg" -Oz
+  # Without `files`: glTF's document model and the JSON parsing of its structs are a large part
+  # of a module that every figure downloads; a figure with a .glb or .csv `src` fetches full/.
+  wasm_module webgpu "$viewer/pkg" -Oz
   wasm_module webgl,files "$viewer/pkg-gl" -Oz
   header "viewer: sources"
   mkdir -p "$viewer/js/element" "$viewer/js/view" "$viewer/js/editor" "$viewer/css"
@@ -175,9 +179,11 @@ if [[ ${VIEWER:-1} == 1 ]]; then
   # The package's main renderer module has WebGPU only: name the WebGL2 module.
   cat >"$viewer/js/element/modules.js" <<'JS'
 // The figure's WebAssembly modules in the npm package (written by scripts/build-pkg.sh): the
-// main one has WebGPU only; the WebGL2 one is imported only when WebGPU has no usable adapter.
+// main one has WebGPU only; the WebGL2 one is imported only when WebGPU has no usable adapter;
+// `screwbender/full` only to read a glTF or CSV `src` with the WebGPU one (no file import).
 export const loadMain = () => import('../../pkg/screwbender.js');
 export const loadGl = () => import('../../pkg-gl/screwbender.js');
+export const loadFiles = () => import('../../../full/screwbender.js');
 JS
   # The viewer's sources ship minified (esbuild, Vite's: each file on its own, imports and
   # import.meta.url kept, comments dropped): a figure downloads them all, and the readable ones

@@ -6,8 +6,8 @@
 #   SKIP_BUILD=1 ./scripts/serve.sh   # serve what is already built
 #   BUILD_ONLY=1 ./scripts/serve.sh   # build www/ and exit (used by scripts/test.d/40-e2e.sh)
 #
-# Build: the page's three wasm modules (scripts/wasm-module.sh; the same builds as the npm
-# package's, so whichever of the two scripts runs second only copies them), then every
+# Build: the page's three wasm modules (scripts/wasm-module.sh; pkg-gl and pkg-full are the npm
+# package's builds, so whichever of the two scripts runs second only copies them), then every
 # executable scripts/serve.d/*.sh in sorted order (hook for later build steps, e.g. vendoring
 # uplot and lil-gui from node_modules into www/). Serve: scripts/serve.mjs (no-store caching,
 # right MIME).

@@ -3,14 +3,15 @@
 # package built in PKG (default pkg/, by scripts/build-pkg.sh, whose viewer sources are minified),
 # gzip -9 per file, and fails over budget:
 #   WebGPU path: viewer.js, the figure's JS and CSS, viewer/pkg/ (glue + WebGPU-only wasm)
-#                ≤ WEBGPU_GZIP_BUDGET bytes (default 395 000);
+#                ≤ WEBGPU_GZIP_BUDGET bytes (default 290 000);
 #   WebGL2 path: the same JS and CSS and viewer/pkg-gl/ (glue + WebGL2 wasm), not the WebGPU
 #                module ≤ WEBGL_GZIP_BUDGET bytes (default 1 200 000).
 # js/editor/session.js is imported only for a `share` payload, so
 # neither path counts it. Nor does either count viewer/vendor/bunny.obj (the Stanford bunny, about
 # 46 KB gzip), which a figure fetches only to show the bunny6 preset; it is logged apart.
 # Also checks that neither wasm carries a name section and that the WebGPU module has no GL
-# backend or shader translator (no naga/glow/WebGL2RenderingContext in its glue or wasm).
+# backend or shader translator (no naga/glow/WebGL2RenderingContext in its glue or wasm) and no
+# file import (the figure reads a glTF or CSV `src` with the `screwbender/full` module).
 #
 #   ./scripts/viewer-size.sh [PKG]
 set -euo pipefail
@@ -19,7 +20,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 cd "$REPO_ROOT"
 
 pkg=${1:-pkg}
-WEBGPU_GZIP_BUDGET=${WEBGPU_GZIP_BUDGET:-395000}
+WEBGPU_GZIP_BUDGET=${WEBGPU_GZIP_BUDGET:-290000}
 WEBGL_GZIP_BUDGET=${WEBGL_GZIP_BUDGET:-1200000}
 v=$pkg/viewer
 [[ -f $v/pkg/screwbender_bg.wasm && -f $v/pkg-gl/screwbender_bg.wasm ]] || die "no viewer modules in $pkg (scripts/build-pkg.sh)"
@@ -55,6 +56,9 @@ node -e '
 ' "$v/pkg/screwbender_bg.wasm" "$v/pkg-gl/screwbender_bg.wasm" || die "a viewer wasm carries a name section"
 if grep -q -E 'WebGL2RenderingContext|getContext\(.webgl' "$v/pkg/screwbender.js"; then
   die "the WebGPU-only viewer module has WebGL glue: was it built with the webgl feature?"
+fi
+if grep -q importMotionFile "$v/pkg/screwbender.js"; then
+  die "the WebGPU-only viewer module has file import: was it built with the files feature?"
 fi
 ((webgpu_total <= WEBGPU_GZIP_BUDGET)) || die "WebGPU figure: $webgpu_total bytes gzip, over the budget of $WEBGPU_GZIP_BUDGET"
 ((webgl_total <= WEBGL_GZIP_BUDGET)) || die "WebGL2 figure: $webgl_total bytes gzip, over the budget of $WEBGL_GZIP_BUDGET"

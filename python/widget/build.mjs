@@ -52,7 +52,8 @@ const adapt = {
         import bytes from ${JSON.stringify(wasm)};
         import bytesGl from ${JSON.stringify(wasmGl)};
         export const loadMain = async () => ({ ...glue, default: () => init({ module_or_path: bytes }) });
-        export const loadGl = async () => ({ ...glueGl, default: () => initGl({ module_or_path: bytesGl }) });`,
+        export const loadGl = async () => ({ ...glueGl, default: () => initGl({ module_or_path: bytesGl }) });
+        export const loadFiles = () => Promise.reject(new Error('both modules read files themselves'));`,
     }));
     build.onLoad({ filter: /element[\\/]wasm\.js$/ }, (a) => {
       const text = fs.readFileSync(a.path, 'utf8');

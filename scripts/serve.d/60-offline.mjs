@@ -63,6 +63,8 @@ async function inline(g, id) {
 
 export const loadMain = () => inline(glue, 'screwbender-wasm');
 export const loadGl = () => inline(glueGl, 'screwbender-wasm-gl');
+/** Both inline modules read glTF and CSV themselves, and the page fetches no other module. */
+export const loadFiles = () => Promise.reject(new Error('no file import module offline'));
 `;
 
 const offline = {

@@ -4,7 +4,7 @@
 #   1. build and pack it (scripts/build-pkg.sh), check the tarball's file list and the size
 #      budget of the .wasm (WASM_GZIP_BUDGET bytes gzip, default 150 000; see below),
 #      and the viewer's budgets (scripts/viewer-size.sh: what a browser downloads for one
-#      read-only figure, WebGPU ≤ 395 KB gzip, the WebGL2 path ≤ 1.2 MB gzip);
+#      read-only figure, WebGPU ≤ 290 KB gzip, the WebGL2 path ≤ 1.2 MB gzip);
 #   2. install the tarball into fresh apps under a mktemp dir, with only the npm registry:
 #      a Node app (smoke test through the package "exports"), a Vite 7 app (`vite build`, served
 #      on 127.0.0.1, and the Vite dev server; plus `tsc --strict` on a usage file against the

@@ -2,9 +2,16 @@
 // share-link payload), an inline JSON document, or `scene` (a preset); and the opt-in saved copy
 // (`persist`), the only storage a figure ever touches.
 import { OptionError } from './options.js';
+import { loadFiles } from './wasm.js';
 
 /** Largest motion file `src` may name (bytes); larger ones are refused before parsing. */
 const MAX_SRC_BYTES = 32 << 20;
+
+/**
+ * The module that reads glTF and CSV motion files: `w` itself when it has file import, else the
+ * files module (wasm.js), so that the renderer module can leave the glTF document model out.
+ */
+const fileImporter = (w) => (w.importMotionFile ? w : loadFiles());
 
 /**
  * The motion document (and display hints) of the source that the options `o` name, with the
@@ -29,7 +36,7 @@ export async function fetchSource(o, w, scenes) {
     if (bytes.length > MAX_SRC_BYTES) throw new OptionError('src', o.src, `${bytes.length} bytes, more than ${MAX_SRC_BYTES}`);
     const name = url.pathname.split('/').pop() || 'motion.json';
     try {
-      if (/\.(glb|gltf|csv)$/i.test(name)) return { doc: w.importMotionFile(name, bytes) };
+      if (/\.(glb|gltf|csv)$/i.test(name)) return { doc: (await fileImporter(w)).importMotionFile(name, bytes) };
       return { doc: JSON.parse(new TextDecoder().decode(bytes)) };
     } catch (e) {
       throw new OptionError('src', o.src, e.message);

@@ -1,7 +1,7 @@
 // The WebAssembly side that all figures of a page share: one module instance (the main module, or
-// the WebGL2 one when WebGPU has no usable adapter; element/modules.js says which), and one
-// queue in which figures open their renderers.
-import { loadMain, loadGl } from './modules.js';
+// the WebGL2 one when WebGPU has no usable adapter; element/modules.js says which), the files
+// module where a glTF or CSV `src` needs one, and one queue in which figures open their renderers.
+import { loadMain, loadGl, loadFiles as importFiles } from './modules.js';
 
 let wasmReady = null;
 let glReady = null;
@@ -34,6 +34,24 @@ export function loadWasm({ webgl2 = false } = {}) {
     return m;
   })();
   return wasmReady;
+}
+
+let filesReady = null;
+/**
+ * The module with file import (`importMotionFile`), initialised on first use, for a glTF or CSV
+ * `src` when the renderer module has none; loaded again after a failure.
+ */
+export function loadFiles() {
+  filesReady ??= importFiles()
+    .then(async (m) => {
+      await m.default();
+      return m;
+    })
+    .catch((e) => {
+      filesReady = null;
+      throw e;
+    });
+  return filesReady;
 }
 
 /** Figures open their renderers one after another, so the first one's WebGPU device is shared. */
