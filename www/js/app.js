@@ -539,7 +539,7 @@ export class App {
     this.viewer.retime();
     this.warnSubdivision();
     if (save) this.autosave();
-    this.ui?.refresh();
+    // The chrome (editor/ui.js) and the dock follow.
     this.emit('motion');
   }
 

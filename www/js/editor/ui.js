@@ -46,6 +46,9 @@ export function buildUi(app) {
     app.parts.pose.refresh();
   }
 
+  // Every change of the motion, its options or the view settings shows (before the dock's
+  // update, which subscribes later).
+  app.on('motion', refresh);
   refresh();
   return { gui: panel.gui, refresh, setTime: timeline.setTime, toggleHelp: help.toggle, toast: status.toast };
 }
