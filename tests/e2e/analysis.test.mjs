@@ -289,7 +289,7 @@ test(`${BACKEND}: the playhead of every plot follows the time; hovering a plot s
 
 test(`${BACKEND}: dark theme (D key): the charts switch to light ink live, keeping their zoom, data and playhead`, async () => {
   await page.setViewportSize({ width: 1280, height: 800 });
-  await sb(() => (window.screwbender.app.view.theme = 'light'));
+  await sb(() => (window.screwbender.app.updateView({ theme: 'light' })));
   await openPlots();
   await sb((t) => window.screwbender.app.seekTime(t), 2.5);
   await page.waitForFunction(() => window.screwbender.app.dock.current.charts.every((c) => c.playheadX !== null && Math.abs(c.playheadX - 2.5) < 1e-9));
@@ -363,7 +363,7 @@ test(`${BACKEND}: dark theme (D key): the charts switch to light ink live, keepi
   const back = await look(1);
   assert.ok(lum(back.ink) < 0.25, `light again: ${back.ink}`);
   assert.deepEqual([back.same, back.min, back.max], [true, 1, 4]);
-  await sb(() => (window.screwbender.app.view.theme = 'light'));
+  await sb(() => (window.screwbender.app.updateView({ theme: 'light' })));
   assert.deepEqual(problems, []);
 });
 
@@ -423,7 +423,7 @@ const drawnSeries = () =>
 
 test(`${BACKEND}: every series line has at least 3:1 against the dock in both themes (WCAG 1.4.11), switched live; legends show the lines' colours`, async () => {
   await page.setViewportSize({ width: 1280, height: 800 });
-  await sb(() => (window.screwbender.app.view.theme = 'light'));
+  await sb(() => (window.screwbender.app.updateView({ theme: 'light' })));
   await openPlots();
   // Methods with the Chaudhry–Cameron charts (slot 1; C⁰ on this cycle) and Ramamoorthi–Barr's (slot 3).
   await sb(() => window.screwbender.openView('methods'));
@@ -480,7 +480,7 @@ test(`${BACKEND}: every series line has at least 3:1 against the dock in both th
   await page.keyboard.press('d');
   await page.waitForFunction(() => document.documentElement.dataset.theme === 'light');
   assert.deepEqual(await check('light'), light);
-  await sb(() => (window.screwbender.app.view.theme = 'light'));
+  await sb(() => (window.screwbender.app.updateView({ theme: 'light' })));
   assert.deepEqual(problems, []);
 });
 

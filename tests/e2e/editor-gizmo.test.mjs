@@ -34,7 +34,7 @@ async function setup({ preset = 'l_cycle_rotated', i = 2, origin, rotation, mode
         const p = app.motion.pose(i);
         app.motion.setPose(i, { origin: origin ?? p.origin, rotation: rotation ?? p.rotation });
       }
-      app.view.snap = snap;
+      app.updateView({ snap });
       if (camera) Object.assign(app.camera, camera);
       app.viewer.cameraMoved();
       app.changed(false);

@@ -32,7 +32,7 @@ async function heavy() {
   await sb(() => {
     const app = window.screwbender.app;
     app.loadPreset('l_cycle_rotated', false);
-    app.view.strobe = 10000;
+    app.updateView({ strobe: 10000 });
     app.motion.setOptions({ levels: 8 });
     app.changed();
     app.select(-1);

@@ -29,7 +29,7 @@ after(async () => {
   await play?.close();
 });
 
-/** The light and dark backgrounds as displayed (www/js/view/scene.js BACKGROUND), 0..255. */
+/** The light and dark backgrounds as displayed (www/js/view/slots.js BACKGROUND), 0..255. */
 const LIGHT = [232, 236, 241];
 const DARK = [27, 31, 39];
 /** Per-channel tolerance on a background pixel (8-bit rounding, the encoders). */
@@ -344,12 +344,12 @@ async function audit() {
 
 test('axe: no serious or critical violation with the View menu open (both themes) and while recording', async () => {
   for (const theme of ['light', 'dark']) {
-    await page.evaluate((t) => (window.screwbender.app.view.theme = t), theme);
+    await page.evaluate((t) => (window.screwbender.app.updateView({ theme: t })), theme);
     await openMenu();
     assert.deepEqual(await audit(), [], `View menu, ${theme} theme`);
     await page.keyboard.press('Escape');
   }
-  await page.evaluate(() => (window.screwbender.app.view.theme = 'auto'));
+  await page.evaluate(() => (window.screwbender.app.updateView({ theme: 'auto' })));
   await menuClick('#m-video');
   await page.waitForFunction(() => !document.getElementById('rec').hidden);
   assert.deepEqual(await audit(), [], 'recording bar');
@@ -381,7 +381,7 @@ test('PNG leaves out the gizmo and the selection by default, keeps the pose numb
   await page.evaluate(() => {
     const app = window.screwbender.app;
     app.loadPreset('cylinder5');
-    app.view.showPoseNumbers = true;
+    app.updateView({ showPoseNumbers: true });
     app.setMode?.('rotate');
   });
   await waitFrames(page, 2);
@@ -409,7 +409,7 @@ test('PNG leaves out the gizmo and the selection by default, keeps the pose numb
   await page.evaluate(() => {
     const app = window.screwbender.app;
     app.select(-1);
-    app.view.showPoseNumbers = false;
+    app.updateView({ showPoseNumbers: false });
     app.parts.labels.place();
   });
   await waitFrames(page, 2);
@@ -417,7 +417,7 @@ test('PNG leaves out the gizmo and the selection by default, keeps the pose numb
   const numbers = await pngDiff(none, bare);
   assert.ok(numbers > 1e-4, `the pose numbers are in the picture (${(numbers * 100).toFixed(4)} % of the pixels)`);
   await page.evaluate(() => {
-    window.screwbender.app.view.showPoseNumbers = true;
+    window.screwbender.app.updateView({ showPoseNumbers: true });
     window.screwbender.app.loadPreset('l_cycle_rotated');
   });
   assert.deepEqual(problems, []);

@@ -167,14 +167,14 @@ test('the dialog: opened and left by keyboard, focus kept inside, screenshots at
   // axe (from npm, injected through the debugging protocol: the page's CSP refuses inline scripts).
   await page.evaluate(fs.readFileSync(path.join(ROOT, 'node_modules/axe-core/axe.min.js'), 'utf8'));
   for (const theme of ['light', 'dark']) {
-    await page.evaluate((t) => (window.screwbender.app.view.theme = t), theme);
+    await page.evaluate((t) => (window.screwbender.app.updateView({ theme: t })), theme);
     const found = await page.evaluate(async () => {
       const r = await window.axe.run(document.getElementById('share'), { resultTypes: ['violations'] });
       return r.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => `${v.impact} ${v.id}: ${v.nodes.slice(0, 4).map((n) => n.target.join(' ')).join(', ')}`);
     });
     assert.deepEqual(found, [], `axe, ${theme} theme`);
   }
-  await page.evaluate(() => (window.screwbender.app.view.theme = 'auto'));
+  await page.evaluate(() => (window.screwbender.app.updateView({ theme: 'auto' })));
   await page.keyboard.press('Escape');
   assert.equal(await page.locator('#share').isVisible(), false, 'Esc closes the dialog');
   assert.equal(await page.evaluate(() => document.activeElement.textContent.trim()), 'Share & embed…', 'the focus goes back to its button');

@@ -18,7 +18,7 @@ let blank;
 
 /** Frames per second of the videos (editor/media.js FPS). */
 const FPS = 30;
-/** The light background as displayed (www/js/view/scene.js BACKGROUND), 0..255. */
+/** The light background as displayed (www/js/view/slots.js BACKGROUND), 0..255. */
 const LIGHT = [232, 236, 241];
 
 before(async () => {

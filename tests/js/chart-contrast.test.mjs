@@ -1,14 +1,14 @@
-// The analysis charts' series colours against the chart card (www/js/views/plot.js seriesInk,
+// The analysis charts' series colours against the chart card (www/js/views/ink.js seriesInk,
 // WCAG 2.1 SC 1.4.11: graphical objects at least 3:1): every colour the chart views give their
 // series passes in both themes once drawn; colours that pass are drawn as they are, failing ones
 // keep their hue; other notations pass through; CHART_BG follows the dock's colours in
-// style.css. plot.js touches `document` only inside functions, so it loads in Node as it is.
+// style.css. ink.js touches `document` only inside functions, so it loads in Node as it is.
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { describe, it } from 'node:test';
 import { fileURLToPath } from 'node:url';
-import { CHART_BG, CHART_INK, MIN_CONTRAST, PALETTE, contrast, seriesInk, seriesInkFor } from '../../www/js/views/plot.js';
+import { CHART_BG, CHART_INK, MIN_CONTRAST, PALETTE, contrast, seriesInk, seriesInkFor } from '../../www/js/views/ink.js';
 
 const ROOT = path.join(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 const read = (p) => fs.readFileSync(path.join(ROOT, p), 'utf8');

@@ -1,9 +1,11 @@
-// The playground editor. The App holds the editing state (a wasm Motion and the settings around
-// it), runs the 3-D view (view/viewer.js) with itself as the view's model, and puts the editor
-// around it: panel, toolbar and timeline (editor/ui.js), the analysis dock (editor/dock.js) and
-// the parts below.
+// The playground editor. The App is the one owner of the editing state (a wasm Motion, the
+// display settings, playback, the selection, the imported mesh): the rest of the page reads it
+// and changes it only through the App's commands (undoable edits through `edit`) and setters,
+// and follows it through `app.on(topic, fn)`. It runs the 3-D view (view/viewer.js) with that
+// state as the view's model, and puts the editor around it: panel, toolbar and timeline
+// (editor/ui.js), the analysis dock (editor/dock.js) and the parts below.
 //
-// A part module default-exports { id, create(app) }, as the dock's views do (without an
+// A part module default-exports a Part, { id, create(app) }, as the dock's views do (without an
 // element): `create` returns the part's instance, kept as app.parts[id]. A part reaches
 // everything through the app it is given (none imports app.js), and an instance with `bind()`
 // attaches its listeners once the view runs. The App methods that only forward to a part or to
@@ -24,7 +26,7 @@ import presets from './editor/presets.js';
 import responsive from './editor/responsive.js';
 import labels from './editor/labels.js';
 import viewpoint from './editor/viewpoint.js';
-import theme from './editor/theme.js';
+import theme, { THEMES } from './editor/theme.js';
 import media from './editor/media.js';
 
 // A retry asks for the modules under another URL (see editor/modules.js).
@@ -46,52 +48,249 @@ const PRESELECT = { l_cycle_edit: 4 };
 /** Default preset on a first visit. */
 const DEFAULT_SCENE = 'l_cycle_rotated';
 
+/**
+ * The display settings (app.view): saved with the session, undoable through `setView`.
+ * @typedef {object} ViewState
+ * @property {string} scene the preset last loaded
+ * @property {string} object the moving object: 'scene' (the preset's), a shape, or 'obj' (imported)
+ * @property {number} strobe copies of the object along the motion
+ * @property {boolean} showStrobe
+ * @property {boolean} showControl
+ * @property {boolean} showTrajectories
+ * @property {boolean} showPolyscrew
+ * @property {boolean} showPolygon
+ * @property {boolean} showTriads
+ * @property {boolean} showPoseNumbers pose numbers beside the handles (editor/labels.js)
+ * @property {boolean} gizmoLocal the gizmo's axes: the world's (false) or the selected pose's own
+ * @property {boolean} showGrid
+ * @property {boolean} snap
+ * @property {string} theme 'auto' (the system's prefers-color-scheme), 'light' or 'dark' (editor/theme.js)
+ * @property {string} dock the open analysis view ('' = dock closed)
+ */
+
+/**
+ * Playback (app.anim; view/viewer.js advances it while playing): u the parameter shown, t its
+ * time in seconds (unknown until derived from u: tu is the u that t belongs to).
+ * @typedef {object} Playback
+ * @property {boolean} playing
+ * @property {number} u
+ * @property {number} [t]
+ * @property {number} [tu]
+ * @property {number} speed
+ * @property {boolean} loop
+ * @property {boolean} visible whether the animated object is shown
+ * @property {number | null} [passes] the viewer's count of passes left (element playback)
+ */
+
+/**
+ * What the App announces to `app.on(topic, fn)`: 'motion' (the Motion, its options or the
+ * display changed and the view has been rebuilt: `changed`),
+ * 'view' (display settings: fn gets the names changed), 'playback' (playhead, speed, loop),
+ * 'selection' (the selected pose or the gizmo mode).
+ * @typedef {'motion' | 'view' | 'playback' | 'selection'} Topic
+ */
+
+/**
+ * An editor part: a module's default export. `create` returns the instance the App keeps as
+ * app.parts[id]; an instance with `bind()` attaches its listeners once the view runs.
+ * @typedef {object} Part
+ * @property {string} id
+ * @property {(app: App) => any} create
+ */
+
+/**
+ * A read-only face of one of the App's state objects: reading works as on the object, any
+ * write throws and names the App's operation to use instead.
+ * @template {object} T
+ * @param {T} target
+ * @param {string} name the state's name in messages
+ * @param {string} instead the operation that changes it
+ * @returns {Readonly<T>}
+ */
+function readOnly(target, name, instead) {
+  const refuse = (key) => {
+    throw new TypeError(`app.${name}.${String(key)} is read-only: change it with ${instead}`);
+  };
+  return /** @type {Readonly<T>} */ (new Proxy(/** @type {object} */ (target), {
+    set: (_, key) => refuse(key),
+    defineProperty: (_, key) => refuse(key),
+    deleteProperty: (_, key) => refuse(key),
+  }));
+}
+
 export class App {
+  /** @type {any} the wasm Motion being edited (one owner: replaced only through setMotion). */
+  #motion = null;
+  /** @type {ViewState} */
+  #view = {
+    scene: DEFAULT_SCENE,
+    object: 'scene',
+    strobe: 64,
+    showStrobe: true,
+    showControl: true,
+    showTrajectories: true,
+    showPolyscrew: false,
+    showPolygon: true,
+    showTriads: true,
+    showPoseNumbers: true,
+    gizmoLocal: false,
+    showGrid: true,
+    snap: false,
+    theme: 'auto',
+    dock: '',
+  };
+  /** @type {Playback} (t is unknown until the first motion: view/viewer.js playTime derives it from u) */
+  #anim = { playing: false, u: 0, t: undefined, tu: undefined, speed: 1, loop: true, visible: false };
+  #selected = -1;
+  /** @type {'translate' | 'rotate'} */
+  #mode = 'translate';
+  /** @type {{kind: string, data: string} | null} the imported mesh: {kind: 'obj', data: text} or {kind: 'gltf', data: base64} */
+  #imported = null;
+  /** @type {Map<Topic, Set<Function>>} */
+  #listeners = new Map();
+  #viewFace = readOnly(this.#view, 'view', 'app.setView(key, value) (undoable) or app.updateView(patch)');
+  #animFace = readOnly(this.#anim, 'anim', 'app.setPlayback(patch), app.seekTime(t) or app.setPlaying(on)');
+
   constructor() {
     this.history = new History();
     this.errors = [];
-    // The fields the viewer reads (the model of view/viewer.js), then the editor's own.
-    this.motion = null;
-    this.selected = -1;
-    this.mode = 'translate';
+    // Pointer state the viewer reads while a press is in progress (editor/input.js).
     this.hover = null;
     // Unknown until the pointer first moves (that first move then sets the cursor).
     this.hoverPose = undefined;
     this.drag = null;
-    this.view = {
-      scene: DEFAULT_SCENE,
-      object: 'scene',
-      strobe: 64,
-      showStrobe: true,
-      showControl: true,
-      showTrajectories: true,
-      showPolyscrew: false,
-      showPolygon: true,
-      showTriads: true,
-      /** Pose numbers beside the handles (editor/labels.js). */
-      showPoseNumbers: true,
-      gizmoLocal: false, // the gizmo's axes: the world's (false) or the selected pose's own
-      showGrid: true,
-      snap: false,
-      /** 'auto' (the system's prefers-color-scheme), 'light' or 'dark' (editor/theme.js). */
-      theme: 'auto',
-      /** The open analysis view ('' = dock closed). */
-      dock: '',
-    };
-    // The key times live in the Motion (motion.times): `view.times` remains only as a
-    // non-enumerable alias for older callers (lesson steps), outside sessions and undo.
-    Object.defineProperty(this.view, 'times', {
-      enumerable: false,
-      get: () => this.times(),
-      set: (t) => this.motion.setTimes(t ?? null),
-    });
-    // Playback (view/viewer.js): u the parameter shown, t its time in seconds.
-    // (t is unknown until the first motion: view/viewer.js playTime derives it from u.)
-    this.anim = { playing: false, u: 0, t: undefined, tu: undefined, speed: 1, loop: true, visible: false };
-    /** The imported mesh: {kind: 'obj', data: text} or {kind: 'gltf', data: base64}. */
-    this.imported = null;
+    /** @type {string | undefined} the analysis view last open (the toolbar's dock button reopens it) */
+    this.lastView = undefined;
     this.parts = {};
     for (const p of PARTS) this.parts[p.id] = p.create(this);
+  }
+
+  // ---------------------------------------------------------------- the state and its signals
+
+  /** The wasm Motion being edited; replace it with `setMotion` (inside an `edit` to undo it). */
+  get motion() {
+    return this.#motion;
+  }
+
+  /** The display settings, read-only: `setView` (undoable) or `updateView` change them. */
+  get view() {
+    return this.#viewFace;
+  }
+
+  /** Playback, read-only: `setPlayback`, `seekTime` and `setPlaying` change it. */
+  get anim() {
+    return this.#animFace;
+  }
+
+  /** The selected control pose (-1: none); `select` changes it. */
+  get selected() {
+    return this.#selected;
+  }
+
+  /** The gizmo's mode; `setMode` changes it. */
+  get mode() {
+    return this.#mode;
+  }
+
+  /** The imported mesh or null; `setImported` changes it. */
+  get imported() {
+    return this.#imported;
+  }
+
+  /**
+   * The model the viewer draws (view/viewer.js): the same state, with playback writable, since
+   * the viewer's frame loop is what advances the playhead.
+   * @returns {import('./view/viewer.js').Model}
+   */
+  viewerModel() {
+    const app = this;
+    return {
+      get motion() { return app.#motion; },
+      view: this.#view,
+      anim: this.#anim,
+      get selected() { return app.#selected; },
+      get mode() { return app.#mode; },
+      get imported() { return app.#imported; },
+      get hover() { return app.hover; },
+      get hoverPose() { return app.hoverPose; },
+      get drag() { return app.drag; },
+    };
+  }
+
+  /**
+   * Calls `fn(detail)` whenever `topic` changes (see Topic); returns the function that ends the
+   * subscription.
+   * @param {Topic} topic
+   * @param {(detail?: any) => void} fn
+   */
+  on(topic, fn) {
+    if (!this.#listeners.has(topic)) this.#listeners.set(topic, new Set());
+    this.#listeners.get(topic).add(fn);
+    return () => this.#listeners.get(topic).delete(fn);
+  }
+
+  /**
+   * Announces a change of `topic` to its subscribers.
+   * @param {Topic} topic
+   * @param {any} [detail]
+   */
+  emit(topic, detail) {
+    for (const fn of this.#listeners.get(topic) ?? []) fn(detail);
+  }
+
+  /**
+   * Takes `motion` as the edited Motion and frees the one before (run it inside `edit` to make
+   * it undoable); the selection is cleared unless `selected` names a pose.
+   */
+  setMotion(motion, selected = -1) {
+    if (motion === this.#motion) return;
+    this.#motion?.free();
+    this.#motion = motion;
+    this.#selected = selected;
+    this.emit('selection');
+  }
+
+  /** Sets the imported mesh ({kind, data}, or null). */
+  setImported(mesh) {
+    this.#imported = mesh;
+  }
+
+  /**
+   * Sets display settings without an undo step (`setView` is the undoable edit): each key must
+   * be a setting and each value of its type, else nothing changes and an error says which.
+   * A theme other than 'auto', 'light' or 'dark' keeps the current one. Announces 'view' with
+   * the names changed.
+   * @param {Partial<ViewState>} patch
+   */
+  updateView(patch) {
+    for (const [k, v] of Object.entries(patch)) {
+      if (!(k in this.#view)) throw new Error(`unknown display setting ${k}`);
+      if (typeof v !== typeof this.#view[k]) throw new Error(`display setting ${k} must be a ${typeof this.#view[k]}`);
+    }
+    const changed = [];
+    for (const [k, v] of Object.entries(patch)) {
+      if (k === 'theme' && !THEMES.includes(String(v))) continue;
+      if (this.#view[k] === v) continue;
+      this.#view[k] = v;
+      changed.push(k);
+    }
+    if (changed.length) this.emit('view', changed);
+  }
+
+  /**
+   * Sets playback fields (u, speed, loop, visible; `playing` only as a flag, as a chart's
+   * preview pauses: `setPlaying` starts and stops playback) without drawing; `updateAnim` or
+   * `seekTime` shows them. The time in seconds follows a new u by itself (view/viewer.js playTime);
+   * `t: undefined` forgets it also where u stays.
+   * @param {Partial<Pick<Playback, 'u' | 't' | 'speed' | 'loop' | 'visible' | 'playing'>>} patch
+   */
+  setPlayback(patch) {
+    for (const k of Object.keys(patch)) {
+      if (!['u', 't', 'speed', 'loop', 'visible', 'playing'].includes(k)) throw new Error(`unknown playback setting ${k}`);
+    }
+    if ('t' in patch && patch.t !== undefined) throw new Error('playback time: use seekTime(t)');
+    Object.assign(this.#anim, patch);
+    this.emit('playback');
   }
 
   // ---------------------------------------------------------------- startup
@@ -128,13 +327,19 @@ export class App {
   async startViewer(webgl2) {
     const { wasm, gl } = await renderModule(webgl2);
     const viewer = (module) =>
-      new Viewer(document.getElementById('view'), module, {
-        model: this,
+      new Viewer(/** @type {HTMLCanvasElement} */ (document.getElementById('view')), module, {
+        model: this.viewerModel(),
         webgl2,
         // WebGPU without an adapter is no fault of the page or the browser: neutral information.
         warn: (message) => this.showError(message, /no usable adapter/.test(message) ? 'info' : 'warn'),
-        onTime: (u, a, b, playhead) => this.ui?.setTime(u, a, b, playhead),
-        onPlay: () => this.ui?.refresh(),
+        onTime: (u, a, b, playhead) => {
+          this.ui?.setTime(u, a, b, playhead);
+          this.emit('playback');
+        },
+        onPlay: () => {
+          this.ui?.refresh();
+          this.emit('playback');
+        },
       });
     this.wasm = wasm;
     this.viewer = viewer(wasm);
@@ -334,8 +539,8 @@ export class App {
     this.viewer.retime();
     this.warnSubdivision();
     if (save) this.autosave();
-    this.ui?.refresh();
-    this.dock?.changed('edit');
+    // The chrome (editor/ui.js) and the dock follow.
+    this.emit('motion');
   }
 
   /**
@@ -384,7 +589,7 @@ export class App {
       this.dock = new Dock(this, views, analysis);
     } catch (e) {
       this.showError(`${e.message}. The editor works on without the analysis views.`);
-      this.view.dock = '';
+      this.updateView({ dock: '' });
       this.wantView = '';
       this.ui?.refresh();
     } finally {
@@ -405,9 +610,9 @@ export class App {
         this.viewer.invalidateSize();
         this.frameAll();
       }
-      this.view.dock = id || '';
+      this.updateView({ dock: id || '' });
     } catch (e) {
-      this.view.dock = '';
+      this.updateView({ dock: '' });
       this.showError(e.message);
     }
     this.autosave();
@@ -419,16 +624,10 @@ export class App {
     const info = this.scenes.find((s) => s.id === id);
     if (!info) return this.showError(`unknown preset ${id}`);
     const apply = () => {
-      const motion = this.wasm.Motion.fromPreset(id);
-      this.motion?.free();
-      this.motion = motion;
-      this.view.scene = id;
-      this.view.object = 'scene';
-      this.view.strobe = PRESET_STROBE[id] ?? DEFAULT_STROBE;
       // The editing scene (A3) starts with its top-left pose selected, ready to drag.
-      this.selected = PRESELECT[id] ?? -1;
-      this.anim.u = 0;
-      this.anim.t = undefined;
+      this.setMotion(this.wasm.Motion.fromPreset(id), PRESELECT[id] ?? -1);
+      this.updateView({ scene: id, object: 'scene', strobe: PRESET_STROBE[id] ?? DEFAULT_STROBE });
+      this.setPlayback({ u: 0, t: undefined });
       this.meshesChanged();
       this.frameAll();
     };
@@ -498,14 +697,20 @@ export class App {
     return null;
   }
 
-  select(k) {
-    this.selected = k;
+  /** Selects pose k (-1: none); `redraw` false only records it (a session being applied redraws all). */
+  select(k, redraw = true) {
+    this.#selected = k;
+    this.emit('selection');
+    if (!redraw) return;
     this.viewer.rebuildControls();
     this.ui?.refresh();
   }
 
-  setMode(mode) {
-    this.mode = mode;
+  /** Sets the gizmo's mode ('translate' or 'rotate'); `redraw` as for `select`. */
+  setMode(mode, redraw = true) {
+    this.#mode = mode === 'rotate' ? 'rotate' : 'translate';
+    this.emit('selection');
+    if (!redraw) return;
     this.viewer.rebuildGizmo();
     this.requestDraw();
     this.ui?.refresh();
@@ -519,8 +724,8 @@ export class App {
         // Open motion: extrapolate one span past the end.
         const [, b] = this.motion.domain();
         const p = this.motion.poseAt(b + 0.5);
-        this.selected = this.motion.insertPose(i, p);
-      } else this.selected = this.motion.insertPose(i);
+        this.select(this.motion.insertPose(i, p), false);
+      } else this.select(this.motion.insertPose(i), false);
     });
   }
 
@@ -529,7 +734,7 @@ export class App {
     this.edit(() => {
       if (this.motion.poseCount <= 2) throw new Error('a motion keeps at least 2 poses');
       this.motion.removePose(this.selected);
-      this.selected = Math.min(this.selected, this.motion.poseCount - 1);
+      this.select(Math.min(this.selected, this.motion.poseCount - 1), false);
     });
   }
 
@@ -552,7 +757,7 @@ export class App {
 
   setView(key, value) {
     this.edit(() => {
-      this.view[key] = value;
+      this.updateView({ [key]: value });
       if (key === 'object') this.meshesChanged();
     }, `view:${key}`);
   }

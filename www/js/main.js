@@ -17,7 +17,8 @@
 //   openView(id): Promise<instance> opens an analysis view of the dock ('' closes it); the first
 //                                   one fetches the dock, its views and the analysis module
 //   flushViews()                    runs the open view's pending update now
-//   app                             the App object itself (for benchmarks / debugging)
+//   app                             the App object itself (for benchmarks / debugging); its state
+//                                   is read-only: change it through its setters (js/app.js)
 //   lessons: Promise<player>        the lesson player once fetched and started, after the first
 //                                   frame (js/lessons/player.js documents it; null if it failed)
 import { App } from './app.js';
@@ -51,7 +52,7 @@ const lessons = ready.then(
   () => null,
 );
 
-window.screwbender = {
+/** @type {any} */ (window).screwbender = {
   ready,
   app,
   lessons,

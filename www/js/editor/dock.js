@@ -11,7 +11,7 @@
 // options or the view settings (reason 'edit'), during drags (reason 'drag', only for views
 // with `live: true`; the Motion then already holds the dragged pose), and when the view is
 // shown (reason 'show'). `show(false)` must remove the view's 3-D overlays (its LAYER / SLOT
-// entries of view/scene.js), so a hidden view costs nothing. No inline `style` attributes in
+// entries of view/slots.js), so a hidden view costs nothing. No inline `style` attributes in
 // markup (the page's CSP refuses them): set styles through `element.style`, or give colour
 // swatches a `data-color` attribute.
 //
@@ -21,6 +21,25 @@
 // the toolbar where the toolbar stands in that part (fitView: phones on their side), so the
 // scene is framed where it can be seen. Charts (views/plot.js) get their
 // playhead from playback, and hovering a chart shows that instant's pose (preview).
+/**
+ * An analysis view of the dock: a module's default export in www/js/views/ (the contract above).
+ * @typedef {object} DockView
+ * @property {string} id
+ * @property {string} title
+ * @property {string} [hint]
+ * @property {boolean} [live] updates during drags as well
+ * @property {(app: import('../app.js').App, el: HTMLElement, wasm: any) => ViewInstance} create
+ */
+
+/**
+ * A view's instance (see the contract above).
+ * @typedef {object} ViewInstance
+ * @property {(reason: 'edit' | 'drag' | 'show') => void} update
+ * @property {(visible: boolean) => void} show
+ * @property {() => void} [dispose]
+ * @property {(step: number) => void} [goTo] the steps view: show step `step`
+ */
+
 import { setPlayheadSource } from '../views/plot.js';
 import { without } from './rects.js';
 
@@ -38,6 +57,8 @@ export class Dock {
     this.views = new Map();
     this.active = null;
     this.pending = null;
+    // Every change of the motion, its options or the view settings updates the open view.
+    app.on('motion', () => this.changed('edit'));
     for (const d of views) {
       const tab = document.createElement('button');
       tab.type = 'button';
@@ -62,7 +83,7 @@ export class Dock {
     }
     this.tabs.addEventListener('keydown', (e) => this.tabKey(e));
     this.buildMenu();
-    this.root.querySelector('.close').onclick = () => this.app.openView('');
+    /** @type {HTMLElement} */ (this.root.querySelector('.close')).onclick = () => this.app.openView('');
     // Colour swatches written as markup carry `data-color`: the page's Content-Security-Policy
     // refuses inline style attributes, so the colour is applied through the CSSOM instead.
     const paint = (root) => {
@@ -113,8 +134,8 @@ export class Dock {
       }
     });
     menu.addEventListener('keydown', (e) => {
-      const items = [...menu.querySelectorAll('[role=menuitem]')];
-      const k = items.indexOf(document.activeElement);
+      const items = [.../** @type {NodeListOf<HTMLElement>} */ (menu.querySelectorAll('[role=menuitem]'))];
+      const k = items.indexOf(/** @type {HTMLElement} */ (document.activeElement));
       if (e.key === 'ArrowDown' || e.key === 'ArrowUp') {
         e.preventDefault();
         const n = items.length;
@@ -131,7 +152,7 @@ export class Dock {
     });
     // A press anywhere else closes the menu.
     document.addEventListener('pointerdown', (e) => {
-      if (!menu.hidden && !menu.contains(e.target) && e.target !== more) this.toggleMenu(false);
+      if (!menu.hidden && !menu.contains(/** @type {Node} */ (e.target)) && e.target !== more) this.toggleMenu(false);
     });
   }
 
@@ -139,7 +160,7 @@ export class Dock {
   toggleMenu(open) {
     this.menu.hidden = !open;
     this.more.setAttribute('aria-expanded', String(open));
-    if (open) this.menu.querySelector('[role=menuitem]')?.focus();
+    if (open) /** @type {HTMLElement} */ (this.menu.querySelector('[role=menuitem]'))?.focus();
   }
 
   /** Arrow keys, Home and End in the tab list open the next / previous / first / last view. */
@@ -258,21 +279,18 @@ export class Dock {
       if (!s) return;
       this.saved = null;
       if (typeof app.seekTime === 'function') app.seekTime(s.t);
-      anim.u = s.u;
-      anim.visible = s.visible;
-      anim.playing = s.playing;
+      app.setPlayback({ u: s.u, visible: s.visible, playing: s.playing });
       app.updateAnim();
       app.requestDraw();
       return;
     }
     if (!Number.isFinite(t) || !app.motion) return;
     if (!this.saved) this.saved = { ...this.playhead(), visible: anim.visible, playing: anim.playing };
-    anim.playing = false;
+    app.setPlayback({ playing: false });
     if (typeof app.seekTime === 'function') app.seekTime(t);
     else {
       const [a, b] = app.motion.domain();
-      anim.u = Math.min(b, Math.max(a, t));
-      anim.visible = true;
+      app.setPlayback({ u: Math.min(b, Math.max(a, t)), visible: true });
       app.updateAnim();
       app.requestDraw();
     }

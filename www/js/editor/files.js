@@ -7,7 +7,7 @@
 // is one undoable edit, and a failed one changes nothing. The functions take the app; the
 // default export is the app's part (see app.js for the part contract).
 import { IMPORT_SIZE } from '../view/drawing.js';
-import { SLOT } from '../view/scene.js';
+import { SLOT } from '../view/slots.js';
 import { SESSION_VERSION, MAX_SAVED_MESH } from './session.js';
 import { askReduction, MANY_POSES } from './reduce-dialog.js';
 
@@ -34,6 +34,7 @@ function fromBase64(text) {
 
 /** The export settings of the current view: the object as drawn (the motion carries its timing). */
 export function exportSettings(app, format, extra = {}) {
+  /** @type {Record<string, any>} */
   const s = { format, ...extra };
   if (format !== 'csv') {
     const v = app.view;
@@ -237,12 +238,10 @@ function importDocument(app, doc, fileName, mesh = null) {
 /** Replaces the motion by `motion` as one undoable edit (the view frames the new poses). */
 function replaceMotion(app, motion, mesh = null) {
   app.edit(() => {
-    app.motion.free();
-    app.motion = motion;
-    app.selected = -1;
+    app.setMotion(motion);
     if (mesh) {
-      app.imported = mesh;
-      app.view.object = 'obj';
+      app.setImported(mesh);
+      app.updateView({ object: 'obj' });
       app.meshesChanged();
     }
     app.frameAll();
@@ -267,8 +266,8 @@ function importMesh(app, kind, data, fileName = 'mesh', failure = null) {
     return false;
   }
   app.edit(() => {
-    app.imported = mesh;
-    app.view.object = 'obj';
+    app.setImported(mesh);
+    app.updateView({ object: 'obj' });
     app.meshesChanged();
   });
   if (mesh.data.length > MAX_SAVED_MESH) {
@@ -294,6 +293,7 @@ function exportControlCsv(app, { save = true } = {}) {
   return { fileName: name, data: text };
 }
 
+/** @type {import('../app.js').Part} */
 export default {
   id: 'files',
   create(app) {

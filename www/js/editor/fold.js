@@ -1,5 +1,5 @@
 // Small screens keep the 3-D view in sight: the settings panel folds when a choice made in it
-// is done (a preset picked, the tour ended), as it starts folded there (editor/ui.js).
+// is done (a preset picked, the tour ended), as it starts folded there (editor/panel.js).
 
 /** Phones upright and on their side (the breakpoints the panel starts folded at). */
 export function smallScreen() {

@@ -8,6 +8,7 @@ import { SNAP_ROTATE, SNAP_TRANSLATE, gizmoAxes } from '../view/gizmo.js';
 import { pickPoses } from '../view/picking.js';
 import { beginPoseDrag, dragTarget, hoverPoseTool, redrawPoseDrag, setDragPose } from '../view/pose-drag.js';
 
+/** @type {import('../app.js').Part} */
 export default {
   id: 'input',
   create(app) {

@@ -5,6 +5,7 @@
 /** Offset of a label from its handle's centre, CSS pixels. */
 const OFFSET = [9, -22];
 
+/** @type {import('../app.js').Part} */
 export default {
   id: 'labels',
   create(app) {

@@ -40,12 +40,14 @@ export const VIDEO_FORMATS = {
  * H.264 levels (the codec string's last byte) by the most macroblocks (16 × 16 pixels) a frame may
  * have at that level: a decoder refuses a stream whose level is too low for its frame size.
  */
+/** @type {[number, string][]} */
 const AVC_LEVELS = [[3600, '1f'], [8192, '28'], [22080, '32'], [36864, '33'], [139264, '3c']];
 
 /**
  * The WebCodecs codecs of `format` tried in order for a `width` × `height` video (the first the
  * encoder takes is used), each with mediabunny's name of it: for MP4, H.264 at the lowest level
  * that fits (Baseline, else High profile); for WebM, VP8, else VP9 profile 0.
+ * @returns {{codec: string, mux: string, avc?: {format: string}}[]}
  */
 export function videoCodecs(format, width, height) {
   if (format === 'webm') return [{ codec: 'vp8', mux: 'vp8' }, { codec: 'vp09.00.10.08', mux: 'vp9' }];
@@ -91,7 +93,7 @@ function drawPoseNumbers(app, canvas) {
   const view = app.canvas.getBoundingClientRect();
   const k = canvas.width / Math.max(1, view.width);
   const ctx = canvas.getContext('2d');
-  for (const e of layer.querySelectorAll('.pose-label')) {
+  for (const e of /** @type {NodeListOf<HTMLElement>} */ (layer.querySelectorAll('.pose-label'))) {
     if (e.hidden) continue;
     const r = e.getBoundingClientRect();
     if (r.width === 0) continue;
@@ -115,7 +117,7 @@ function drawPoseNumbers(app, canvas) {
  * menu's "gizmo & selection" is ticked: returns the function that selects the pose again.
  */
 function hideSelection(app) {
-  const keep = document.getElementById('m-png-selection')?.checked;
+  const keep = /** @type {HTMLInputElement} */ (document.getElementById('m-png-selection'))?.checked;
   const selected = app.selected;
   if (keep || selected < 0) return () => {};
   app.select(-1);
@@ -127,6 +129,7 @@ function hideSelection(app) {
   };
 }
 
+/** @type {import('../app.js').Part} */
 export default {
   id: 'media',
   create(app) {
@@ -178,7 +181,7 @@ export default {
       }
       const first = async (f) => {
         for (const { codec, mux, avc } of videoCodecs(f, width, height)) {
-          const config = { codec, width, height, bitrate: VIDEO_BITS, framerate: FPS, ...(avc ? { avc } : {}) };
+          const config = /** @type {VideoEncoderConfig} */ ({ codec, width, height, bitrate: VIDEO_BITS, framerate: FPS, ...(avc ? { avc } : {}) });
           try {
             if ((await VideoEncoder.isConfigSupported(config)).supported) return { config, mux, format: f };
           } catch {
@@ -198,13 +201,13 @@ export default {
 
     function showProgress(on, fraction = 0) {
       $('rec').hidden = !on;
-      $('rec-progress').value = fraction;
+      /** @type {HTMLProgressElement} */ ($('rec-progress')).value = fraction;
       $('rec-label').textContent = `Recording one cycle… ${Math.round(fraction * 100)} %`;
-      $('m-video').disabled = on;
+      /** @type {HTMLButtonElement} */ ($('m-video')).disabled = on;
     }
 
     /** The video format chosen in the View menu ('mp4' unless WebM is checked). */
-    const chosenFormat = () => ($('m-video-webm')?.checked ? 'webm' : 'mp4');
+    const chosenFormat = () => (/** @type {HTMLInputElement} */ ($('m-video-webm'))?.checked ? 'webm' : 'mp4');
 
     /**
      * Records one cycle of the motion as a video at FPS frames per second and downloads it:
@@ -313,8 +316,7 @@ export default {
         if (output.state !== 'finalized' && output.state !== 'canceled') await output.cancel().catch(() => {});
         recording = null;
         showProgress(false);
-        app.anim.u = u;
-        app.anim.visible = visible;
+        app.setPlayback({ u, visible });
         app.updateAnim();
         if (playing) app.setPlaying(true);
         app.requestDraw();
@@ -352,10 +354,10 @@ export default {
       },
       bind() {
         const m = app.parts.viewpoint.menu;
-        const scale = () => ($('m-png-2x').checked ? 2 : 1);
+        const scale = () => (/** @type {HTMLInputElement} */ ($('m-png-2x')).checked ? 2 : 1);
         $('m-png').addEventListener('click', () => {
           m.close();
-          savePng({ scale: scale(), transparent: $('m-png-transparent').checked });
+          savePng({ scale: scale(), transparent: /** @type {HTMLInputElement} */ ($('m-png-transparent')).checked });
         });
         $('m-video').addEventListener('click', () => {
           m.close();

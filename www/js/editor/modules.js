@@ -70,6 +70,7 @@ export function analysisModule(RenderMotion) {
 // A module whose fetch failed stays failed under its URL (the browser keeps it in its module
 // map), so a retry asks for it under another one.
 const loadAnalysis = lazy('the analysis functions', (attempt) =>
+  // @ts-ignore: scripts/serve.sh builds the module; the type check runs with or without it.
   init(attempt ? import(`../../pkg-full/screwbender.js?retry=${attempt}`) : import('../../pkg-full/screwbender.js')),
 );
 

@@ -1,6 +1,7 @@
 // Messages to the user: the banner at the top (errors, warnings; a fatal start failure). Every
 // message is also kept in app.errors, which the inspection API returns (tests read it).
 
+/** @type {import('../app.js').Part} */
 export default {
   id: 'notices',
   create(app) {

@@ -1,7 +1,7 @@
 // The pose panel: the selected control pose in numbers (origin, quaternion [w, x, y, z],
 // axis–angle, Euler angles in a selectable order, rotation matrix), editable with validation,
 // and a readout at the playhead (pose, speed, angular speed, the current span's screw). It
-// lives in a "Pose" folder of the settings panel (editor/ui.js calls `build`, `refresh` and
+// lives in a "Pose" folder of the settings panel (editor/panel.js and editor/ui.js call `build`, `refresh` and
 // `setTime`). An edit is one undoable step; a bad value shows a message beside its group and
 // changes nothing. Conventions (docs/math/conventions.md): quaternions [w, x, y, z], rotations
 // act on column vectors, Euler angles are intrinsic (the order names the axes from the world
@@ -80,6 +80,7 @@ function el(tag, props = {}, children = []) {
   return e;
 }
 
+/** @type {import('../app.js').Part} */
 export default {
   id: 'pose',
   create(app) {

@@ -36,6 +36,7 @@ export function presetSubtitle(info) {
 /** localStorage key of the dismissed first-visit hint. */
 const HINT_KEY = 'screwbender.hintDismissed';
 
+/** @type {import('../app.js').Part} */
 export default {
   id: 'presets',
   create(app) {
@@ -82,7 +83,7 @@ export default {
         list.append(b);
       }
       dlg.hidden = false;
-      (current ?? list.firstElementChild)?.focus();
+      /** @type {HTMLElement | null} */ (current ?? list.firstElementChild)?.focus();
     }
 
     dlg.addEventListener('keydown', (e) => {
@@ -95,7 +96,7 @@ export default {
     dlg.addEventListener('click', (e) => {
       if (e.target === dlg) close();
     });
-    dlg.querySelector('.close').onclick = close;
+    /** @type {HTMLElement} */ (dlg.querySelector('.close')).onclick = close;
 
     const hint = document.getElementById('hint');
     return {
@@ -119,7 +120,7 @@ export default {
             // Nothing to remember it in.
           }
         };
-        hint.querySelector('.close').onclick = () => {
+        /** @type {HTMLElement} */ (hint.querySelector('.close')).onclick = () => {
           dismiss();
           app.canvas?.focus();
         };
@@ -134,6 +135,7 @@ export default {
           for (const [t, type, f] of listeners) t.removeEventListener(type, f, true);
         };
         const edited = () => app.history.version !== version && done();
+        /** @type {[EventTarget, string, (e: PointerEvent) => void][]} */
         const listeners = [
           [app.canvas, 'pointerdown', (e) => (down = { x: e.clientX, y: e.clientY })],
           [app.canvas, 'pointermove', (e) => down && Math.hypot(e.clientX - down.x, e.clientY - down.y) > 6 && done()],

@@ -15,6 +15,7 @@ const WHEEL_IDLE_MS = 400;
 /** Sampling stops this long (ms) after the last drawn frame outside a gesture. */
 const QUIET_MS = 1000;
 
+/** @type {import('../app.js').Part} */
 export default {
   id: 'responsive',
   create(app) {
@@ -45,16 +46,16 @@ export default {
         d.pending = false;
         d.session.free();
         d.session = null;
-        app.view.strobe = reduced;
+        app.updateView({ strobe: reduced });
         d.session = app.viewer.drawing.dragSession();
-      } else app.view.strobe = reduced;
+      } else app.updateView({ strobe: reduced });
       app.viewer.rebuild();
       app.ui?.refresh();
     }
 
     function restore() {
       if (full === null) return;
-      app.view.strobe = full;
+      app.updateView({ strobe: full });
       full = null;
       // A pose drag's release rebuilds everything anyway (editor/input.js).
       if (!app.drag?.moved) app.viewer.rebuild();

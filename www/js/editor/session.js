@@ -4,7 +4,7 @@
 //
 // The pure helpers (History, hash coding, storage) come first; the part (default export, see
 // app.js for the part contract) applies sessions to the app and records its edits.
-import { SLOT } from '../view/scene.js';
+import { SLOT } from '../view/slots.js';
 
 export const STORAGE_KEY = 'screwbender.playground.v1';
 /** Session format version written in saves and share links. */
@@ -129,6 +129,7 @@ export const MAX_STROBE = 20000;
 /** Imported meshes up to this size are kept in the autosave and share links. */
 export const MAX_SAVED_MESH = 1 << 20;
 
+/** @type {import('../app.js').Part} */
 export default {
   id: 'session',
   create(app) {
@@ -170,17 +171,18 @@ export default {
       const motion = new app.wasm.Motion(s.document, s.options); // validates everything
       if (s.mesh) {
         app.setImportedMesh(SLOT.strobe, s.mesh); // validates the mesh
-        app.imported = s.mesh;
+        app.setImported(s.mesh);
       }
-      app.motion?.free();
-      app.motion = motion;
+      app.setMotion(motion);
       const v = s.view ?? {};
+      const patch = {};
       for (const k of Object.keys(app.view)) {
         // Undo and imports do not switch the open analysis view (only the initial restore does).
         if (k === 'dock' && app.ready) continue;
-        if (k in v && typeof v[k] === typeof app.view[k]) app.view[k] = v[k];
+        if (k in v && typeof v[k] === typeof app.view[k]) patch[k] = v[k];
       }
-      app.view.strobe = Math.max(1, Math.min(MAX_STROBE, Math.round(app.view.strobe)));
+      patch.strobe = Math.max(1, Math.min(MAX_STROBE, Math.round(patch.strobe ?? app.view.strobe)));
+      app.updateView(patch);
       // Older sessions kept the key times in view.times: they move into the motion when its
       // document has none and they fit (as before, times that do not fit are ignored).
       const t = v.times;
@@ -191,13 +193,15 @@ export default {
           // Ignored, as the page did before: uniform timing.
         }
       }
-      if (app.view.object === 'obj' && !app.imported) app.view.object = 'scene';
-      app.selected = Number.isInteger(s.selected) && s.selected < motion.poseCount ? s.selected : -1;
-      app.mode = s.mode === 'rotate' ? 'rotate' : 'translate';
+      if (app.view.object === 'obj' && !app.imported) app.updateView({ object: 'scene' });
+      app.select(Number.isInteger(s.selected) && s.selected < motion.poseCount ? s.selected : -1, false);
+      app.setMode(s.mode, false);
       if (s.anim) {
-        if (Number.isFinite(s.anim.u)) app.anim.u = s.anim.u;
-        if (Number.isFinite(s.anim.speed)) app.anim.speed = s.anim.speed;
-        if (typeof s.anim.loop === 'boolean') app.anim.loop = s.anim.loop;
+        const a = {};
+        if (Number.isFinite(s.anim.u)) a.u = s.anim.u;
+        if (Number.isFinite(s.anim.speed)) a.speed = s.anim.speed;
+        if (typeof s.anim.loop === 'boolean') a.loop = s.anim.loop;
+        app.setPlayback(a);
       }
       if (s.camera) app.camera.load(s.camera);
       else app.frameAll();

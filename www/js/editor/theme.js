@@ -5,21 +5,21 @@
 // setting; the View menu's toggle (and D with the view focused) picks the opposite of what is
 // shown.
 //
-// The part turns app.view.theme into a property whose setter applies the theme, so a restored
-// session, an undo or a share link shows its theme without a call of its own.
+// The part applies the theme whenever app.view.theme changes (the App's 'view' signal), so a
+// restored session, an undo or a share link shows its theme without a call of its own.
 
 /** The values of app.view.theme. */
 export const THEMES = ['auto', 'light', 'dark'];
 
+/** @type {import('../app.js').Part} */
 export default {
   id: 'theme',
   create(app) {
     const query = window.matchMedia?.('(prefers-color-scheme: dark)');
-    let value = THEMES.includes(app.view.theme) ? app.view.theme : 'auto';
     let bound = false;
 
     /** Whether the theme shown is dark. */
-    const isDark = () => value === 'dark' || (value === 'auto' && !!query?.matches);
+    const isDark = () => app.view.theme === 'dark' || (app.view.theme === 'auto' && !!query?.matches);
 
     function apply() {
       const dark = isDark();
@@ -33,18 +33,9 @@ export default {
       }
     }
 
-    Object.defineProperty(app.view, 'theme', {
-      enumerable: true,
-      configurable: true,
-      get: () => value,
-      set(v) {
-        // Anything else (an old or hand-made session) keeps the current theme.
-        if (!THEMES.includes(v) || v === value) return;
-        value = v;
-        apply();
-      },
-    });
-    query?.addEventListener?.('change', () => value === 'auto' && apply());
+    // The App keeps the current theme for any other value (an old or hand-made session).
+    app.on('view', (keys) => keys.includes('theme') && apply());
+    query?.addEventListener?.('change', () => app.view.theme === 'auto' && apply());
     // The chrome at once (no light flash before the view starts); the canvas once bound.
     apply();
 

@@ -70,6 +70,7 @@ export function menu(button, panel) {
   return { open, close, toggle: () => (panel.hidden ? open() : close()), isOpen: () => !panel.hidden };
 }
 
+/** @type {import('../app.js').Part} */
 export default {
   id: 'viewpoint',
   create(app) {
@@ -175,7 +176,7 @@ export default {
       menu: null,
       bind() {
         this.menu = menu($('t-view'), $('view-menu'));
-        for (const b of $('view-menu').querySelectorAll('[data-camera]')) {
+        for (const b of /** @type {NodeListOf<HTMLElement>} */ ($('view-menu').querySelectorAll('[data-camera]'))) {
           b.addEventListener('click', () => preset(b.dataset.camera));
         }
         $('m-ortho').addEventListener('click', () => setOrtho(!app.camera.ortho));

@@ -66,7 +66,7 @@ export function buildChrome(host) {
     scheme: fig.querySelector('.scheme'),
     levels: fig.querySelector('.levels'),
     frame: fig.querySelector('.frame'),
-    msg: fig.querySelector('.msg'),
+    msg: /** @type {HTMLElement} */ (fig.querySelector('.msg')),
     poster: fig.querySelector('.poster'),
     still: fig.querySelector('.still'),
     caption: fig.querySelector('.caption slot'),

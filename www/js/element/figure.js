@@ -29,6 +29,14 @@ export class Figure {
     this.emit = emit;
     this.opts = {};
     this.model = newModel('');
+    // Set by showing.js: whether the figure is on screen, the wake-up of a lazy start, the
+    // timer that suspends an off-screen figure.
+    /** @type {boolean | undefined} */
+    this.onScreen;
+    /** @type {(() => void) | undefined} */
+    this.wake;
+    /** @type {ReturnType<typeof setTimeout> | undefined} */
+    this.suspendTimer;
     this.generation = 0;
     const { root, el } = buildChrome(host);
     this.root = root;
@@ -197,7 +205,7 @@ export class Figure {
     if ('editable' in patch && bool(patch.editable) !== bool(before.editable)) {
       // The pointer listeners live on the canvas: a fresh canvas takes the new tool.
       this.model.selected = -1;
-      const fresh = this.el.canvas.cloneNode(false);
+      const fresh = /** @type {HTMLCanvasElement} */ (this.el.canvas.cloneNode(false));
       this.el.canvas.replaceWith(fresh);
       this.el.canvas = fresh;
       this.observer?.disconnect();

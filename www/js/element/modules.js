@@ -6,9 +6,11 @@
 // bundlers follow them.
 
 /** Imports the main module (wasm-bindgen glue; its default export initialises the wasm). */
+// @ts-ignore: scripts/serve.sh builds the module; the type check runs with or without it.
 export const loadMain = () => import('../../pkg-webgpu/screwbender.js');
 
 /** Imports the WebGL2 module (null where the main module has both backends). */
+// @ts-ignore: scripts/serve.sh builds the module; the type check runs with or without it.
 export const loadGl = () => import('../../pkg-gl/screwbender.js');
 
 /** Imports a module with file import (`importMotionFile`), for renderer modules built without it. */

@@ -39,7 +39,10 @@ export class Playback {
 
   // ---------------------------------------------------------------- playback
 
-  /** Plays `repetitions` passes (a whole number ≥ 1) and ends, or without it as loop says. */
+  /**
+   * Plays `repetitions` passes (a whole number ≥ 1) and ends, or without it as loop says.
+   * @param {{repetitions?: number}} [options]
+   */
   play({ repetitions } = {}) {
     const passes = repetitions == null || repetitions === Infinity ? null : number('repetitions', repetitions, 1, 1e9, true);
     const v = this.viewer;
@@ -182,7 +185,7 @@ export class Playback {
     if (s.distance !== undefined) out.distance = number('camera.distance', s.distance, 1e-6, 1e7);
     if (s.distance === 0) throw new OptionError('camera.distance', 0, 'must be more than 0');
     if (s.target !== undefined) {
-      const t = s.target;
+      const t = /** @type {ArrayLike<number>} */ (s.target);
       if (!(Array.isArray(t) || ArrayBuffer.isView(t)) || t.length !== 3) throw new OptionError('camera.target', t, 'expected [x, y, z]');
       out.target = Array.from(t, (x, i) => number(`camera.target[${i}]`, x, -1e9, 1e9));
     }

@@ -44,6 +44,8 @@ export { ATTRIBUTES, LAYERS } from './options.js';
  * document object, `touchAction` for `touch-action`). Returns a FigureHandle; events are
  * dispatched on `element`. Failures show in the figure (and fire `error`); only an `element`
  * that cannot hold a shadow root throws (a TypeError, as attachShadow does).
+ * @param {Element} element
+ * @param {Record<string, any>} [options]
  */
 export function mount(element, options = {}) {
   const { document: doc, touchAction, ...rest } = options;

@@ -4,16 +4,15 @@
 /**
  * Applies step `s` to `app` and points the highlight at `s.highlight` through `setTarget`.
  * Throws (the player shows the message) if the app refuses a part of it.
+ * @param {import('../app.js').App} app
  */
 export function applyStep(app, s, setTarget) {
   if (s.scene) app.loadPreset(s.scene);
   if (s.document) {
     const motion = new app.wasm.Motion(s.document, app.motion.options());
     app.edit(() => {
-      app.motion.free();
-      app.motion = motion;
-      app.selected = -1;
-      app.anim.u = 0;
+      app.setMotion(motion);
+      app.setPlayback({ u: 0 });
       app.frameAll();
     });
   }
@@ -27,19 +26,18 @@ export function applyStep(app, s, setTarget) {
         if (Object.keys(o).length) app.motion.setOptions(o);
       }
       if (s.display) {
-        Object.assign(app.view, s.display);
+        app.updateView(s.display);
         if (s.display.object !== undefined) app.meshesChanged();
       }
-      if (s.timing?.times !== undefined) app.view.times = s.timing.times;
+      if (s.timing?.times !== undefined) app.motion.setTimes(s.timing.times ?? null);
     });
   }
   if (s.select !== undefined) app.select(s.select < app.motion.poseCount ? s.select : -1);
   const t = s.timing ?? {};
-  if (t.speed !== undefined) app.anim.speed = t.speed;
+  if (t.speed !== undefined) app.setPlayback({ speed: t.speed });
   if (t.u !== undefined) {
     const [a, b] = app.motion.domain();
-    app.anim.u = Math.min(b, Math.max(a, t.u));
-    app.anim.visible = true;
+    app.setPlayback({ u: Math.min(b, Math.max(a, t.u)), visible: true });
     app.updateAnim();
   }
   if (t.play !== undefined) app.setPlaying(t.play);

@@ -9,7 +9,7 @@ import { poseMatrix, length, sub, add, scale } from '../math.js';
 import {
   SLOT, LAYER, COLORS, INSTANCE, SEGMENT, MAX_MORPH_STROBE, instances, mix, Segments, poseOf, track, matricesOf,
   gridSegments, palette,
-} from './scene.js';
+} from './slots.js';
 import { gizmoAxes, gizmoGeometry } from './gizmo.js';
 
 
@@ -68,7 +68,7 @@ export class Drawing {
     this.viewer = viewer;
   }
 
-  /** The colours for the viewer's background (scene.js palette). */
+  /** The colours for the viewer's background (slots.js palette). */
   get colors() {
     return palette(!!this.viewer.dark);
   }

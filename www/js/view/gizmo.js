@@ -7,7 +7,7 @@ import {
   add, sub, scale, dot, cross, normalize, length, qaxis, qmul, qnormalize, rayPlane, lineRayParam,
   segmentDistance2, poseMatrix,
 } from '../math.js';
-import { COLORS, Segments, circle, INSTANCE } from './scene.js';
+import { COLORS, Segments, circle, INSTANCE } from './slots.js';
 
 const AXES = [[1, 0, 0], [0, 1, 0], [0, 0, 1]];
 

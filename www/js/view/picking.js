@@ -2,7 +2,7 @@
 // handle, a gizmo part), and back from scene points to page positions (which the inspection
 // API and the analysis views' labels use). Plain functions of a Viewer.
 import { raySphere } from '../math.js';
-import { poseOf } from './scene.js';
+import { poseOf } from './slots.js';
 import { hitGizmo, gizmoAxes, gizmoPoint, project, startDrag } from './gizmo.js';
 
 /** CSS-pixel position of a pointer event relative to the canvas. */

@@ -17,15 +17,63 @@
 // model is read afresh on every rebuild, never copied, so its owner edits it in place and then
 // calls the matching rebuild (see newModel for its fields).
 import { OrbitCamera } from './camera.js';
-import { SLOT, BACKGROUND } from './scene.js';
+import { SLOT, BACKGROUND } from './slots.js';
 import { Drawing } from './drawing.js';
 import * as picking from './picking.js';
 import { bindPointer } from './pointer.js';
 
 /**
+ * The display settings the viewer draws by (the playground's App adds its own to them).
+ * @typedef {object} ViewSettings
+ * @property {string} scene preset id: the object drawn for 'scene' and its body points
+ * @property {string} object 'scene', a named shape (bar, block, …) or 'obj' (the imported mesh)
+ * @property {number} strobe
+ * @property {boolean} showStrobe
+ * @property {boolean} showControl
+ * @property {boolean} showTrajectories
+ * @property {boolean} showPolyscrew
+ * @property {boolean} showPolygon
+ * @property {boolean} showTriads
+ * @property {boolean} showGrid
+ * @property {boolean} [gizmoLocal] the gizmo in the selected pose's own axes
+ */
+
+/**
+ * What a viewer draws and plays (its `model`): newModel() for a figure of its own; the
+ * playground's App hands its state in through App.viewerModel(). The viewer writes only `anim`
+ * (its frame loop advances the playhead).
+ * @typedef {object} Model
+ * @property {any} motion the wasm Motion
+ * @property {ViewSettings} view
+ * @property {number} selected selected control pose (gets the gizmo), or -1
+ * @property {'translate' | 'rotate'} mode
+ * @property {{playing: boolean, u: number, t?: number, tu?: number, speed: number, loop: boolean, visible: boolean, passes?: number | null}} anim
+ * @property {{kind: string, data: string | Uint8Array} | null} imported
+ * @property {string | null} hover gizmo part under the pointer
+ * @property {number} [hoverPose] control pose under the pointer (-1: none)
+ * @property {{part: string} | null} drag the drag in progress: its `part` is drawn highlighted
+ */
+
+/**
+ * The options of `new Viewer(canvas, wasm, options)` (see the constructor).
+ * @typedef {object} ViewerOptions
+ * @property {Model} [model]
+ * @property {boolean} [webgl2]
+ * @property {(message: string) => void} [warn]
+ * @property {(u: number, a: number, b: number, playhead: {t: number, start: number, end: number}) => void} [onTime]
+ * @property {(playing: boolean) => void} [onPlay]
+ * @property {() => void} [onEnded]
+ * @property {(source: string) => void} [onCamera]
+ * @property {() => void} [onDraw]
+ * @property {boolean} [wheelNeedsFocus]
+ * @property {string} [what]
+ */
+
+/**
  * A model with nothing selected and the default display; `motion` must be set (a wasm Motion)
  * before the first rebuild. The editor's App is a model too: it has these fields.
  */
+/** @returns {Model} */
 export function newModel(scene = '') {
   return {
     motion: null,
@@ -67,6 +115,9 @@ export class Viewer {
    * wheel events over an unfocused canvas scroll the page (an embedded figure), false to zoom
    * always (the playground, whose view fills the page); what: the subject of the no-graphics
    * message ('the playground', 'this figure').
+   * @param {HTMLCanvasElement} canvas
+   * @param {any} wasm the renderer's wasm module
+   * @param {ViewerOptions} [options]
    */
   constructor(canvas, wasm, { model = newModel(), webgl2 = false, warn, onTime, onPlay, onEnded, onCamera, onDraw, wheelNeedsFocus = false, what = 'the playground' } = {}) {
     this.canvas = canvas;
@@ -194,7 +245,7 @@ export class Viewer {
   }
 
   replaceCanvas() {
-    const fresh = this.canvas.cloneNode(false);
+    const fresh = /** @type {HTMLCanvasElement} */ (this.canvas.cloneNode(false));
     this.canvas.replaceWith(fresh);
     this.canvas = fresh;
   }
@@ -354,7 +405,7 @@ export class Viewer {
 
   // ---------------------------------------------------------------- theme and pictures
 
-  /** A dark (true) or light background, with line colours to match (scene.js palette). */
+  /** A dark (true) or light background, with line colours to match (slots.js palette). */
   setDark(on) {
     if (!!on === !!this.dark) return;
     this.dark = !!on;

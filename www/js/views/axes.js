@@ -2,8 +2,8 @@
 // its axis in 3-D with a colour gradient and arrow ticks pointing along the rotation direction
 // (right-hand rule), and listed with angle, slide, pitch and kind. Hovering a row highlights that
 // span's axis and labels it in the 3-D view.
-import { el as h } from './plot.js';
-import { LAYER, Segments, mix, poseOf } from '../view/scene.js';
+import { el as h } from './dom.js';
+import { LAYER, Segments, mix, poseOf } from '../view/slots.js';
 import { add, sub, scale, cross, normalize, length, hexLinear } from '../math.js';
 
 /** The wasm functions of this view, from the analysis module the dock hands to create(). */
@@ -26,6 +26,7 @@ function perpendicular(d) {
   return normalize(Math.abs(d[2]) < 0.9 ? cross(d, [0, 0, 1]) : cross(d, [1, 0, 0]));
 }
 
+/** @type {import('../editor/dock.js').DockView} */
 export default {
   id: 'axes',
   title: 'Screw axes',
@@ -34,15 +35,15 @@ export default {
   create(app, el, wasm) {
     ({ Motion, spanScrewsOf } = wasm);
     // Static markup: index.html's <template id="view-axes"> (no HTML from strings).
-    el.append(document.getElementById('view-axes').content.cloneNode(true));
-    const levelSel = el.querySelector('.level');
+    el.append(/** @type {HTMLTemplateElement} */ (document.getElementById('view-axes')).content.cloneNode(true));
+    const levelSel = /** @type {HTMLSelectElement} */ (el.querySelector('.level'));
     for (let l = 0; l <= MAX_LEVEL; l++) {
       const o = document.createElement('option');
       o.value = String(l);
       o.textContent = l === 0 ? 'control (0)' : `refined ${l}`;
       levelSel.append(o);
     }
-    const tbody = el.querySelector('tbody');
+    const tbody = /** @type {HTMLTableSectionElement} */ (el.querySelector('tbody'));
     const countEl = el.querySelector('.count');
     // The floating label lives in <body>: inside the dock it could not rise above the side panel
     // (the dock is its own stacking context).
@@ -80,7 +81,7 @@ export default {
           h('td', {}, pitch),
         );
         const c = PALETTE[i % PALETTE.length];
-        tr.querySelector('.swatch').style.background = `rgb(${c.map((v) => Math.round(Math.pow(v, 1 / 2.2) * 255)).join(',')})`;
+        /** @type {HTMLElement} */ (tr.querySelector('.swatch')).style.background = `rgb(${c.map((v) => Math.round(Math.pow(v, 1 / 2.2) * 255)).join(',')})`;
         tr.title = `span ${i} → ${j}: angle ${fmt(deg(s.angle), 2)}°, slide ${fmt(s.slide)}`;
         tr.dataset.span = String(i);
         tr.onpointerenter = () => setHover(i);
@@ -101,7 +102,7 @@ export default {
     function setHover(i) {
       state.hover = i;
       if (i >= 0 && !follow) follow = requestAnimationFrame(track);
-      for (const tr of tbody.children) tr.classList.toggle('hi', Number(tr.dataset.span) === i);
+      for (const tr of tbody.rows) tr.classList.toggle('hi', Number(tr.dataset.span) === i);
       draw();
       placeLabel();
       app.requestDraw();

@@ -3,8 +3,8 @@
 // and subdivided twice — by screws, and decoupled (origins by the point rule, rotations by the
 // same rules on rotation-only poses; crates/screwbender/src/subdivision/decoupled.rs). The trajectories of the same body
 // points are drawn: the screw ones do not move when c changes, the decoupled ones do.
-import { el as h } from './plot.js';
-import { LAYER, Segments, poseOf } from '../view/scene.js';
+import { el as h } from './dom.js';
+import { LAYER, Segments, poseOf } from '../view/slots.js';
 import { add, sub, length, qrot, hexLinear } from '../math.js';
 
 /** The wasm functions of this view, from the analysis module the dock hands to create(). */
@@ -20,6 +20,7 @@ const RANGE = 3;
 
 const sci = (v) => (v === 0 ? '0' : v < 1e-3 ? v.toExponential(1) : v.toFixed(4));
 
+/** @type {import('../editor/dock.js').DockView} */
 export default {
   id: 'frame',
   title: 'Frame',
@@ -28,7 +29,7 @@ export default {
   create(app, el, wasm) {
     ({ compareFrames } = wasm);
     // Static markup: index.html's <template id="view-frame"> (no HTML from strings).
-    el.append(document.getElementById('view-frame').content.cloneNode(true));
+    el.append(/** @type {HTMLTemplateElement} */ (document.getElementById('view-frame')).content.cloneNode(true));
     const sliders = el.querySelector('.sliders');
     const state = { c: [0, 0, 0], visible: false, result: null, ref: null, showRef: true };
     const inputs = ['x', 'y', 'z'].map((axis, a) => {
@@ -46,10 +47,10 @@ export default {
       return { input, val };
     });
     const info = el.querySelector('.info');
-    el.querySelector('.circle').onclick = () => app.loadPreset('circle4');
-    el.querySelector('.zero').onclick = () => setOffset([0, 0, 0]);
-    el.querySelector('.ref').onchange = (e) => {
-      state.showRef = e.target.checked;
+    /** @type {HTMLElement} */ (el.querySelector('.circle')).onclick = () => app.loadPreset('circle4');
+    /** @type {HTMLElement} */ (el.querySelector('.zero')).onclick = () => setOffset([0, 0, 0]);
+    /** @type {HTMLElement} */ (el.querySelector('.ref')).onchange = (e) => {
+      state.showRef = /** @type {HTMLInputElement} */ (e.target).checked;
       update();
       app.requestDraw();
     };
@@ -119,7 +120,7 @@ export default {
       el.querySelector('.ds').textContent = sci(res.screwDeviation);
       el.querySelector('.dd').textContent = sci(res.decoupledDeviation);
       const circle = app.view.scene === 'circle4';
-      for (const q of ['.rs', '.rd', '.radial-h']) el.querySelector(q).hidden = !circle;
+      for (const q of ['.rs', '.rd', '.radial-h']) /** @type {HTMLElement} */ (el.querySelector(q)).hidden = !circle;
       if (circle) {
         // Trajectories of the first body point (the object's centre).
         const one = (arr) => arr.subarray(0, 3 * len);

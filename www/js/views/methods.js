@@ -2,9 +2,10 @@
 // (trajectories of the body points in distinct colours), their metrics side by side, and for
 // Ramamoorthi–Barr the variable frames and the Euler–Lagrange error before/after optimisation;
 // for Chaudhry–Cameron the triangle's vertices x/y/z against time, with end condition (18) or (19).
-import { LAYER, Segments, track, poseOf } from '../view/scene.js';
+import { LAYER, Segments, track, poseOf } from '../view/slots.js';
 import { hexLinear, poseMatrix, add, scale } from '../math.js';
-import { lineChart, fmt, el } from './plot.js';
+import { lineChart, fmt } from './plot.js';
+import { el } from './dom.js';
 
 /** The wasm functions of this view, from the analysis module the dock hands to create(). */
 let listMethods;
@@ -46,6 +47,7 @@ const nameOf = (id) => METHOD_NAMES[id] ?? id;
  * is lower for a motion that strays from its poses, an approximating method's interpolation
  * error is its design).
  */
+/** @type {[string, string, string, (r: any) => any, string][]} */
 const METRICS = [
   ['velocity jump', 'units/span', 'Largest jump of a body point’s velocity at the knots', (r) => r.converged?.velocity_jump, '↓'],
   ['angular velocity jump', 'rad/span', 'Largest jump of the angular velocity at the knots', (r) => r.converged?.angular_velocity_jump, '↓'],
@@ -416,6 +418,7 @@ class MethodsView {
   }
 }
 
+/** @type {import('../editor/dock.js').DockView} */
 export default {
   id: 'methods',
   title: 'Methods',

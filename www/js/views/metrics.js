@@ -1,12 +1,14 @@
 // Metrics view: smoothness and fidelity numbers of the current motion (its scheme, rules and
 // levels), measured on the refined poses, for the body points of the object.
-import { el, fmt } from './plot.js';
+import { fmt } from './plot.js';
+import { el } from './dom.js';
 
 /** Human names of the schemes and rule sets (the panel's words). */
 export const SCHEME_NAMES = { bspline: 'cubic B-spline', fourpoint: '4-point', jarek: 'Jarek', j: 'J_s', polyscrew: 'polyscrew' };
 export const RULE_NAMES = { direct: 'direct rules (V2)', split: 'split & tweak rules (V1)' };
 
 /** The table's rows: label, unit, tooltip, value of a MetricsRow. */
+/** @type {[string, string, string, (r: any) => any][]} */
 const ROWS = [
   ['max velocity jump', 'units/span', 'Largest jump of a body point’s velocity at the knots (differences of refined poses)', (r) => r.velocity_jump],
   ['max angular velocity jump', 'rad/span', 'Largest jump of the angular velocity at the knots', (r) => r.angular_velocity_jump],
@@ -57,6 +59,7 @@ class MetricsView {
   }
 }
 
+/** @type {import('../editor/dock.js').DockView} */
 export default {
   id: 'metrics',
   title: 'Metrics',

@@ -3,7 +3,8 @@
 // schemes and the plain polyscrew side by side, with the control-pose times marked. On phones
 // one chart at a time, picked from a list, fills the dock (nothing to scroll); the body point,
 // the derivatives and the note show under an Options button.
-import { lineChart, el, inkSwatch } from './plot.js';
+import { lineChart, inkSwatch } from './plot.js';
+import { el } from './dom.js';
 
 /** The wasm functions of this view, from the analysis module the dock hands to create(). */
 let Motion;
@@ -26,6 +27,7 @@ const STRIDE = 16;
 const norm = (d, k, o) => Math.hypot(d[k * STRIDE + o], d[k * STRIDE + o + 1], d[k * STRIDE + o + 2]);
 
 /** The charts: id, title, y-axis label with its unit, and the value of sample k of a kinematics array. */
+/** @type {[string, (axis: number) => string, (axis: number) => string, (d: Float64Array, k: number, axis?: number) => number][]} */
 const CHARTS = [
   ['coord', (axis) => `position ${'xyz'[axis]} of the body point`, (axis) => `${'xyz'[axis]} (units)`, (d, k, axis) => d[k * STRIDE + 1 + axis]],
   ['speed', () => 'speed |v|', () => '|v| (units/s)', (d, k) => norm(d, k, 4)],
@@ -51,6 +53,7 @@ const MIN_ONE_CHART_PX = 110;
 /** Phones (the breakpoints of style.css): one chart at a time. */
 const PHONE = '(max-width: 760px), (max-height: 500px)';
 /** The entries of the phones' chart list: a chart, and for the coordinate chart its axis. */
+/** @type {{chart: number, axis?: number, label: string}[]} */
 const PICKS = [
   ...[0, 1, 2].map((axis) => ({ chart: 0, axis, label: `position ${'xyz'[axis]}` })),
   { chart: 1, label: 'speed |v|' },
@@ -221,7 +224,8 @@ class PlotsView {
     return out;
   }
 
-  update() {
+  /** @param {string} [_reason] every reason redraws alike */
+  update(_reason) {
     if (!this.charts) return;
     const data = this.sample();
     this.data = data;
@@ -244,6 +248,7 @@ class PlotsView {
   }
 }
 
+/** @type {import('../editor/dock.js').DockView} */
 export default {
   id: 'plots',
   title: 'Plots',

@@ -3,7 +3,7 @@
 // the core's point rules (subdividePolygon; the same generic code as the pose rules). The preset
 // polygons' vertices can be dragged; the control origins of the motion (projected to z = 0) are
 // shown read-only.
-import { el as h } from './plot.js';
+import { el as h } from './dom.js';
 
 /** The wasm functions of this view, from the analysis module the dock hands to create(). */
 let polygonPresets, subdividePolygon, splitTweakStep;
@@ -29,6 +29,7 @@ function asPoses(flat) {
   return out;
 }
 
+/** @type {import('../editor/dock.js').DockView} */
 export default {
   id: 'polygon',
   title: 'Polygon',
@@ -38,16 +39,16 @@ export default {
     ({ polygonPresets, subdividePolygon, splitTweakStep } = wasm);
     const presets = polygonPresets();
     // Static markup: index.html's <template id="view-polygon"> (no HTML from strings).
-    el.append(document.getElementById('view-polygon').content.cloneNode(true));
+    el.append(/** @type {HTMLTemplateElement} */ (document.getElementById('view-polygon')).content.cloneNode(true));
     el.querySelector('canvas').height = HEIGHT;
     el.querySelector('.numbers thead tr').append(...SCHEMES.map((s) => h('th', {}, s.name)));
-    const source = el.querySelector('.source');
+    const source = /** @type {HTMLSelectElement} */ (el.querySelector('.source'));
     for (const p of presets) source.append(new Option(`${p.id} (${p.figure})`, p.id));
     source.append(new Option('control origins (read-only)', 'origins'));
-    const levels = el.querySelector('.levels');
+    const levels = /** @type {HTMLInputElement} */ (el.querySelector('.levels'));
     const lv = el.querySelector('.lv');
-    const fig3 = el.querySelector('.fig3');
-    const once = el.querySelector('.once');
+    const fig3 = /** @type {HTMLInputElement} */ (el.querySelector('.fig3'));
+    const once = /** @type {HTMLInputElement} */ (el.querySelector('.once'));
     const canvas = el.querySelector('canvas');
     const modeNote = el.querySelector('.mode');
     const legend = el.querySelector('.legend');
@@ -56,7 +57,7 @@ export default {
       const lab = document.createElement('label');
       lab.append(h('input', { type: 'checkbox', checked: true }), ' ', h('span', { class: 'swatch', 'data-color': s.color }), s.name);
       lab.querySelector('input').onchange = (e) => {
-        show[s.id] = e.target.checked;
+        show[s.id] = /** @type {HTMLInputElement} */ (e.target).checked;
         draw();
       };
       legend.append(lab);
@@ -248,7 +249,7 @@ export default {
     /** The refined vertices as a table (at most MAX_ROWS rows; the vectors of docs/math/point-rules.md §5 at level 1). */
     function numbers() {
       const body = el.querySelector('.numbers tbody');
-      if (!el.querySelector('.numbers').open) return;
+      if (!/** @type {HTMLDetailsElement} */ (el.querySelector('.numbers')).open) return;
       const count = state.results.bspline.length / 2;
       const fmt = (v) => (Math.abs(v) < 5e-13 ? 0 : v).toFixed(4).replace(/\.?0+$/, '');
       const rows = [];
@@ -334,7 +335,7 @@ export default {
     };
     fig3.onchange = () => refresh();
     once.onchange = () => refresh();
-    el.querySelector('.reset').onclick = () => {
+    /** @type {HTMLElement} */ (el.querySelector('.reset')).onclick = () => {
       const p = presets.find((x) => x.id === state.source);
       if (p) state.polys[p.id] = Float64Array.from(p.points.flat());
       refresh();

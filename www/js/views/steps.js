@@ -2,7 +2,7 @@
 // a level, (a) the split — the screw midpoint of every span inserted — then (b) the tweak of each
 // pose, drawn as arrows from before to after (origins), with the object before the tweak (pale
 // ghosts) and after it. The core's splitTweakStep computes both (crates/screwbender/src/subdivision/split_tweak.rs).
-import { LAYER, SLOT, Segments, instances, matricesOf, poseOf } from '../view/scene.js';
+import { LAYER, SLOT, Segments, instances, matricesOf, poseOf } from '../view/slots.js';
 import { add, sub, scale, cross, normalize, length, hexLinear } from '../math.js';
 
 /** The wasm functions of this view, from the analysis module the dock hands to create(). */
@@ -69,6 +69,7 @@ function pick(arr, idx) {
   return out;
 }
 
+/** @type {import('../editor/dock.js').DockView} */
 export default {
   id: 'steps',
   title: 'Split & tweak',
@@ -78,10 +79,10 @@ export default {
   create(app, el, wasm) {
     ({ splitTweakStep } = wasm);
     // Static markup: index.html's <template id="view-steps"> (no HTML from strings).
-    el.append(document.getElementById('view-steps').content.cloneNode(true));
+    el.append(/** @type {HTMLTemplateElement} */ (document.getElementById('view-steps')).content.cloneNode(true));
     const caption = el.querySelector('.caption');
     const pos = el.querySelector('.pos');
-    const levelsSel = el.querySelector('.levels');
+    const levelsSel = /** @type {HTMLSelectElement} */ (el.querySelector('.levels'));
     for (let l = 1; l <= MAX_LEVELS; l++) levelsSel.append(new Option(String(l), String(l)));
     const state = { index: 0, levels: 3, visible: false, step: null, meshName: null, caption: '' };
     levelsSel.value = String(state.levels);
@@ -93,9 +94,9 @@ export default {
       update();
       app.requestDraw();
     }
-    el.querySelector('.prev').onclick = () => go(-1);
-    el.querySelector('.next').onclick = () => go(1);
-    el.querySelector('.strobe').onclick = () => app.setView('showStrobe', !app.view.showStrobe);
+    /** @type {HTMLElement} */ (el.querySelector('.prev')).onclick = () => go(-1);
+    /** @type {HTMLElement} */ (el.querySelector('.next')).onclick = () => go(1);
+    /** @type {HTMLElement} */ (el.querySelector('.strobe')).onclick = () => app.setView('showStrobe', !app.view.showStrobe);
     levelsSel.onchange = () => {
       state.levels = Number(levelsSel.value);
       state.index = Math.min(state.index, total() - 1);
@@ -197,8 +198,8 @@ export default {
       app.renderer.setLines(LAYER.steps, seg.array(), true);
       caption.textContent = state.caption;
       pos.textContent = `step ${state.index + 1} / ${total()}`;
-      el.querySelector('.prev').disabled = state.index === 0;
-      el.querySelector('.next').disabled = state.index === total() - 1;
+      /** @type {HTMLButtonElement} */ (el.querySelector('.prev')).disabled = state.index === 0;
+      /** @type {HTMLButtonElement} */ (el.querySelector('.next')).disabled = state.index === total() - 1;
     }
 
     return {

@@ -3,7 +3,8 @@
 // only the speed along it) through p(T_i) = i and, where given, p'(T_i) = v_i. Times and
 // velocities live in the Motion (its document, the session, share links, undo); 3-D playback,
 // the timeline, the Plots view and glTF / CSV export all follow them.
-import { lineChart, el, fmt } from './plot.js';
+import { lineChart, fmt } from './plot.js';
+import { el } from './dom.js';
 
 /** The wasm functions of this view, from the analysis module the dock hands to create(). */
 let timingMap;
@@ -162,6 +163,7 @@ class TimingView {
   }
 }
 
+/** @type {import('../editor/dock.js').DockView} */
 export default {
   id: 'timing',
   title: 'Timing',

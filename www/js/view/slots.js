@@ -1,4 +1,6 @@
-// Builds the renderer's instance and segment arrays from the motion (typed arrays only).
+// What the renderer's buffers hold and how they are filled: its mesh slots and line layers, the
+// layouts of an instance (matrix + colour) and a line segment, the palettes, and the builders of
+// those typed arrays from poses (instances, segments, tracks, the grid).
 import { add, hexLinear, poseMatrix, qrot, scale, cross, normalize, dot } from '../math.js';
 
 /** Floats per mesh instance (matrix + RGBA) and per line segment (see crates/screwbender-web/src/render/gpu.rs). */

@@ -1,0 +1,51 @@
+// The toolbar: gizmo mode, insert / delete, undo / redo, frame, help, snap, the dock's button,
+// and the View menu's Share entry; its buttons show the state (pressed, disabled).
+import { VIEW_IDS } from '../views/index.js';
+import { openShareDialog } from './share-dialog.js';
+
+/**
+ * Wires the buttons; `toggleHelp` opens and closes the help overlay. Returns {refresh}.
+ * @param {import('../app.js').App} app
+ * @param {{toggleHelp: (show?: boolean) => void}} help
+ */
+export function buildToolbar(app, { toggleHelp }) {
+  const $ = (id) => document.getElementById(id);
+  const tool = (id, f) => ($(id).onclick = f);
+  tool('t-translate', () => app.setMode('translate'));
+  tool('t-rotate', () => app.setMode('rotate'));
+  tool('t-insert', () => app.insertAfterSelected());
+  tool('t-delete', () => app.deleteSelected());
+  tool('t-undo', () => app.undo());
+  tool('t-redo', () => app.redo());
+  tool('t-frame', () => app.parts.viewpoint.frame());
+  tool('t-help', () => toggleHelp());
+  tool('m-share', () => {
+    app.parts.viewpoint.menu.close();
+    openShareDialog(app, $('t-view'));
+  });
+  tool('t-snap', () => app.setView('snap', !app.view.snap));
+  tool('t-dock', () => app.openView(app.view.dock ? '' : app.lastView ?? firstView()));
+
+  function firstView() {
+    return /** @type {HTMLElement | null} */ (document.querySelector('#dock .tabs button'))?.dataset.view ?? VIEW_IDS[0];
+  }
+
+  /** Shows the mode, snap, undo / redo, delete and dock state on the buttons. */
+  function refresh() {
+    $('t-translate').classList.toggle('on', app.mode === 'translate');
+    $('t-rotate').classList.toggle('on', app.mode === 'rotate');
+    $('t-snap').classList.toggle('on', !!app.view.snap);
+    /** @type {HTMLButtonElement} */ ($('t-undo')).disabled = !app.history.canUndo;
+    /** @type {HTMLButtonElement} */ ($('t-redo')).disabled = !app.history.canRedo;
+    /** @type {HTMLButtonElement} */ ($('t-delete')).disabled = app.selected < 0;
+    $('t-dock').classList.toggle('on', !!app.view.dock);
+    if (app.view.dock) app.lastView = app.view.dock;
+  }
+
+  /** The pressed state for assistive technology, after `refresh` (the 'on' classes). */
+  function refreshPressed() {
+    for (const id of ['t-translate', 't-rotate', 't-snap', 't-dock']) $(id).setAttribute('aria-pressed', String($(id).classList.contains('on')));
+  }
+
+  return { refresh, refreshPressed };
+}
