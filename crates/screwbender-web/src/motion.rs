@@ -31,14 +31,9 @@ struct State {
 }
 
 impl State {
-    /// Everything that can make a state unusable: option combinations and the memory guard
-    /// (which also rejects fewer than 2 poses).
+    /// Everything that can make a state unusable ([`MotionDocument::check_with`]).
     fn check(&self) -> Result<(), Error> {
-        self.subdivision.validate()?;
-        self.subdivision
-            .output_len(self.doc.poses.len(), self.doc.closed)?;
-        self.doc.timing()?;
-        Ok(())
+        self.doc.check_with(&self.subdivision)
     }
 
     /// The parameter interval `[0, n)` (closed) or `[0, m − 1]` (open).

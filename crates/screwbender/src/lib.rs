@@ -127,7 +127,7 @@ pub use formats::gltf::{is_glb, split_glb};
 #[cfg(feature = "gltf")]
 pub use formats::interop::{
     export_motion, import_motion_file, mesh_radius, ExportFormat, ExportSamples, ExportSettings,
-    ExportedMotion, ImportKind,
+    ExportedMotion, ImportKind, PresetObject,
 };
 pub use formats::keyframes::REPEAT_TOLERANCE;
 pub use formats::reduce::{reduce_poses, Reduction, MANY_POSES};

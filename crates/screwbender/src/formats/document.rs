@@ -18,6 +18,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, ErrorKind};
 use crate::pose::Pose;
+use crate::subdivision::Subdivision;
 use crate::timing::Timing;
 
 /// Largest motion-document text accepted by [`MotionDocument::from_json`]: 16 MiB (about 150 000
@@ -164,6 +165,17 @@ impl MotionDocument {
             self.poses.len(),
             self.closed,
         )
+    }
+
+    /// Everything that can make this document unusable with `subdivision`: the options'
+    /// combination ([`Subdivision::validate`]), the memory guard, which also refuses fewer than
+    /// 2 poses ([`Subdivision::output_len`]), and the key timing ([`MotionDocument::timing`]).
+    /// The JavaScript and Python motions keep every state they store valid by this check.
+    pub fn check_with(&self, subdivision: &Subdivision) -> Result<(), Error> {
+        subdivision.validate()?;
+        subdivision.output_len(self.poses.len(), self.closed)?;
+        self.timing()?;
+        Ok(())
     }
 
     /// Sets the key times and velocities after checking them against the poses (see
