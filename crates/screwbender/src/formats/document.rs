@@ -253,15 +253,7 @@ impl MotionDocument {
     /// errors name the element (`poses[3].rotation: zero quaternion`).
     #[cfg(feature = "json")]
     pub fn from_json(text: &str) -> Result<MotionDocument, Error> {
-        if text.len() > MAX_DOCUMENT_BYTES {
-            return Err(Error::new(
-                "document",
-                ErrorKind::OutOfRange {
-                    value: format!("{} bytes", text.len()),
-                    expected: format!("at most {MAX_DOCUMENT_BYTES} bytes"),
-                },
-            ));
-        }
+        crate::error::check_size(text.len(), MAX_DOCUMENT_BYTES, "document")?;
         let raw: RawDocument = serde_json::from_str(text).map_err(|e| {
             Error::new(
                 String::new(),

@@ -325,15 +325,7 @@ pub fn import_motion_file(
     resolve: &mut dyn FnMut(&str) -> Result<Vec<u8>, Error>,
     selection: &NodeSelection,
 ) -> Result<MotionDocument, Error> {
-    if bytes.len() > MAX_GLTF_BYTES {
-        return Err(Error::new(
-            String::new(),
-            ErrorKind::OutOfRange {
-                value: format!("{} bytes", bytes.len()),
-                expected: format!("at most {MAX_GLTF_BYTES} bytes"),
-            },
-        ));
-    }
+    crate::error::check_size(bytes.len(), MAX_GLTF_BYTES, "")?;
     let kind = ImportKind::detect(file_name, bytes).ok_or_else(|| {
         Error::new(
             String::new(),

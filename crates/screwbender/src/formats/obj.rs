@@ -21,15 +21,7 @@ impl Mesh {
     /// [`MAX_OBJ_BYTES`], more than [`MAX_OBJ_TRIANGLES`] triangles, malformed or non-finite
     /// numbers, out-of-range indices, no faces.
     pub fn from_obj(text: &str) -> Result<Mesh, Error> {
-        if text.len() > MAX_OBJ_BYTES {
-            return Err(Error::new(
-                "obj",
-                ErrorKind::OutOfRange {
-                    value: format!("{} bytes", text.len()),
-                    expected: format!("at most {MAX_OBJ_BYTES} bytes"),
-                },
-            ));
-        }
+        crate::error::check_size(text.len(), MAX_OBJ_BYTES, "obj")?;
         let parse_err = |line: usize, message: String| {
             Error::new(format!("obj line {line}"), ErrorKind::Parse { message })
         };

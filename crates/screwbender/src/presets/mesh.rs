@@ -12,10 +12,6 @@ use glam::DVec3;
 use crate::error::{Error, ErrorKind};
 use crate::presets::{self, Shape};
 
-#[cfg(feature = "gltf")]
-pub use crate::formats::gltf::mesh::MAX_GLTF_MESH_BYTES;
-pub use crate::formats::obj::{MAX_OBJ_BYTES, MAX_OBJ_TRIANGLES};
-
 /// Segments around the circumference of cylinders, cones and spheres.
 pub const ROUND_SEGMENTS: u32 = 32;
 

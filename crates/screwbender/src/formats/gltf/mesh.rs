@@ -24,15 +24,7 @@ impl Mesh {
         let err = |at: &str, message: String| {
             Error::new(format!("gltf{at}"), ErrorKind::Parse { message })
         };
-        if bytes.len() > MAX_GLTF_MESH_BYTES {
-            return Err(Error::new(
-                "gltf",
-                ErrorKind::OutOfRange {
-                    value: format!("{} bytes", bytes.len()),
-                    expected: format!("at most {MAX_GLTF_MESH_BYTES} bytes"),
-                },
-            ));
-        }
+        crate::error::check_size(bytes.len(), MAX_GLTF_MESH_BYTES, "gltf")?;
         // GLB framing: header, JSON chunk, optional BIN chunk (shared with the pose importer).
         let (json_bytes, bin): (&[u8], Option<&[u8]>) = if crate::formats::gltf::glb::is_glb(bytes)
         {
