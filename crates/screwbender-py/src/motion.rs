@@ -618,7 +618,7 @@ impl PyMotion {
     /// selects the J_s family.
     #[getter]
     fn get_s(&self) -> f64 {
-        self.state.subdivision.scheme.j_parameter()
+        self.state.subdivision.scheme.s()
     }
 
     #[setter]
