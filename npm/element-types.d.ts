@@ -30,6 +30,8 @@ export interface ScrewBenderAttributes {
   /** Subdivision levels, 0 to 12. */
   levels?: NumberAttribute;
   /** The J_s parameter `s`, -4 to 4 (implies scheme `'j'`). */
+  s?: NumberAttribute;
+  /** @deprecated Renamed to `s`. */
   j?: NumberAttribute;
   rules?: SubdivisionOptions['rules'];
   /** Copies of the object drawn along the motion, 0 to 20000. */

@@ -22,7 +22,9 @@ export interface ViewerOptions {
   scheme?: SubdivisionOptions['scheme'];
   /** Subdivision levels, 0 to 12 (and within the module's refined-pose limit). */
   levels?: number | string;
-  /** The J_s parameter, -4 to 4 (implies scheme `'j'` unless a scheme is given). */
+  /** The J_s parameter `s`, -4 to 4 (implies scheme `'j'` unless a scheme is given). */
+  s?: number | string;
+  /** @deprecated Renamed to `s`. */
   j?: number | string;
   rules?: SubdivisionOptions['rules'];
   /** Copies of the object drawn along the motion, 0 to 20000. */

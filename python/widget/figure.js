@@ -17,17 +17,16 @@ const shared = (globalThis[SHARED] ??= { mount });
 
 const OPTIONS = ['scheme', 's', 'levels', 'rules', 'show', 'strobe', 'camera', 'editable', 'autoplay', 'controls', 'theme', 'backend'];
 
-/** The figure's option of a model value (`s` is the element's `j`; rules "split" there). */
+/** The figure's options of the model's values (rules "split-then-tweak" is "split" there). */
 function figureOptions(model) {
   const o = {};
   for (const k of OPTIONS) {
     const v = model.get(k);
     if (v === null || v === undefined || v === '') continue;
-    if (k === 's') o.j = v;
-    else if (k === 'rules') o.rules = v === 'split-then-tweak' ? 'split' : v;
+    if (k === 'rules') o.rules = v === 'split-then-tweak' ? 'split' : v;
     else o[k] = v;
   }
-  if (o.j !== undefined) o.scheme = 'j';
+  if (o.s !== undefined) o.scheme = 'j';
   return o;
 }
 

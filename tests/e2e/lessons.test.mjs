@@ -77,7 +77,7 @@ const ANSWERS = {
   },
   'split-tweak:4': { wrong: (L) => L.choose(0), right: (L) => L.choose(1) },
   'schemes:1': { wrong: (L, app) => app.setScheme('jarek'), right: (L, app) => app.setScheme('fourpoint') },
-  'schemes:3': { wrong: (L, app) => app.setJ(0.9), right: (L, app) => app.setJ(1) },
+  'schemes:3': { wrong: (L, app) => app.setS(0.9), right: (L, app) => app.setS(1) },
   'schemes:4': { wrong: (L) => L.choose(1), right: (L) => L.choose(2) },
   'frames:2': { wrong: (L) => L.choose(2), right: (L) => L.choose(1) },
   'frames:3': { wrong: (L) => L.choose(1), right: (L) => L.choose(3) },
@@ -232,6 +232,7 @@ test('malformed lesson files: the message names step and field, and nothing chan
     [variant((l) => (l.steps[0].text = 'a formula $\\frac{1}{$ here')), /steps\[0\]\.text: math/],
     [variant((l) => (l.steps[0].text = 'unclosed $x')), /steps\[0\]\.text: unclosed \$/],
     [variant((l) => (l.steps[1].options = { levels: 12 })), /steps\[1\]\.options\.levels: expected a whole number from 0 to 8/],
+    [variant((l) => (l.steps[1].options = { s: 0.3, j: 0.4 })), /steps\[1\]\.options\.s: s and j disagree/],
     [variant((l) => (l.steps[1].highlight = { panel: 'Nope' })), /steps\[1\]\.highlight\.panel: "Nope" is not one of/],
     [variant((l) => (l.steps[0].colour = 'red')), /steps\[0\]\.colour: unknown field/],
     [variant((l) => {
@@ -276,6 +277,17 @@ test('a pasted lesson opens; URLs outside lessons/ are refused; L and Esc open a
   assert.equal(await inPage((L) => L.lesson.id), 'teacher-1');
   assert.equal(await page.evaluate(() => window.screwbender.app.view.scene), 'pendulum');
   assert.equal(await page.locator('#lesson .text math').count(), 1);
+  await inPage((L) => L.close());
+  // A lesson written with `j`, the former name of the J_s parameter `s`, still sets it and checks it.
+  const old = {
+    id: 'teacher-old', title: 'Old names',
+    steps: [{ title: 'J_s', text: 'The J_s family.', scene: 'pendulum', options: { j: 0.3 }, exercise: { task: 'Keep s.', checks: [{ kind: 'options', j: { min: 0.29, max: 0.31 } }] } }],
+  };
+  assert.equal(await inPage((L, app, t) => L.openText(t, 'old.json', { resume: false }), JSON.stringify(old)), true);
+  const o = await page.evaluate(() => window.screwbender.options());
+  assert.equal(o.scheme, 'j');
+  assert.ok(Math.abs(o.s - 0.3) < 1e-12, JSON.stringify(o));
+  assert.equal((await inPage((L) => L.check())).ok, true);
   await inPage((L) => L.close());
   for (const bad of ['../index', 'https://example.com/x.json', '/js/main.js', 'lessons/../js/x.json']) {
     assert.equal(await inPage((L, app, b) => L.open(b), bad), false, bad);

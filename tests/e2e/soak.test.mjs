@@ -129,7 +129,7 @@ function randomOps({ seed, count }) {
           app.setScheme(pick(['bspline', 'fourpoint', 'jarek']));
           break;
         case 'j':
-          app.setJ(Math.round(rand() * 100) / 100);
+          app.setS(Math.round(rand() * 100) / 100);
           break;
         case 'rules':
           app.setOption('rules', pick(['direct', 'split']));

@@ -369,6 +369,63 @@ test('bad attributes and sources: a message naming attribute and value in that f
   }
 });
 
+test('the J_s parameter: attribute s, its former name j (alone, or agreeing with s), and s and j that disagree named', async () => {
+  const { page, problems } = await open(COURSE);
+  try {
+    const cases = [{ s: '0.3' }, { j: '0.3' }, { s: '0.3', j: '.3' }, { s: '0.3', j: '0.4' }];
+    const results = await page.evaluate(async (list) => {
+      const out = [];
+      for (const attrs of list) {
+        const el = document.createElement('screw-bender');
+        el.setAttribute('loading', 'eager');
+        el.setAttribute('preset', 'l_cycle_rotated');
+        const events = [];
+        el.addEventListener('error', (e) => events.push(e.detail.attribute));
+        for (const [k, v] of Object.entries(attrs)) el.setAttribute(k, v);
+        document.querySelector('main').append(el);
+        await el.ready;
+        const msg = el.shadowRoot.querySelector('.msg');
+        out.push({ options: el.motion?.options() ?? null, message: msg.hidden ? null : msg.textContent, events });
+        el.remove();
+      }
+      // Changed later: the attribute j and the options property with j both set s.
+      const el = document.createElement('screw-bender');
+      el.setAttribute('loading', 'eager');
+      el.setAttribute('preset', 'l_cycle_rotated');
+      el.setAttribute('s', '0.3');
+      document.querySelector('main').append(el);
+      await el.ready;
+      el.setAttribute('j', '0.6');
+      await new Promise((res) => setTimeout(res, 100));
+      const byAttribute = el.motion.options().s;
+      el.options = { j: 0.2 };
+      await new Promise((res) => setTimeout(res, 100));
+      const { s, j } = el.options;
+      el.remove();
+      out.push({ byAttribute, s, j });
+      return out;
+    }, cases);
+    for (const k of [0, 1, 2]) {
+      const r = results[k];
+      assert.equal(r.message, null, `${JSON.stringify(cases[k])}: no message`);
+      assert.deepEqual(r.events, []);
+      assert.equal(r.options.scheme, 'j');
+      assert.ok(Math.abs(r.options.s - 0.3) < 1e-12, `${JSON.stringify(cases[k])}: s = ${r.options.s}`);
+      assert.equal('j' in r.options, false, 'options() names the parameter s only');
+    }
+    const bad = results[3];
+    assert.deepEqual(bad.events, ['s']);
+    assert.ok(bad.message.includes('s="0.3"') && bad.message.includes('j="0.4"'), `names both: ${bad.message}`);
+    const later = results[4];
+    assert.ok(Math.abs(later.byAttribute - 0.6) < 1e-12, `attribute j set s: ${later.byAttribute}`);
+    assert.ok(Math.abs(later.s - 0.2) < 1e-12, `options {j} set s: ${later.s}`);
+    assert.equal(later.j, undefined);
+    assert.deepEqual(problems, []);
+  } finally {
+    await page.close();
+  }
+});
+
 test('a src motion file loads; figures created and removed 50 times leave no errors and flat memory', async () => {
   const { page, problems } = await open(COURSE);
   try {

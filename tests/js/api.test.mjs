@@ -140,7 +140,7 @@ describe('module', () => {
       assert.equal(m.poseCount, s.poseCount);
       assert.equal(m.closed, s.closed);
       assert.equal(m.name, s.id);
-      assert.deepEqual(m.options(), { scheme: s.scheme, j: { bspline: 1, fourpoint: 0, jarek: 0.5 }[s.scheme], rules: 'direct', levels: s.levels });
+      assert.deepEqual(m.options(), { scheme: s.scheme, s: { bspline: 1, fourpoint: 0, jarek: 0.5 }[s.scheme], rules: 'direct', levels: s.levels });
       m.free();
     }
     assert.deepEqual(list.find((s) => s.id === 'pip_morph5').morphShapes.length, 5);
@@ -258,7 +258,7 @@ describe('Motion: construction and documents', () => {
     assert.equal(m.poseCount, 3);
     assert.equal(m.closed, true);
     assert.equal(m.name, undefined);
-    assert.deepEqual(m.options(), { scheme: 'fourpoint', j: 0, rules: 'direct', levels: 5 });
+    assert.deepEqual(m.options(), { scheme: 'fourpoint', s: 0, rules: 'direct', levels: 5 });
     const text = m.toJson();
     assert.equal(JSON.parse(text).poses.length, 3);
     const fromJson = Motion.fromJson(text);
@@ -290,7 +290,7 @@ describe('Motion: construction and documents', () => {
     assert.equal(m.name, 'demo');
     assert.equal(m.closed, false);
     nearQuat(m.pose(1).rotation, [H, 0, 0, H], 1e-15);
-    assert.deepEqual(m.options(), { scheme: 'jarek', j: 0.5, rules: 'split', levels: 3 });
+    assert.deepEqual(m.options(), { scheme: 'jarek', s: 0.5, rules: 'split', levels: 3 });
     assert.equal(m.refinedCount, 9);
     assert.deepEqual(m.domain(), [0, 1]);
     assert.match(m.toJson(), /"name": "demo"/);
@@ -388,28 +388,36 @@ describe('Motion: options', () => {
     const m = new Motion(doc2());
     m.setScheme('bspline');
     assert.equal(m.scheme, 'bspline');
-    assert.equal(m.j, 1);
+    assert.equal(m.s, 1);
     m.setRules('split');
     assert.equal(m.rules, 'split');
     m.setRules('direct');
-    m.setJ(0.3);
+    m.setS(0.3);
     assert.equal(m.scheme, 'j');
-    assert.equal(m.j, 0.3);
+    assert.equal(m.s, 0.3);
     m.setScheme('jarek');
     m.setScheme('j'); // the J_s family with the current parameter
-    assert.equal(m.j, 0.5);
+    assert.equal(m.s, 0.5);
     m.setLevels(0);
     assert.equal(m.levels, 0);
     assert.deepEqual(Array.from(m.subdivide()), Array.from(m.poses()));
     m.setOptions({ scheme: 'fourpoint', levels: 4 });
-    assert.deepEqual(m.options(), { scheme: 'fourpoint', j: 0, rules: 'direct', levels: 4 });
+    assert.deepEqual(m.options(), { scheme: 'fourpoint', s: 0, rules: 'direct', levels: 4 });
     // Round trip of options(); several options validated together.
     m.setOptions(m.options());
     m.setRules('split');
-    m.setOptions({ scheme: 'j', j: 0.25, rules: 'direct' });
-    assert.deepEqual(m.options(), { scheme: 'j', j: 0.25, rules: 'direct', levels: 4 });
-    m.setOptions({ j: -1 });
-    assert.equal(m.j, -1);
+    m.setOptions({ scheme: 'j', s: 0.25, rules: 'direct' });
+    assert.deepEqual(m.options(), { scheme: 'j', s: 0.25, rules: 'direct', levels: 4 });
+    m.setOptions({ s: -1 });
+    assert.equal(m.s, -1);
+    // `j`, the former name of `s`, still works for one release: setJ, the getter, setOptions.
+    m.setJ(0.4);
+    assert.equal(m.s, 0.4);
+    assert.equal(m.j, 0.4);
+    m.setOptions({ j: 0.2 });
+    assert.deepEqual(m.options(), { scheme: 'j', s: 0.2, rules: 'direct', levels: 4 });
+    m.setOptions({ scheme: 'j', s: 0.6, j: 0.6 }); // both, agreeing
+    assert.equal(m.s, 0.6);
     m.setOptions({});
     m.setOptions(undefined);
   });
@@ -420,7 +428,7 @@ describe('Motion: options', () => {
     for (const [scheme, j, tol] of [['fourpoint', 0, 0], ['jarek', 0.5, 0], ['bspline', 1, 1e-12]]) {
       m.setScheme(scheme);
       const named = m.subdivide();
-      m.setJ(j);
+      m.setS(j);
       near(m.subdivide(), Array.from(named), tol, `J(${j}) vs ${scheme}`);
     }
   });
@@ -685,18 +693,23 @@ describe('bad input: clear Error, state unchanged', () => {
     throwsUnchanged(m, () => m.setScheme('cubic'), "scheme: unknown value 'cubic' (expected bspline, fourpoint, jarek, j)");
     throwsUnchanged(m, () => m.setScheme(3), 'scheme: expected a string, got number');
     throwsUnchanged(m, () => m.setRules('v3'), "rules: unknown value 'v3' (expected direct, split-then-tweak (also split))");
-    throwsUnchanged(m, () => m.setJ(NaN), 'j: not a finite number (NaN or infinity)');
-    throwsUnchanged(m, () => m.setJ('0.5'), 'j: expected a number, got string');
-    throwsUnchanged(m, () => m.setOptions({ scheme: 'fourpoint', j: 0.3 }), "j: j = 0.3 contradicts scheme 'fourpoint' (whose J_s parameter is 0); use scheme 'j' for other values");
-    throwsUnchanged(m, () => m.setOptions({ levle: 3 }), 'invalid options: unknown field `levle`, expected one of `scheme`, `j`, `rules`, `levels`');
+    throwsUnchanged(m, () => m.setS(NaN), 's: not a finite number (NaN or infinity)');
+    throwsUnchanged(m, () => m.setS('0.5'), 's: expected a number, got string');
+    throwsUnchanged(m, () => m.setOptions({ scheme: 'fourpoint', s: 0.3 }), "s: s = 0.3 contradicts scheme 'fourpoint' (whose J_s parameter is 0); use scheme 'j' for other values");
+    throwsUnchanged(m, () => m.setOptions({ levle: 3 }), 'invalid options: unknown field `levle`, expected one of `scheme`, `s`, `j`, `rules`, `levels`');
     throwsUnchanged(m, () => m.setOptions({ levels: '3' }), 'levels: invalid options: invalid type: string "3", expected f64');
-    throwsUnchanged(m, () => m.setOptions('fast'), 'invalid options: expected an object {scheme?, j?, rules?, levels?}, got string');
+    throwsUnchanged(m, () => m.setOptions('fast'), 'invalid options: expected an object {scheme?, s?, rules?, levels?}, got string');
     throwsUnchanged(m, () => m.setOptions({ scheme: 'jarek', levels: 2, rules: 'nope' }), "rules: unknown value 'nope' (expected direct, split-then-tweak (also split))");
-    m.setJ(0.2);
+    m.setS(0.2);
     throwsUnchanged(m, () => m.setRules('split'), 'rules: the J_s family is defined with the direct rules only');
     m.setScheme('fourpoint');
     m.setRules('split');
-    throwsUnchanged(m, () => m.setJ(0.2), 'rules: the J_s family is defined with the direct rules only');
+    throwsUnchanged(m, () => m.setS(0.2), 'rules: the J_s family is defined with the direct rules only');
+    // The former name `j` of the J_s parameter: its errors name `j`; beside `s` it must agree.
+    throwsUnchanged(m, () => m.setJ(NaN), 'j: not a finite number (NaN or infinity)');
+    throwsUnchanged(m, () => m.setOptions({ scheme: 'fourpoint', j: 0.3 }), "j: j = 0.3 contradicts scheme 'fourpoint' (whose J_s parameter is 0); use scheme 'j' for other values");
+    throwsUnchanged(m, () => m.setOptions({ scheme: 'j', rules: 'direct', s: 0.3, j: 0.4 }), 's: s = 0.3 and j = 0.4 disagree (j is the deprecated name of s; give s only)');
+    throwsUnchanged(m, () => m.setOptions({ s: 9 }), 's: 9 is out of range (expected -4 to 4)');
     throwsUnchanged(m, () => m.setClosed('no'), 'closed: expected a boolean, got string');
     throwsUnchanged(m, () => m.setName(5), 'name: expected a string, got number');
   });

@@ -175,11 +175,11 @@ describe('bad-input matrix: JS API', () => {
     const cases = [
       [{ scheme: 'cubic' }, "scheme: unknown value 'cubic' (expected bspline, fourpoint, jarek, j)"],
       [{ rules: 'v3' }, "rules: unknown value 'v3' (expected direct, split-then-tweak (also split))"],
-      [{ levle: 3 }, 'invalid options: unknown field `levle`, expected one of `scheme`, `j`, `rules`, `levels`'],
+      [{ levle: 3 }, 'invalid options: unknown field `levle`, expected one of `scheme`, `s`, `j`, `rules`, `levels`'],
       [{ levels: -1 }, 'levels: -1 is out of range (expected a whole number ≥ 0)'],
       [{ levels: 2.5 }, 'levels: 2.5 is out of range (expected a whole number ≥ 0)'],
-      [{ scheme: 'j', j: 0.3, rules: 'split' }, 'rules: the J_s family is defined with the direct rules only'],
-      ['fast', 'invalid options: expected an object {scheme?, j?, rules?, levels?}, got string'],
+      [{ scheme: 'j', s: 0.3, rules: 'split' }, 'rules: the J_s family is defined with the direct rules only'],
+      ['fast', 'invalid options: expected an object {scheme?, s?, rules?, levels?}, got string'],
     ];
     for (const [options, message] of cases) {
       throwsError(() => new Motion(doc, options), message, JSON.stringify(options));

@@ -91,7 +91,8 @@ function options() {
   if (rand() < 0.15) return garbage();
   const o = {};
   if (rand() < 0.5) o.scheme = pick(['bspline', 'fourpoint', 'jarek', 'j', 'J', 'cubic', '', 3]);
-  if (rand() < 0.3) o.j = rand() < 0.7 ? rand() * 2 - 0.5 : number();
+  if (rand() < 0.3) o.s = rand() < 0.7 ? rand() * 2 - 0.5 : number();
+  if (rand() < 0.1) o.j = rand() < 0.7 ? rand() * 2 - 0.5 : number();
   if (rand() < 0.3) o.rules = pick(['direct', 'split', 'v3', null]);
   if (rand() < 0.6) o.levels = rand() < 0.8 ? int(7) : number();
   if (rand() < 0.05) o.levle = 3;
@@ -130,6 +131,7 @@ const methodCalls = [
   ['removePose', (m) => m.removePose(rand() < 0.8 ? int(m.poseCount + 1) : garbage())],
   ['setOptions', (m) => m.setOptions(options())],
   ['setScheme', (m) => m.setScheme(pick(['bspline', 'fourpoint', 'jarek', 'j', 'cubic', 4, null]))],
+  ['setS', (m) => m.setS(rand() < 0.6 ? rand() * 1.5 - 0.25 : number())],
   ['setJ', (m) => m.setJ(rand() < 0.6 ? rand() * 1.5 - 0.25 : number())],
   ['setRules', (m) => m.setRules(pick(['direct', 'split', 'v3', undefined]))],
   ['setLevels', (m) => m.setLevels(rand() < 0.7 ? int(8) : number())],

@@ -746,9 +746,9 @@ export class App {
     this.edit(() => this.motion.setOptions({ scheme: name }));
   }
 
-  setJ(j) {
-    const named = { 1: 'bspline', 0: 'fourpoint', 0.5: 'jarek' }[j];
-    this.edit(() => this.motion.setOptions(named ? { scheme: named } : { scheme: 'j', j }), 'option:j');
+  setS(s) {
+    const named = { 1: 'bspline', 0: 'fourpoint', 0.5: 'jarek' }[s];
+    this.edit(() => this.motion.setOptions(named ? { scheme: named } : { scheme: 'j', s }), 'option:s');
   }
 
   setClosed(closed) {

@@ -5,9 +5,8 @@
 use std::path::{Path, PathBuf};
 
 use glam::DVec3;
-use screwbender::mesh::Mesh;
 use screwbender::{
-    export_motion, presets, ExportFormat, ExportSamples, ExportSettings, PipMorph, SamplingMode,
+    export_motion, ExportFormat, ExportSamples, ExportSettings, PresetObject, SamplingMode,
     DEFAULT_TOLERANCE,
 };
 
@@ -107,16 +106,7 @@ pub fn export(args: &[String]) -> Result<Output, Failure> {
     doc.set_timing(times, given)?;
     let sub = o.sub.subdivision(5)?;
     crate::compare::warn_subdivision(&sub, &doc.poses, doc.closed);
-    let mesh = doc
-        .name
-        .as_deref()
-        .and_then(presets::preset)
-        .map(|sc| Mesh::for_preset(&sc));
-    // A preset with one shape per control pose (A8) exports its morph.
-    let morph = doc
-        .name
-        .as_deref()
-        .and_then(|id| PipMorph::for_preset(id, doc.poses.len(), doc.closed));
+    let object = PresetObject::of(&doc);
     let out = o.output.as_deref();
     let (gltf_path, bin_path) = gltf_paths(out.unwrap_or("motion"));
     let bin_name = bin_path
@@ -135,8 +125,8 @@ pub fn export(args: &[String]) -> Result<Output, Failure> {
         radius: o.radius,
         point: o.point,
         control_nodes: o.control_nodes,
-        mesh: mesh.as_ref(),
-        morph: morph.as_ref(),
+        mesh: object.mesh.as_ref(),
+        morph: object.morph.as_ref(),
         bin_name: &bin_name,
     };
     // A CSV is written row by row from the samples (to `-o` or standard output), never as

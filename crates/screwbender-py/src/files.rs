@@ -7,10 +7,9 @@ use std::path::Path;
 use glam::DVec3;
 use pyo3::exceptions::{PyFileNotFoundError, PyOSError, PyPermissionError, PyValueError};
 use pyo3::prelude::*;
-use screwbender::mesh::Mesh;
 use screwbender::{
-    export_motion, import_motion_file, presets, Error, ErrorKind, ExportFormat, ExportSamples,
-    ExportSettings, MotionDocument, NodeSelection, PipMorph, SamplingMode, Subdivision,
+    export_motion, import_motion_file, Error, ErrorKind, ExportFormat, ExportSamples,
+    ExportSettings, MotionDocument, NodeSelection, PresetObject, SamplingMode, Subdivision,
     DEFAULT_TOLERANCE, MAX_GLTF_BYTES,
 };
 
@@ -143,16 +142,7 @@ pub fn export(
             "fps: give either tolerance (adaptive sampling) or fps (fixed rate), not both",
         ));
     }
-    let mesh = doc
-        .name
-        .as_deref()
-        .and_then(presets::preset)
-        .map(|sc| Mesh::for_preset(&sc));
-    // A preset with one shape per control pose (A8) exports its morph, as the CLI does.
-    let morph = doc
-        .name
-        .as_deref()
-        .and_then(|id| PipMorph::for_preset(id, doc.poses.len(), doc.closed));
+    let object = PresetObject::of(doc);
     let sampling = match o.fps {
         Some(fps) => SamplingMode::FixedRate(fps),
         None => SamplingMode::Adaptive(o.tolerance.unwrap_or(DEFAULT_TOLERANCE)),
@@ -176,8 +166,8 @@ pub fn export(
         radius: o.radius,
         point: o.point,
         control_nodes: o.control_nodes,
-        mesh: mesh.as_ref(),
-        morph: morph.as_ref(),
+        mesh: object.mesh.as_ref(),
+        morph: object.morph.as_ref(),
         bin_name: &bin_name,
     };
     let settings = &settings;

@@ -37,14 +37,9 @@ pub struct State {
 }
 
 impl State {
-    /// Everything that can make a state unusable: option combinations, the memory guard (which
-    /// also refuses fewer than 2 poses) and the key timing.
+    /// Everything that can make a state unusable ([`MotionDocument::check_with`]).
     fn check(&self) -> Result<(), Error> {
-        self.subdivision.validate()?;
-        self.subdivision
-            .output_len(self.doc.poses.len(), self.doc.closed)?;
-        self.doc.timing()?;
-        Ok(())
+        self.doc.check_with(&self.subdivision)
     }
 }
 
@@ -647,7 +642,7 @@ impl PyMotion {
     /// selects the J_s family.
     #[getter]
     fn get_s(&self) -> f64 {
-        self.state.subdivision.scheme.j_parameter()
+        self.state.subdivision.scheme.s()
     }
 
     #[setter]

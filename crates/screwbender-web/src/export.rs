@@ -14,8 +14,8 @@ use super::files::set;
 use super::MotionHandle;
 use screwbender::mesh::Mesh;
 use screwbender::{
-    export_motion, Error, ErrorKind, ExportFormat, ExportSettings, SamplingMode, DEFAULT_TOLERANCE,
-    MAX_GLTF_BYTES,
+    export_motion, Error, ErrorKind, ExportFormat, ExportSettings, PresetObject, SamplingMode,
+    DEFAULT_TOLERANCE, MAX_GLTF_BYTES,
 };
 
 #[wasm_bindgen(typescript_custom_section)]
@@ -185,12 +185,9 @@ impl MotionHandle {
         };
         let imported = mesh_input(&settings)?;
         let (doc, sub) = self.snapshot()?;
-        let named = match (&input.object, &doc.name) {
-            (Some(name), _) => Some(Mesh::named(name).map_err(|e| e.within("object"))?),
-            (None, Some(name)) => {
-                screwbender::presets::preset(name).map(|s| Mesh::from_shape(&s.shape))
-            }
-            (None, None) => None,
+        let named = match &input.object {
+            Some(name) => Some(Mesh::named(name).map_err(|e| e.within("object"))?),
+            None => None,
         };
         if imported.is_some() && input.object.is_some() {
             return Err(Error::new(
@@ -202,13 +199,10 @@ impl MotionHandle {
             )
             .into());
         }
-        // A preset with one shape per control pose (A8) exports its morph, unless another
-        // object or mesh is asked for.
-        let morph = match (&input.object, &imported, &doc.name) {
-            (None, None, Some(name)) => {
-                screwbender::PipMorph::for_preset(name, doc.poses.len(), doc.closed)
-            }
-            _ => None,
+        // The preset's object (and morph) unless another object or mesh is asked for.
+        let preset = match (&input.object, &imported) {
+            (None, None) => PresetObject::of(&doc),
+            _ => PresetObject::default(),
         };
         // File names say what the file holds (a glTF motion, sampled poses, a path).
         let stem = input
@@ -237,8 +231,11 @@ impl MotionHandle {
                 radius: input.radius,
                 point: input.point.map(DVec3::from_array),
                 control_nodes: input.control_nodes.unwrap_or(false),
-                mesh: imported.as_ref().or(named.as_ref()),
-                morph: morph.as_ref(),
+                mesh: imported
+                    .as_ref()
+                    .or(named.as_ref())
+                    .or(preset.mesh.as_ref()),
+                morph: preset.morph.as_ref(),
                 bin_name: &bin_name,
             },
         )?;

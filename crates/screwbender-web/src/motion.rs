@@ -31,14 +31,9 @@ struct State {
 }
 
 impl State {
-    /// Everything that can make a state unusable: option combinations and the memory guard
-    /// (which also rejects fewer than 2 poses).
+    /// Everything that can make a state unusable ([`MotionDocument::check_with`]).
     fn check(&self) -> Result<(), Error> {
-        self.subdivision.validate()?;
-        self.subdivision
-            .output_len(self.doc.poses.len(), self.doc.closed)?;
-        self.doc.timing()?;
-        Ok(())
+        self.doc.check_with(&self.subdivision)
     }
 
     /// The parameter interval `[0, n)` (closed) or `[0, m − 1]` (open).
@@ -499,8 +494,9 @@ impl MotionHandle {
         })
     }
 
-    /// Changes several options at once (validated together: e.g. `{scheme: 'j', j: 0.3,
-    /// rules: 'direct'}` from the split rules is fine).
+    /// Changes several options at once (validated together: e.g. `{scheme: 'j', s: 0.3,
+    /// rules: 'direct'}` from the split rules is fine; `j` is read as the deprecated name of
+    /// `s`).
     #[wasm_bindgen(js_name = setOptions)]
     pub fn set_options(
         &self,
@@ -521,7 +517,7 @@ impl MotionHandle {
     }
 
     /// Sets the scheme: `'bspline'`, `'fourpoint'`, `'jarek'`, or `'j'` (the J_s family with the
-    /// current J_s parameter; see `setJ`).
+    /// current J_s parameter; see `setS`).
     #[wasm_bindgen(js_name = setScheme)]
     pub fn set_scheme(
         &self,
@@ -529,30 +525,40 @@ impl MotionHandle {
     ) -> Result<(), JsError> {
         let name = string(&name, "scheme")?;
         self.update(|s| {
-            s.subdivision.scheme =
-                options::parse_scheme(&name, s.subdivision.scheme.j_parameter())?;
+            s.subdivision.scheme = options::parse_scheme(&name, s.subdivision.scheme.s())?;
             Ok(())
         })
     }
 
-    /// The J_s parameter of the current scheme (1 B-spline, 0 4-point, ½ Jarek).
+    /// The J_s parameter `s` of the current scheme (1 B-spline, 0 4-point, ½ Jarek).
+    #[wasm_bindgen(getter)]
+    pub fn s(&self) -> Result<f64, JsError> {
+        self.read(|s| s.subdivision.scheme.s())
+    }
+
+    /// Deprecated name of the `s` getter.
     #[wasm_bindgen(getter)]
     pub fn j(&self) -> Result<f64, JsError> {
-        self.read(|s| s.subdivision.scheme.j_parameter())
+        self.s()
     }
 
     /// Switches to the J_s family with parameter `s`, from −4 to 4 ([`screwbender::MAX_J_PARAMETER`];
     /// needs the direct rules).
+    #[wasm_bindgen(js_name = setS)]
+    pub fn set_s(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] s: JsValue,
+    ) -> Result<(), JsError> {
+        self.set_j_s(&s, "s")
+    }
+
+    /// Deprecated name of `setS` (errors name `j`).
     #[wasm_bindgen(js_name = setJ)]
     pub fn set_j(
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] s: JsValue,
     ) -> Result<(), JsError> {
-        let s = options::check_j(finite(&s, "j")?)?;
-        self.update(|st| {
-            st.subdivision.scheme = screwbender::Scheme::J(s);
-            Ok(())
-        })
+        self.set_j_s(&s, "j")
     }
 
     /// The rule set: `'direct'` (revised paper) or `'split'` (first version).
@@ -744,5 +750,14 @@ impl MotionHandle {
         doc.name = Some(preset.id.to_string());
         let subdivision = Subdivision::new(preset.scheme, Rules::Direct, preset.levels);
         MotionHandle::from_state(State { doc, subdivision })
+    }
+    /// Switches to the J_s family with parameter `s` given under the name `at` (`setS` and
+    /// its deprecated alias `setJ`).
+    fn set_j_s(&self, s: &JsValue, at: &str) -> Result<(), JsError> {
+        let s = options::check_s(finite(s, at)?, at)?;
+        self.update(|st| {
+            st.subdivision.scheme = screwbender::Scheme::J(s);
+            Ok(())
+        })
     }
 }

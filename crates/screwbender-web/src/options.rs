@@ -1,4 +1,5 @@
-//! Subdivision options as JavaScript sees them: `{scheme, j, rules, levels}` with string names.
+//! Subdivision options as JavaScript sees them: `{scheme, s, rules, levels}` with string names.
+//! `j` is still read as the deprecated name of `s`.
 
 use serde::{Deserialize, Serialize};
 use wasm_bindgen::JsValue;
@@ -22,6 +23,8 @@ pub(crate) fn default_subdivision() -> Subdivision {
 #[derive(Deserialize, Default)]
 struct OptionsInput {
     scheme: Option<String>,
+    s: Option<f64>,
+    /// Deprecated name of `s`.
     j: Option<f64>,
     rules: Option<String>,
     levels: Option<f64>,
@@ -31,7 +34,7 @@ struct OptionsInput {
 #[derive(Serialize)]
 pub(crate) struct OptionsOutput {
     scheme: &'static str,
-    j: f64,
+    s: f64,
     rules: &'static str,
     levels: u32,
 }
@@ -58,16 +61,16 @@ pub(crate) fn rules_name(rules: &Rules) -> &'static str {
 pub(crate) fn to_output(sub: &Subdivision) -> OptionsOutput {
     OptionsOutput {
         scheme: scheme_name(&sub.scheme),
-        j: sub.scheme.j_parameter(),
+        s: sub.scheme.s(),
         rules: rules_name(&sub.rules),
         levels: sub.levels,
     }
 }
 
-/// Parses a scheme name; `j` takes the parameter `j`.
-pub(crate) fn parse_scheme(name: &str, j: f64) -> Result<Scheme, Error> {
+/// Parses a scheme name; `j` (the J_s family) takes the parameter `s`.
+pub(crate) fn parse_scheme(name: &str, s: f64) -> Result<Scheme, Error> {
     if name.eq_ignore_ascii_case("j") {
-        return Ok(Scheme::J(j));
+        return Ok(Scheme::J(s));
     }
     name.parse().map_err(|e: Error| match e.kind() {
         ErrorKind::UnknownValue { value, .. } => Error::new(
@@ -97,20 +100,41 @@ pub(crate) fn parse_levels(v: f64) -> Result<u32, Error> {
     }
 }
 
-/// Checks a J_s parameter given on its own (`setJ`) or next to a scheme name.
-pub(crate) fn check_j(j: f64) -> Result<f64, Error> {
-    if !j.is_finite() {
-        Err(Error::new("j", ErrorKind::NonFinite))
-    } else if j.abs() > screwbender::MAX_J_PARAMETER {
+/// Checks a J_s parameter given on its own (`setS`) or next to a scheme name; `at` is the name
+/// it was given under (`s`, or the deprecated `j`), which errors use.
+pub(crate) fn check_s(s: f64, at: &str) -> Result<f64, Error> {
+    if !s.is_finite() {
+        Err(Error::new(at, ErrorKind::NonFinite))
+    } else if s.abs() > screwbender::MAX_J_PARAMETER {
         Err(Error::new(
-            "j",
+            at,
             ErrorKind::OutOfRange {
-                value: super::convert::js_number(j),
+                value: super::convert::js_number(s),
                 expected: format!("-{0} to {0}", screwbender::MAX_J_PARAMETER),
             },
         ))
     } else {
-        Ok(j)
+        Ok(s)
+    }
+}
+
+/// The J_s parameter of an options object and the name it came under: `s`, or the deprecated
+/// `j`; both are fine when they agree, and an error naming both when they do not.
+fn given_s(input: &OptionsInput) -> Result<Option<(f64, &'static str)>, Error> {
+    let s = input.s.map(|v| check_s(v, "s")).transpose()?;
+    let j = input.j.map(|v| check_s(v, "j")).transpose()?;
+    match (s, j) {
+        (Some(s), Some(j)) if s != j => Err(Error::new(
+            "s",
+            ErrorKind::Unsupported {
+                reason: format!(
+                    "s = {s} and j = {j} disagree (j is the deprecated name of s; give s only)"
+                ),
+            },
+        )),
+        (Some(s), _) => Ok(Some((s, "s"))),
+        (None, Some(j)) => Ok(Some((j, "j"))),
+        (None, None) => Ok(None),
     }
 }
 
@@ -121,26 +145,26 @@ pub(crate) fn apply(sub: Subdivision, value: &JsValue) -> Result<Subdivision, Er
         return Ok(sub);
     }
     let value = &plain(value, "")?;
-    check_object(value, "", "options", "{scheme?, j?, rules?, levels?}")?;
+    check_object(value, "", "options", "{scheme?, s?, rules?, levels?}")?;
     let input: OptionsInput = from_js(value, "", "options")?;
     check_keys(value, fields_of::<OptionsInput>(), "", "options")?;
     let mut out = sub;
-    let j = input.j.map(check_j).transpose()?;
-    match (&input.scheme, j) {
+    let given = given_s(&input)?;
+    match (&input.scheme, given) {
         (Some(name), _) => {
-            let scheme = parse_scheme(name, j.unwrap_or(sub.scheme.j_parameter()))?;
-            if let (Some(j), false) = (j, matches!(scheme, Scheme::J(_))) {
-                if j != scheme.j_parameter() {
-                    return Err(Error::new("j", ErrorKind::Unsupported { reason: format!(
-                            "j = {j} contradicts scheme '{}' (whose J_s parameter is {}); use scheme 'j' for other values",
+            let scheme = parse_scheme(name, given.map_or(sub.scheme.s(), |(s, _)| s))?;
+            if let (Some((s, at)), false) = (given, matches!(scheme, Scheme::J(_))) {
+                if s != scheme.s() {
+                    return Err(Error::new(at, ErrorKind::Unsupported { reason: format!(
+                            "{at} = {s} contradicts scheme '{}' (whose J_s parameter is {}); use scheme 'j' for other values",
                             scheme_name(&scheme),
-                            scheme.j_parameter()
+                            scheme.s()
                         ) }));
                 }
             }
             out.scheme = scheme;
         }
-        (None, Some(j)) => out.scheme = Scheme::J(j),
+        (None, Some((s, _))) => out.scheme = Scheme::J(s),
         (None, None) => {}
     }
     if let Some(rules) = &input.rules {

@@ -56,7 +56,7 @@ export interface MotionDocument {
   poses: Pose[];
 }
 
-/** Subdivision schemes; `'j'` is the J_s family (parameter `j`: 1 B-spline, 0 4-point, 0.5 Jarek). */
+/** Subdivision schemes; `'j'` is the J_s family (parameter `s`: 1 B-spline, 0 4-point, 0.5 Jarek). */
 export type SchemeName = 'bspline' | 'fourpoint' | 'jarek' | 'j';
 
 /** Rule sets: `'direct'` (revised paper, V2) or `'split'` (split-then-tweak, first version V1). */
@@ -65,8 +65,10 @@ export type RulesName = 'direct' | 'split';
 /** The subdivision options of a `Motion`. */
 export interface SubdivisionOptions {
   scheme: SchemeName;
-  /** The J_s parameter (used by scheme `'j'`; for the named schemes their own value), from -4 to 4. */
-  j: number;
+  /** The J_s parameter `s` (used by scheme `'j'`; for the named schemes their own value), from -4 to 4. */
+  s: number;
+  /** @deprecated The former name of `s`: still read by `setOptions` (an error if it disagrees with `s`), never returned by `options()`. */
+  j?: number;
   rules: RulesName;
   /** Subdivision levels, a whole number >= 0 (limited by `limits().maxRefinedPoses`). */
   levels: number;

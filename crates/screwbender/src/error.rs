@@ -183,6 +183,21 @@ pub(crate) fn check_finite(values: &[f64], at: &str) -> Result<(), Error> {
     }
 }
 
+/// Checks an input's size before it is parsed: at most `max` bytes, naming `at` otherwise.
+pub(crate) fn check_size(len: usize, max: usize, at: &str) -> Result<(), Error> {
+    if len <= max {
+        Ok(())
+    } else {
+        Err(Error::new(
+            at,
+            ErrorKind::OutOfRange {
+                value: format!("{len} bytes"),
+                expected: format!("at most {max} bytes"),
+            },
+        ))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -104,7 +104,14 @@ mod screwbender;
 mod subdivision;
 mod timing;
 
-pub use presets::mesh;
+/// Triangle meshes of the objects: [`mesh::Mesh`] and the shapes (`presets/mesh.rs`), and the
+/// limits of the files it is read from (`formats/obj.rs`, `formats/gltf/mesh.rs`).
+pub mod mesh {
+    #[cfg(feature = "gltf")]
+    pub use crate::formats::gltf::mesh::MAX_GLTF_MESH_BYTES;
+    pub use crate::formats::obj::{MAX_OBJ_BYTES, MAX_OBJ_TRIANGLES};
+    pub use crate::presets::mesh::*;
+}
 
 /// The README's Rust examples, compiled and run as doctests.
 #[cfg(doctest)]
@@ -127,7 +134,7 @@ pub use formats::gltf::{is_glb, split_glb};
 #[cfg(feature = "gltf")]
 pub use formats::interop::{
     export_motion, import_motion_file, mesh_radius, ExportFormat, ExportSamples, ExportSettings,
-    ExportedMotion, ImportKind,
+    ExportedMotion, ImportKind, PresetObject,
 };
 pub use formats::keyframes::REPEAT_TOLERANCE;
 pub use formats::reduce::{reduce_poses, Reduction, MANY_POSES};

@@ -38,9 +38,9 @@ export function buildPanel(app, { openPaste }) {
   // Proxy object: lil-gui reads/writes these; setters route to the app as undoable edits.
   const p = {
     get scheme() { return app.motion.scheme; },
-    set scheme(v) { v === 'j' ? app.setJ(0.25) : app.setScheme(v); },
-    get j() { return app.motion.j; },
-    set j(v) { app.setJ(v); },
+    set scheme(v) { v === 'j' ? app.setS(0.25) : app.setScheme(v); },
+    get s() { return app.motion.s; },
+    set s(v) { app.setS(v); },
     get rules() { return app.motion.rules; },
     set rules(v) { app.setOption('rules', v); },
     get levels() { return app.motion.levels; },
@@ -73,7 +73,7 @@ export function buildPanel(app, { openPaste }) {
   // Presets by human name, with the paper's figure and a description each (editor/presets.js).
   const presetCtrl = fMotion.add({ choose: () => app.parts.presets.open(/** @type {any} */ (presetCtrl).$button) }, 'choose');
   fMotion.add(p, 'scheme', SCHEMES).name('Scheme');
-  fMotion.add(p, 'j', 0, 1, 0.01).name('J_s').onFinishChange(() => {});
+  fMotion.add(p, 's', 0, 1, 0.01).name('J_s').onFinishChange(() => {});
   fMotion.add(p, 'rules', RULES).name('Rules');
   fMotion.add(p, 'levels', 0, 8, 1).name('Levels');
   fMotion.add(p, 'closed').name('Closed cycle');

@@ -47,7 +47,7 @@ const short = (x, digits = 2) => String(Number(x.toFixed(digits)));
 export function figureOptions(app) {
   const o = app.motion.options();
   const out = [['scheme', o.scheme]];
-  if (o.scheme === 'j') out.push(['j', short(o.j, 4)]);
+  if (o.scheme === 'j') out.push(['s', short(o.s, 4)]);
   out.push(['rules', o.rules], ['levels', String(o.levels)]);
   const strobe = app.parts.responsive?.fullStrobe() ?? app.view.strobe;
   out.push(['strobe', String(strobe)]);

@@ -107,7 +107,7 @@ export function bindChrome(fig) {
       fig.seek(a + ((b - a) * Number(scrub.value)) / 1000);
     }),
   );
-  scheme.addEventListener('change', () => fig.guard(() => fig.setOptions({ scheme: scheme.value, j: null })));
+  scheme.addEventListener('change', () => fig.guard(() => fig.setOptions({ scheme: scheme.value, s: null })));
   levels.addEventListener('input', () => fig.guard(() => fig.setOptions({ levels: Number(levels.value) })));
   frame.addEventListener('click', () => fig.guard(() => fig.viewer?.frameAll('user')));
 }

@@ -10,7 +10,7 @@ import { DEFAULT_NAME, bindChrome, buildChrome, onKey, refreshChrome, timeChange
 import { editTool } from './edit-tool.js';
 import { Labels } from './labels.js';
 import {
-  CONTROLS, DEFAULT_SHOW, canonical, LAYERS, LAYER_FIELD, MAX_STROBE, OptionError, THEMES, TOUCH, bool, cameraView, number, oneOf,
+  ALIASES, CONTROLS, DEFAULT_SHOW, canonical, LAYERS, LAYER_FIELD, MAX_STROBE, OptionError, THEMES, TOUCH, bool, cameraView, number, oneOf,
   subdivisionOptions,
 } from './options.js';
 import { Playback, describePose, schemeName } from './playback.js';
@@ -198,6 +198,8 @@ export class Figure {
     patch = canonical(patch);
     const before = this.opts;
     this.opts = { ...this.opts, ...patch };
+    // A current name given alone replaces a former name kept beside it.
+    for (const [old, now] of Object.entries(ALIASES)) if (now in patch && !(old in patch)) delete this.opts[old];
     if ('loading' in patch && patch.loading === 'eager') this.wake?.();
     if ('poster' in patch) showPoster(this);
     if (!this.viewer) return this.guard(() => this.applyChrome());
@@ -237,7 +239,7 @@ export class Figure {
         model.motion.setOptions(sub);
       } catch (e) {
         model.motion.setOptions(old);
-        const key = ['levels', 'j', 'scheme', 'rules'].find((k) => k in sub) ?? 'levels';
+        const key = ['levels', 's', 'scheme', 'rules'].find((k) => k in sub) ?? 'levels';
         throw new OptionError(key, o[key], e.message);
       }
     }

@@ -3,20 +3,23 @@
 
 /** Attributes the element watches (each maps onto an option of mount()). */
 export const ATTRIBUTES = [
-  'preset', 'src', 'share', 'scheme', 'levels', 'j', 'rules', 'strobe', 'show', 'autoplay', 'loop',
+  'preset', 'src', 'share', 'scheme', 'levels', 's', 'rules', 'strobe', 'show', 'autoplay', 'loop',
   'speed', 'editable', 'controls', 'camera', 'theme', 'persist', 'alt', 'loading', 'poster', 'touch-action',
-  'scene',
+  'scene', 'j',
 ];
 /** Former names of options, kept for one release: former name → name. */
-export const ALIASES = { scene: 'preset' };
+export const ALIASES = { scene: 'preset', j: 's' };
 
-/** `patch` with the former option names replaced by the current ones (a current name wins). */
+/**
+ * `patch` with the former option names replaced by the current ones. A former name given with a
+ * different value beside the current one stays, so that the checks can name both.
+ */
 export function canonical(patch) {
   const out = { ...patch };
   for (const [old, now] of Object.entries(ALIASES)) {
     if (old in out) {
       if (!(now in out)) out[now] = out[old];
-      delete out[old];
+      if (String(out[now]) === String(out[old])) delete out[old];
     }
   }
   return out;
@@ -80,9 +83,12 @@ export function cameraView(value) {
 export function subdivisionOptions(o) {
   const out = {};
   if (o.scheme != null && o.scheme !== '') out.scheme = oneOf('scheme', o.scheme, SCHEMES);
-  if (o.j != null && o.j !== '') {
-    out.j = number('j', o.j, -4, 4);
+  if (o.s != null && o.s !== '') {
+    out.s = number('s', o.s, -4, 4);
     out.scheme ??= 'j';
+  }
+  if (o.j != null && o.j !== '' && number('j', o.j, -4, 4) !== out.s) {
+    throw new OptionError('s', o.s, `s and j disagree (j="${o.j}"; j is the former name of s)`);
   }
   if (o.rules != null && o.rules !== '') out.rules = oneOf('rules', o.rules, RULES);
   if (o.levels != null && o.levels !== '') out.levels = number('levels', o.levels, 0, 12, true);

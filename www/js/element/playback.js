@@ -15,7 +15,7 @@ const MAX_SCALE = 8;
 
 /** "4-point scheme" and the like, from a motion's options. */
 export function schemeName(o) {
-  return `${SCHEME_NAMES[o.scheme] ?? o.scheme} scheme${o.scheme === 'j' ? ` (s = ${o.j})` : ''}`;
+  return `${SCHEME_NAMES[o.scheme] ?? o.scheme} scheme${o.scheme === 'j' ? ` (s = ${o.s})` : ''}`;
 }
 
 const fmt = (v) => v.map((x) => (Math.abs(x) < 5e-3 ? 0 : x).toFixed(2)).join(', ');

@@ -8,7 +8,7 @@
 //
 // Sources (the first present wins): `src` (URL of a motion .json or .glb), `share` (a share-link
 // payload, the part after `#s=`), an inline <script type="application/json"> child (a motion
-// document), `preset` (a preset id; `scene`, its former name, still works). Options: scheme, levels, j, rules, strobe, show (layers:
+// document), `preset` (a preset id; `scene`, its former name, still works). Options: scheme, levels, s, rules, strobe, show (layers:
 // strobe control trajectories polyscrew polygon triads grid), autoplay, loop, speed, editable,
 // controls (none | minimal | full), camera (iso | front | side | top, or "yaw pitch [distance]"
 // in degrees and scene units), theme (light | dark), persist (a localStorage key; without it the

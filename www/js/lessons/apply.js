@@ -1,5 +1,6 @@
 // What a lesson step does to the app before it is shown: its scene or document, motion options,
 // display settings, timing, selection and dock view (fields: www/lessons/README.md).
+import { withS } from './format.js';
 
 /**
  * Applies step `s` to `app` and points the highlight at `s.highlight` through `setTarget`.
@@ -16,13 +17,13 @@ export function applyStep(app, s, setTarget) {
       app.frameAll();
     });
   }
-  const o = s.options ? { ...s.options } : null;
+  const o = s.options ? withS(s.options) : null;
   if (o || s.display || s.timing?.times !== undefined) {
     app.edit(() => {
       if (o) {
         if (o.closed !== undefined) app.motion.setClosed(o.closed);
         delete o.closed;
-        if (o.j !== undefined && o.scheme === undefined) o.scheme = 'j';
+        if (o.s !== undefined && o.scheme === undefined) o.scheme = 'j';
         if (Object.keys(o).length) app.motion.setOptions(o);
       }
       if (s.display) {

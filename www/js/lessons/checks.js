@@ -1,6 +1,7 @@
 // The checks of a lesson exercise, evaluated against the app's Motion through the wasm API
 // (kinds and fields: www/lessons/README.md). Each returns {ok, got, want}: `got` says what was
 // measured, in words the feedback line shows.
+import { withS } from './format.js';
 
 const DEG = 180 / Math.PI;
 /** Offset either side of a knot for the velocity on each side (well inside a refined span: ≥ 2^-8). */
@@ -93,11 +94,12 @@ export function evaluateCheck(check, motion, answer) {
         got.push(motion.closed ? 'closed' : 'open');
         want.push(check.closed ? 'closed' : 'open');
       }
-      for (const f of ['levels', 'j']) {
-        if (check[f] === undefined) continue;
-        ok &&= inRange(o[f], check[f]);
-        got.push(`${f === 'j' ? 'J_s' : f} ${fmt(o[f])}`);
-        want.push(`${f === 'j' ? 'J_s' : f} ${rangeText(check[f])}`);
+      const c = withS(check);
+      for (const f of ['levels', 's']) {
+        if (c[f] === undefined) continue;
+        ok &&= inRange(o[f], c[f]);
+        got.push(`${f === 's' ? 'J_s' : f} ${fmt(o[f])}`);
+        want.push(`${f === 's' ? 'J_s' : f} ${rangeText(c[f])}`);
       }
       return { ok, got: got.join(', '), want: want.join(', ') };
     }

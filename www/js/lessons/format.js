@@ -13,7 +13,7 @@ export const MAX_STEPS = 200;
 export const CHECK_FIELDS = {
   spanScrew: ['span', 'screw', 'angle', 'slide', 'pitch'],
   pose: ['pose', 'origin', 'rotation', 'tolerance', 'angleTolerance'],
-  options: ['scheme', 'rules', 'levels', 'j', 'closed'],
+  options: ['scheme', 'rules', 'levels', 's', 'j', 'closed'],
   velocityJump: ['pose', 'point', 'min', 'max'],
   metric: ['field', 'min', 'max', 'points'],
   choice: ['answer'],
@@ -24,6 +24,16 @@ export const METRIC_FIELDS = [
   'angular_acceleration_energy', 'interpolation_error', 'fourPointGap',
 ];
 const SCHEMES = ['bspline', 'fourpoint', 'jarek', 'j'];
+
+/**
+ * Options (of a step or an `options` check) with the J_s parameter under its name `s`: `j`, its
+ * former name, still reads for one release. Validated files never give both with different values.
+ * Always a copy.
+ */
+export function withS(o) {
+  const { j, ...rest } = o;
+  return j === undefined ? rest : { ...rest, s: rest.s ?? j };
+}
 const RULES = ['direct', 'split'];
 const SCREW_KINDS = ['identity', 'translation', 'general'];
 /** Display settings a step may set (App.view keys) and their types. */
@@ -162,16 +172,19 @@ function validateStep(s, p, ctx) {
 
 function validateOptions(o, p, isCheck) {
   if (!isObj(o)) fail(p, 'expected an object');
-  onlyKeys(o, isCheck ? ['kind', ...CHECK_FIELDS.options] : ['scheme', 'rules', 'levels', 'j', 'closed'], p);
+  onlyKeys(o, isCheck ? ['kind', ...CHECK_FIELDS.options] : ['scheme', 'rules', 'levels', 's', 'j', 'closed'], p);
+  if (o.s !== undefined && o.j !== undefined && JSON.stringify(o.s) !== JSON.stringify(o.j)) {
+    fail(`${p}.s`, `s and j disagree (j is the former name of s; give s only)`);
+  }
   if (o.scheme !== undefined) oneOf(o.scheme, SCHEMES, `${p}.scheme`);
   if (o.rules !== undefined) oneOf(o.rules, RULES, `${p}.rules`);
   if (o.closed !== undefined && typeof o.closed !== 'boolean') fail(`${p}.closed`, 'expected true or false');
   if (isCheck) {
     if (o.levels !== undefined) range(o.levels, `${p}.levels`);
-    if (o.j !== undefined) range(o.j, `${p}.j`);
+    for (const f of ['s', 'j']) if (o[f] !== undefined) range(o[f], `${p}.${f}`);
   } else {
     if (o.levels !== undefined && !(Number.isInteger(o.levels) && o.levels >= 0 && o.levels <= 8)) fail(`${p}.levels`, 'expected a whole number from 0 to 8');
-    if (o.j !== undefined && !(isNum(o.j) && Math.abs(o.j) <= 4)) fail(`${p}.j`, 'expected a number from -4 to 4');
+    for (const f of ['s', 'j']) if (o[f] !== undefined && !(isNum(o[f]) && Math.abs(o[f]) <= 4)) fail(`${p}.${f}`, 'expected a number from -4 to 4');
   }
 }
 

@@ -44,7 +44,7 @@ class MetricsView {
     const ms = performance.now() - t0;
     const o = m.options();
     this.caption.textContent =
-      `${SCHEME_NAMES[o.scheme] ?? o.scheme}${o.scheme === 'j' ? ` (s = ${o.j})` : ''} scheme, ${RULE_NAMES[o.rules] ?? `${o.rules} rules`}, ${o.levels} levels; body points ` +
+      `${SCHEME_NAMES[o.scheme] ?? o.scheme}${o.scheme === 'j' ? ` (s = ${o.s})` : ''} scheme, ${RULE_NAMES[o.rules] ?? `${o.rules} rules`}, ${o.levels} levels; body points ` +
       `${points.map((p) => `(${p.map((v) => +v.toFixed(3)).join(', ')})`).join(', ')}; ${ms.toFixed(0)} ms.`;
     const rows = [el('tr', {}, el('th', {}, 'metric'), el('th', {}, 'value'), el('th', {}, 'unit'))];
     for (const [label, unit, tip, get] of ROWS) {

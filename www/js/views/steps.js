@@ -40,7 +40,7 @@ function tweakText(o) {
     bspline: 'B-spline rule (V2): old pose = s(s(b, ¼, a), ½, s(b, ¼, c)); new pose = s(b, ½, c) (the split midpoint, unchanged)',
     fourpoint: '4-point rule (V2): new pose = s(s(a, 9/8, b), ½, s(d, 9/8, c)); old poses unchanged',
     jarek: 'Jarek rule (V2): old = s(s(a, 7/8, b), ½, s(c, 7/8, b)); new = s(s(a, 17/16, b), ½, s(d, 17/16, c))',
-    j: `J_s rule (s = ${o.j}): old = s(s(b, s/4, a), ½, s(b, s/4, c)); new = s(s(a, w, b), ½, s(d, w, c)), w = 1 + (1 − s)/8`,
+    j: `J_s rule (s = ${o.s}): old = s(s(b, s/4, a), ½, s(b, s/4, c)); new = s(s(a, w, b), ½, s(d, w, c)), w = 1 + (1 − s)/8`,
   }[s];
 }
 

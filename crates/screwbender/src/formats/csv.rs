@@ -33,15 +33,7 @@ pub const POSE_COLUMNS: [&str; 7] = ["x", "y", "z", "qw", "qx", "qy", "qz"];
 /// ([`ErrorKind::NonFinite`](crate::ErrorKind::NonFinite) at `line N, column qw`); a bad quaternion (`line N.rotation: zero quaternion`);
 /// fewer than 2 poses.
 pub fn parse_csv_poses(text: &str) -> Result<MotionDocument, Error> {
-    if text.len() > MAX_CSV_BYTES {
-        return Err(Error::new(
-            "csv",
-            ErrorKind::OutOfRange {
-                value: format!("{} bytes", text.len()),
-                expected: format!("at most {MAX_CSV_BYTES} bytes"),
-            },
-        ));
-    }
+    crate::error::check_size(text.len(), MAX_CSV_BYTES, "csv")?;
     // Column index of x, y, z, qw, qx, qy, qz, and how many fields a line must have.
     let mut columns: Option<([usize; 7], usize)> = None;
     // Column index of the key times and velocities, when the header names them.

@@ -18,6 +18,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, ErrorKind};
 use crate::pose::Pose;
+use crate::subdivision::Subdivision;
 use crate::timing::Timing;
 
 /// Largest motion-document text accepted by [`MotionDocument::from_json`]: 16 MiB (about 150 000
@@ -166,6 +167,17 @@ impl MotionDocument {
         )
     }
 
+    /// Everything that can make this document unusable with `subdivision`: the options'
+    /// combination ([`Subdivision::validate`]), the memory guard, which also refuses fewer than
+    /// 2 poses ([`Subdivision::output_len`]), and the key timing ([`MotionDocument::timing`]).
+    /// The JavaScript and Python motions keep every state they store valid by this check.
+    pub fn check_with(&self, subdivision: &Subdivision) -> Result<(), Error> {
+        subdivision.validate()?;
+        subdivision.output_len(self.poses.len(), self.closed)?;
+        self.timing()?;
+        Ok(())
+    }
+
     /// Sets the key times and velocities after checking them against the poses (see
     /// [`MotionDocument::timing`]); on an error the document is unchanged.
     pub fn set_timing(
@@ -241,15 +253,7 @@ impl MotionDocument {
     /// errors name the element (`poses[3].rotation: zero quaternion`).
     #[cfg(feature = "json")]
     pub fn from_json(text: &str) -> Result<MotionDocument, Error> {
-        if text.len() > MAX_DOCUMENT_BYTES {
-            return Err(Error::new(
-                "document",
-                ErrorKind::OutOfRange {
-                    value: format!("{} bytes", text.len()),
-                    expected: format!("at most {MAX_DOCUMENT_BYTES} bytes"),
-                },
-            ));
-        }
+        crate::error::check_size(text.len(), MAX_DOCUMENT_BYTES, "document")?;
         let raw: RawDocument = serde_json::from_str(text).map_err(|e| {
             Error::new(
                 String::new(),

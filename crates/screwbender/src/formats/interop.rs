@@ -95,6 +95,34 @@ impl Default for ExportSettings<'_> {
     }
 }
 
+/// The object an export draws when the caller gives none: for a document named after a
+/// preset, the preset's object ([`Mesh::for_preset`]) and, when the preset has one shape per
+/// control pose and the document still has that many poses, its morph
+/// ([`PipMorph::for_preset`], which [`ExportSettings::morph`] draws instead of the mesh).
+///
+/// The command line, the Python package and the JavaScript API all take their default object
+/// from here, so the three exports of one document draw the same thing.
+#[derive(Clone, Debug, Default)]
+pub struct PresetObject {
+    /// The preset's object; `None` when the document is not named after a preset.
+    pub mesh: Option<Mesh>,
+    /// The preset's morph; `None` when it has none or the poses no longer match its shapes.
+    pub morph: Option<PipMorph>,
+}
+
+impl PresetObject {
+    /// The preset object of `doc` (both parts `None` when its name is no preset's).
+    pub fn of(doc: &MotionDocument) -> PresetObject {
+        let Some(name) = doc.name.as_deref() else {
+            return PresetObject::default();
+        };
+        PresetObject {
+            mesh: crate::presets::preset(name).map(|scene| Mesh::for_preset(&scene)),
+            morph: PipMorph::for_preset(name, doc.poses.len(), doc.closed),
+        }
+    }
+}
+
 /// The result of [`export_motion`].
 #[derive(Clone, Debug, PartialEq)]
 pub struct ExportedMotion {
@@ -297,15 +325,7 @@ pub fn import_motion_file(
     resolve: &mut dyn FnMut(&str) -> Result<Vec<u8>, Error>,
     selection: &NodeSelection,
 ) -> Result<MotionDocument, Error> {
-    if bytes.len() > MAX_GLTF_BYTES {
-        return Err(Error::new(
-            String::new(),
-            ErrorKind::OutOfRange {
-                value: format!("{} bytes", bytes.len()),
-                expected: format!("at most {MAX_GLTF_BYTES} bytes"),
-            },
-        ));
-    }
+    crate::error::check_size(bytes.len(), MAX_GLTF_BYTES, "")?;
     let kind = ImportKind::detect(file_name, bytes).ok_or_else(|| {
         Error::new(
             String::new(),

@@ -1,4 +1,5 @@
-//! Triangle meshes of the scene objects ([`Shape`]) and of user OBJ files (f64, no GPU).
+//! Triangle meshes of the scene objects ([`Shape`]) (f64, no GPU). User files become meshes in
+//! `formats` ([`Mesh::from_obj`], and [`Mesh::from_gltf`] with the feature `gltf`).
 //!
 //! A [`Mesh`] is an indexed triangle list in the object's local frame, counter-clockwise seen
 //! from outside, with one normal per vertex. Flat faces (boxes, prisms, caps) get their own
@@ -13,13 +14,6 @@ use crate::presets::{self, Shape};
 
 /// Segments around the circumference of cylinders, cones and spheres.
 pub const ROUND_SEGMENTS: u32 = 32;
-
-/// The largest OBJ text [`Mesh::from_obj`] accepts, in bytes (16 MiB).
-pub const MAX_OBJ_BYTES: usize = 16 << 20;
-
-/// The most triangles [`Mesh::from_obj`] accepts (the playground draws the mesh up to 10,000
-/// times per frame).
-pub const MAX_OBJ_TRIANGLES: usize = 200_000;
 
 /// Normals shorter than this (degenerate triangles) are replaced by a fallback direction.
 pub const NORMAL_EPSILON: f64 = 1e-12;
@@ -69,7 +63,7 @@ impl Mesh {
 
     /// Adds a flat convex polygon, vertices counter-clockwise seen from the side its normal
     /// points to.
-    fn flat_polygon(&mut self, pts: &[DVec3]) {
+    pub(crate) fn flat_polygon(&mut self, pts: &[DVec3]) {
         let n = face_normal(pts);
         let base = self.positions.len() as u32;
         for p in pts {
@@ -333,95 +327,6 @@ impl Mesh {
         }
     }
 
-    /// Parses a Wavefront OBJ text: `v` and `f` lines (polygons are fanned into triangles,
-    /// negative indices count from the end, `v/vt/vn` forms accepted); everything else is
-    /// ignored. Normals are recomputed: flat per face (each face gets its own vertices).
-    ///
-    /// Errors ([`ErrorKind::Parse`] / [`ErrorKind::OutOfRange`], path `obj` or `obj line N`): text over
-    /// [`MAX_OBJ_BYTES`], more than [`MAX_OBJ_TRIANGLES`] triangles, malformed or non-finite
-    /// numbers, out-of-range indices, no faces.
-    pub fn from_obj(text: &str) -> Result<Mesh, Error> {
-        if text.len() > MAX_OBJ_BYTES {
-            return Err(Error::new(
-                "obj",
-                ErrorKind::OutOfRange {
-                    value: format!("{} bytes", text.len()),
-                    expected: format!("at most {MAX_OBJ_BYTES} bytes"),
-                },
-            ));
-        }
-        let parse_err = |line: usize, message: String| {
-            Error::new(format!("obj line {line}"), ErrorKind::Parse { message })
-        };
-        let mut verts: Vec<DVec3> = Vec::new();
-        let mut mesh = Mesh::default();
-        for (no, raw) in text.lines().enumerate() {
-            let line = no + 1;
-            let mut words = raw.split_whitespace();
-            match words.next() {
-                Some("v") => {
-                    let mut c = [0.0; 3];
-                    for slot in &mut c {
-                        let w = words
-                            .next()
-                            .ok_or_else(|| parse_err(line, "vertex needs 3 coordinates".into()))?;
-                        *slot = w
-                            .parse::<f64>()
-                            .map_err(|e| parse_err(line, format!("bad number {w:?}: {e}")))?;
-                        if !slot.is_finite() {
-                            return Err(Error::new(
-                                format!("obj line {line}"),
-                                ErrorKind::NonFinite,
-                            ));
-                        }
-                    }
-                    verts.push(DVec3::from_array(c));
-                }
-                Some("f") => {
-                    let mut face = Vec::new();
-                    for w in words {
-                        let first = w.split('/').next().unwrap_or("");
-                        let i: i64 = first
-                            .parse()
-                            .map_err(|e| parse_err(line, format!("bad index {w:?}: {e}")))?;
-                        let n = verts.len() as i64;
-                        let k = if i < 0 { n + i } else { i - 1 };
-                        if i == 0 || k < 0 || k >= n {
-                            return Err(parse_err(
-                                line,
-                                format!("vertex index {i} out of range (1..={n} or negative)"),
-                            ));
-                        }
-                        face.push(verts[k as usize]);
-                    }
-                    if face.len() < 3 {
-                        return Err(parse_err(line, "a face needs at least 3 vertices".into()));
-                    }
-                    if mesh.triangle_count() + face.len() - 2 > MAX_OBJ_TRIANGLES {
-                        return Err(Error::new(
-                            "obj",
-                            ErrorKind::OutOfRange {
-                                value: "more triangles".into(),
-                                expected: format!("at most {MAX_OBJ_TRIANGLES} triangles"),
-                            },
-                        ));
-                    }
-                    mesh.flat_polygon(&face);
-                }
-                _ => {}
-            }
-        }
-        if mesh.indices.is_empty() {
-            return Err(Error::new(
-                "obj",
-                ErrorKind::Parse {
-                    message: "no faces (`f` lines) found".into(),
-                },
-            ));
-        }
-        Ok(mesh)
-    }
-
     /// The mesh scaled and moved so its bounding box is centred on the origin with largest side
     /// `size` (used for imported meshes, whose units are unknown).
     pub fn normalized(mut self, size: f64) -> Mesh {
@@ -453,198 +358,6 @@ fn face_normal(pts: &[DVec3]) -> DVec3 {
     } else {
         DVec3::Z
     }
-}
-
-#[cfg(feature = "gltf")]
-/// The largest glTF input [`Mesh::from_gltf`] accepts, in bytes (32 MiB).
-pub const MAX_GLTF_MESH_BYTES: usize = 32 << 20;
-
-impl Mesh {
-    /// Reads the triangles of every mesh primitive of a glTF 2.0 asset: binary `.glb`, or JSON
-    /// `.gltf` whose buffers are embedded as base64 `data:` URIs (external files cannot be
-    /// fetched). Uses `POSITION` (float VEC3) and the optional indices (unsigned byte, short or
-    /// int); node transforms, materials and non-triangle primitives are ignored. Normals are
-    /// recomputed flat, as for [`Mesh::from_obj`].
-    ///
-    /// Errors ([`ErrorKind::Parse`], path `gltf…`): over [`MAX_GLTF_MESH_BYTES`], more than
-    /// [`MAX_OBJ_TRIANGLES`] triangles, malformed JSON or GLB framing, accessors out of their
-    /// buffers, non-finite positions, indices out of range, no triangles.
-    #[cfg(feature = "gltf")]
-    pub fn from_gltf(bytes: &[u8]) -> Result<Mesh, Error> {
-        let err = |at: &str, message: String| {
-            Error::new(format!("gltf{at}"), ErrorKind::Parse { message })
-        };
-        if bytes.len() > MAX_GLTF_MESH_BYTES {
-            return Err(Error::new(
-                "gltf",
-                ErrorKind::OutOfRange {
-                    value: format!("{} bytes", bytes.len()),
-                    expected: format!("at most {MAX_GLTF_MESH_BYTES} bytes"),
-                },
-            ));
-        }
-        // GLB framing: header, JSON chunk, optional BIN chunk (shared with the pose importer).
-        let (json_bytes, bin): (&[u8], Option<&[u8]>) = if crate::formats::gltf::glb::is_glb(bytes)
-        {
-            crate::formats::gltf::glb::split_glb(bytes)?
-        } else {
-            (bytes, None)
-        };
-        let doc: serde_json::Value = serde_json::from_slice(json_bytes)
-            .map_err(|e| err("", format!("invalid JSON: {e}")))?;
-        let list = |key: &str| {
-            doc.get(key)
-                .and_then(|v| v.as_array())
-                .cloned()
-                .unwrap_or_default()
-        };
-        let buffers: Vec<Vec<u8>> = list("buffers")
-            .iter()
-            .enumerate()
-            .map(|(i, b)| match b.get("uri").and_then(|u| u.as_str()) {
-                None => bin
-                    .map(|b| b.to_vec())
-                    .ok_or_else(|| err(&format!(".buffers[{i}]"), "no GLB binary chunk".into())),
-                Some(uri) => {
-                    let data = uri
-                        .strip_prefix("data:")
-                        .and_then(|u| u.split_once(";base64,"))
-                        .map(|(_, d)| d)
-                        .ok_or_else(|| {
-                            err(
-                                &format!(".buffers[{i}].uri"),
-                                "only embedded base64 data: URIs are supported (use .glb)".into(),
-                            )
-                        })?;
-                    base64_decode(data)
-                        .ok_or_else(|| err(&format!(".buffers[{i}].uri"), "invalid base64".into()))
-                }
-            })
-            .collect::<Result<_, _>>()?;
-        let views = list("bufferViews");
-        let accessors = list("accessors");
-        let num =
-            |v: &serde_json::Value, k: &str| v.get(k).and_then(|x| x.as_u64()).map(|x| x as usize);
-        // Reads accessor `a` as `comps`-component rows of u32 or f64.
-        let read = |a: usize, at: &str| -> Result<(Vec<f64>, usize), Error> {
-            let acc = accessors
-                .get(a)
-                .ok_or_else(|| err(at, format!("accessor {a} missing")))?;
-            let count =
-                num(acc, "count").ok_or_else(|| err(at, "accessor without count".into()))?;
-            let ctype = num(acc, "componentType").unwrap_or(0);
-            let comps = match acc.get("type").and_then(|t| t.as_str()) {
-                Some("SCALAR") => 1,
-                Some("VEC3") => 3,
-                t => return Err(err(at, format!("unsupported accessor type {t:?}"))),
-            };
-            let size = match ctype {
-                5121 => 1,
-                5123 => 2,
-                5125 | 5126 => 4,
-                c => return Err(err(at, format!("unsupported component type {c}"))),
-            };
-            let view = views
-                .get(
-                    num(acc, "bufferView")
-                        .ok_or_else(|| err(at, "sparse or empty accessor".into()))?,
-                )
-                .ok_or_else(|| err(at, "bufferView missing".into()))?;
-            let buffer = buffers
-                .get(num(view, "buffer").unwrap_or(usize::MAX))
-                .ok_or_else(|| err(at, "buffer missing".into()))?;
-            let start = num(view, "byteOffset").unwrap_or(0) + num(acc, "byteOffset").unwrap_or(0);
-            let stride = num(view, "byteStride").unwrap_or(size * comps);
-            let mut out = Vec::with_capacity(count * comps);
-            for i in 0..count {
-                for c in 0..comps {
-                    let o = start + i * stride + c * size;
-                    let b = buffer
-                        .get(o..o + size)
-                        .ok_or_else(|| err(at, "accessor reads past its buffer".into()))?;
-                    out.push(match ctype {
-                        5121 => b[0] as f64,
-                        5123 => u16::from_le_bytes([b[0], b[1]]) as f64,
-                        5125 => u32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64,
-                        _ => f32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64,
-                    });
-                }
-            }
-            Ok((out, count))
-        };
-        let mut mesh = Mesh::default();
-        for (m, me) in list("meshes").iter().enumerate() {
-            let prims = me
-                .get("primitives")
-                .and_then(|p| p.as_array())
-                .cloned()
-                .unwrap_or_default();
-            for (p, prim) in prims.iter().enumerate() {
-                let at = format!(".meshes[{m}].primitives[{p}]");
-                if num(prim, "mode").unwrap_or(4) != 4 {
-                    continue;
-                }
-                let pos = prim
-                    .get("attributes")
-                    .and_then(|a| num(a, "POSITION"))
-                    .ok_or_else(|| err(&at, "no POSITION attribute".into()))?;
-                let (xyz, n) = read(pos, &at)?;
-                if xyz.iter().any(|x| !x.is_finite()) {
-                    return Err(Error::new(format!("gltf{at}"), ErrorKind::NonFinite));
-                }
-                let indices: Vec<usize> = match num(prim, "indices") {
-                    Some(i) => read(i, &at)?.0.into_iter().map(|x| x as usize).collect(),
-                    None => (0..n).collect(),
-                };
-                if mesh.triangle_count() + indices.len() / 3 > MAX_OBJ_TRIANGLES {
-                    return Err(Error::new(
-                        "gltf",
-                        ErrorKind::OutOfRange {
-                            value: "more triangles".into(),
-                            expected: format!("at most {MAX_OBJ_TRIANGLES} triangles"),
-                        },
-                    ));
-                }
-                for t in indices.chunks_exact(3) {
-                    if let Some(&bad) = t.iter().find(|&&i| i >= n) {
-                        return Err(err(&at, format!("index {bad} out of range (< {n})")));
-                    }
-                    let v = |i: usize| DVec3::new(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
-                    mesh.flat_polygon(&[v(t[0]), v(t[1]), v(t[2])]);
-                }
-            }
-        }
-        if mesh.indices.is_empty() {
-            return Err(err("", "no triangles found".into()));
-        }
-        Ok(mesh)
-    }
-}
-
-/// Decodes standard base64 (padding optional); `None` on an invalid character.
-#[cfg(feature = "gltf")]
-fn base64_decode(text: &str) -> Option<Vec<u8>> {
-    let mut out = Vec::with_capacity(text.len() * 3 / 4);
-    let (mut acc, mut bits) = (0u32, 0u32);
-    for c in text.bytes() {
-        let v = match c {
-            b'A'..=b'Z' => c - b'A',
-            b'a'..=b'z' => c - b'a' + 26,
-            b'0'..=b'9' => c - b'0' + 52,
-            b'+' | b'-' => 62,
-            b'/' | b'_' => 63,
-            b'=' | b'\n' | b'\r' => continue,
-            _ => return None,
-        } as u32;
-        acc = (acc << 6) | v;
-        bits += 6;
-        if bits >= 8 {
-            bits -= 8;
-            out.push((acc >> bits) as u8);
-            acc &= (1 << bits) - 1;
-        }
-    }
-    Some(out)
 }
 
 /// The side of the cube the Stanford bunny is scaled to fit (`Mesh::bunny`, feature `bunny`), as the page

@@ -517,7 +517,7 @@ fn extend_open_into<T: Blend>(input: &[T], k: usize, e: &mut Vec<T>) {
 #[inline(never)]
 fn direct_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>, scratch: &mut Scratch<T>) {
     let n = p.len();
-    let s = scheme.j_parameter();
+    let s = scheme.s();
     let prev = |i: usize| if i == 0 { n - 1 } else { i - 1 };
     let next = |i: usize| if i + 1 == n { 0 } else { i + 1 };
     let bspline = scheme == Scheme::BSpline;
@@ -601,7 +601,7 @@ fn split_tweak_step<T: Blend>(p: &[T], scheme: Scheme, out: &mut Vec<T>, scratch
     let split: &[T] = split;
     // (old-pose weight, new-pose weight): how far each tweak goes. The J_s family has no
     // split-tweak form (options are validated before a step runs); its named members map here.
-    let s = scheme.j_parameter();
+    let s = scheme.s();
     let (old_w, new_w) = if s == 1.0 {
         (Some(0.5), None)
     } else if s == 0.0 {

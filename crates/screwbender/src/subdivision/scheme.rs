@@ -44,8 +44,8 @@ impl Scheme {
         }
     }
 
-    /// The J_s parameter of this scheme: `1` B-spline, `0` 4-point, `½` Jarek.
-    pub fn j_parameter(&self) -> f64 {
+    /// The J_s parameter `s` of this scheme: `1` B-spline, `0` 4-point, `½` Jarek.
+    pub fn s(&self) -> f64 {
         match *self {
             Scheme::BSpline => 1.0,
             Scheme::FourPoint => 0.0,
@@ -54,9 +54,15 @@ impl Scheme {
         }
     }
 
+    /// The J_s parameter under its former name.
+    #[deprecated(note = "use `Scheme::s`: the J_s parameter is called `s` everywhere")]
+    pub fn j_parameter(&self) -> f64 {
+        self.s()
+    }
+
     /// Whether the refined motion passes through the control poses (`Q_{2i} = P_i`).
     pub fn interpolates(&self) -> bool {
-        self.j_parameter() == 0.0
+        self.s() == 0.0
     }
 }
 

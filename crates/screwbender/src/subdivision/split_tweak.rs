@@ -143,7 +143,7 @@ pub fn split_tweak_step<T: Blend>(
 /// `s(a, w, b)`, `s(d, w, c)` (`w = 1 + (1 − s)/8`: 9/8 4-point, 17/16 Jarek).
 fn direct_helpers<T: Blend>(p: &[T], scheme: Scheme) -> Vec<(usize, T)> {
     let n = p.len();
-    let s = scheme.j_parameter();
+    let s = scheme.s();
     let w = 1.0 + (1.0 - s) / 8.0;
     let mut out = Vec::new();
     for i in 0..n {

@@ -76,7 +76,7 @@ impl Subdivision {
         }
         // The rules that tweak new poses: every scheme but the B-spline (which tweaks old poses
         // only, by screws across one span).
-        if self.scheme.j_parameter() == 1.0 {
+        if self.scheme.s() == 1.0 {
             return Vec::new();
         }
         let spans = if closed { n } else { n - 1 };

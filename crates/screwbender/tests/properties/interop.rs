@@ -342,3 +342,33 @@ fn corrupted_bytes_never_panic() {
         let _ = import_glb(&bad[..cut], &NodeSelection::Auto);
     }
 }
+
+/// The default object of an export: the preset's mesh for a document named after a preset, its
+/// morph only while the poses still match the preset's shapes, nothing for an unnamed document.
+#[test]
+fn preset_object_follows_the_document() {
+    use screwbender::{MotionDocument, PresetObject};
+    let named = |id: &str, drop_last: bool| {
+        let s = presets::preset(id).unwrap();
+        let mut poses = s.poses.clone();
+        if drop_last {
+            poses.pop();
+        }
+        let mut doc = MotionDocument::new(poses, s.closed);
+        doc.name = Some(id.into());
+        doc
+    };
+    let morphing = PresetObject::of(&named("pip_morph5", false));
+    let shape = Mesh::from_shape(&presets::preset("pip_morph5").unwrap().shape);
+    assert_eq!(morphing.mesh.as_ref(), Some(&shape));
+    let morph = morphing.morph.expect("pip_morph5 has one shape per pose");
+    assert!(morph.radius() > 0.0);
+    let edited = PresetObject::of(&named("pip_morph5", true));
+    assert!(edited.mesh.is_some() && edited.morph.is_none());
+    let rigid = PresetObject::of(&named("pendulum", false));
+    assert!(rigid.mesh.is_some() && rigid.morph.is_none());
+    let mut unnamed = named("pendulum", false);
+    unnamed.name = None;
+    let none = PresetObject::of(&unnamed);
+    assert!(none.mesh.is_none() && none.morph.is_none());
+}

@@ -169,7 +169,7 @@ fn every_rule_reduces_to_the_point_rule() {
             .apply(&pts, true)
             .unwrap();
         for i in 0..n {
-            let (old, new) = formula(scheme.j_parameter(), i);
+            let (old, new) = formula(scheme.s(), i);
             for (j, want) in [(2 * i, old), (2 * i + 1, new)] {
                 assert!(
                     (q[j].origin - want).length() < 1e-13,

@@ -1,11 +1,13 @@
 //! glTF 2.0: the GLB container (always, so meshes and imports can recognise it), and with the
-//! feature `gltf` the motion export and the control-pose import.
+//! feature `gltf` the motion export, the control-pose import and meshes of user objects.
 
 #[cfg(feature = "gltf")]
 pub(crate) mod export;
 pub(crate) mod glb;
 #[cfg(feature = "gltf")]
 pub(crate) mod import;
+#[cfg(feature = "gltf")]
+pub(crate) mod mesh;
 #[cfg(feature = "gltf")]
 pub(crate) mod names;
 
