@@ -104,6 +104,7 @@ app_package_json sb-plain-smoke >"$work/plain/package.json"
 smoke_files "$work/plain"
 cp tests/js/install/plain/index.html "$work/plain/"
 cp tests/js/install/browser-main.js "$work/plain/main.js"
+cp tests/js/install/motion.csv "$work/plain/"
 node tests/js/browser-smoke.mjs --serve "$work/plain" --label "plain page"
 
 header "Vite $VITE_VERSION app"
@@ -117,6 +118,8 @@ cp tests/js/install/vite/index.html tests/js/install/vite/vite.config.js \
   tests/js/install/types-check.ts tests/js/install/tsconfig.json \
   tests/js/install/node-types-check.ts tests/js/install/tsconfig.node.json "$work/vite/"
 cp tests/js/install/browser-main.js "$work/vite/main.js"
+mkdir "$work/vite/public"
+cp tests/js/install/motion.csv "$work/vite/public/"
 (cd "$work/vite" && timed "tsc --strict (types-check.ts)" ./node_modules/.bin/tsc -p tsconfig.json)
 (cd "$work/vite" && timed "tsc --strict, Node only (node-types-check.ts)" \
   ./node_modules/.bin/tsc -p tsconfig.node.json)
