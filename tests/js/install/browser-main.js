@@ -22,83 +22,70 @@ async function main() {
 }
 main();
 
-/** Mounts one figure through `screwbender/viewer` and reports its backend and message. */
-async function viewerCheck() {
+/**
+ * Mounts one figure through `screwbender/viewer` with `options`, waits until it is ready, and
+ * reports `verify(fig, state)` (`{ ok, detail }`; `state` has the figure's `message`, or null
+ * when none shows, and its `errors`), then removes the figure. A throw fails the check named
+ * `name`.
+ */
+async function figureCheck(name, options, verify) {
   try {
     const { mount } = await import('screwbender/viewer');
     const el = document.createElement('div');
     el.style.width = '400px';
     el.style.height = '250px';
     document.body.append(el);
-    const events = [];
-    el.addEventListener('error', (e) => events.push(e.detail.message));
-    const fig = mount(el, { scene: 'l_cycle_rotated', levels: 3 });
+    const errors = [];
+    el.addEventListener('error', (e) => errors.push(e.detail.message));
+    const fig = mount(el, options);
     await fig.ready;
     const msg = el.shadowRoot.querySelector('.msg');
-    const ok = fig.backend !== null && msg.hidden && events.length === 0 && fig.document?.poses?.length > 0;
-    const detail = `backend ${fig.backend}; ${msg.hidden ? 'no message' : msg.textContent}`;
+    const { ok, detail } = await verify(fig, { message: msg.hidden ? null : msg.textContent, errors });
     fig.destroy();
     el.remove();
-    return { name: 'viewer: mount a figure', ok, detail };
+    return { name, ok, detail };
   } catch (e) {
-    return { name: 'viewer: mount a figure', ok: false, detail: String(e && e.stack ? e.stack : e) };
+    return { name, ok: false, detail: String(e && e.stack ? e.stack : e) };
   }
 }
 
+/** What a check's detail says of the figure's message and error events. */
+const said = ({ message, errors }) => `${message ?? 'no message'}; ${errors.length} error events`;
+/** No message shown and no error event fired. */
+const quiet = ({ message, errors }) => message === null && errors.length === 0;
+
+/** One figure of a preset: it starts on a backend and shows no message. */
+const viewerCheck = () =>
+  figureCheck('viewer: mount a figure', { scene: 'l_cycle_rotated', levels: 3 }, (fig, state) => ({
+    ok: fig.backend !== null && quiet(state) && fig.document?.poses?.length > 0,
+    detail: `backend ${fig.backend}; ${said(state)}`,
+  }));
+
 /** A bunny6 figure: the packaged Stanford bunny (viewer/vendor/bunny.obj) must load and be drawn. */
-async function bunnyCheck() {
-  const name = 'viewer: the bunny6 preset shows the packaged bunny';
-  try {
-    const { mount } = await import('screwbender/viewer');
-    const el = document.createElement('div');
-    el.style.width = '400px';
-    el.style.height = '250px';
-    document.body.append(el);
-    const events = [];
-    el.addEventListener('error', (e) => events.push(e.detail.message));
-    const fig = mount(el, { scene: 'bunny6', levels: 3 });
-    await fig.ready;
+const bunnyCheck = () =>
+  figureCheck('viewer: the bunny6 preset shows the packaged bunny', { scene: 'bunny6', levels: 3 }, async (fig, state) => {
     // drawing.js fetches the mesh when the preset is shown; the promise settles once it is
     // uploaded (or, on failure, once the wedge stays in its place).
     const drawing = fig.viewer.drawing;
     await drawing.bunnyLoad;
     const triangles = drawing.bunnyTriangles ?? 0;
-    const msg = el.shadowRoot.querySelector('.msg');
-    const ok = typeof drawing.bunny === 'string' && triangles > 1000 && msg.hidden && events.length === 0;
-    const detail = `bunny ${typeof drawing.bunny === 'string' ? 'loaded' : 'NOT loaded'}, ${triangles} triangles; ` +
-      `${msg.hidden ? 'no message' : msg.textContent}; ${events.length} error events`;
-    fig.destroy();
-    el.remove();
-    return { name, ok, detail };
-  } catch (e) {
-    return { name, ok: false, detail: String(e && e.stack ? e.stack : e) };
-  }
-}
+    const loaded = typeof drawing.bunny === 'string';
+    return {
+      ok: loaded && triangles > 1000 && quiet(state),
+      detail: `bunny ${loaded ? 'loaded' : 'NOT loaded'}, ${triangles} triangles; ${said(state)}`,
+    };
+  });
 
 /**
  * A figure whose `src` is a CSV file (motion.csv beside the page): the WebGPU renderer module has
  * no file import, so the figure reads the file through the package's files module.
  */
-async function csvCheck() {
-  const name = 'viewer: a CSV src is read through the files module';
-  try {
-    const { mount } = await import('screwbender/viewer');
-    const el = document.createElement('div');
-    el.style.width = '400px';
-    el.style.height = '250px';
-    document.body.append(el);
-    const events = [];
-    el.addEventListener('error', (e) => events.push(e.detail.message));
-    const fig = mount(el, { src: new URL('motion.csv', document.baseURI).href, levels: 3 });
-    await fig.ready;
-    const poses = fig.document?.poses ?? [];
-    const msg = el.shadowRoot.querySelector('.msg');
-    const ok = poses.length === 4 && Math.abs(poses[1].origin[0] - 2) < 1e-12 && msg.hidden && events.length === 0;
-    const detail = `${poses.length} poses; ${msg.hidden ? 'no message' : msg.textContent}; ${events.length} error events`;
-    fig.destroy();
-    el.remove();
-    return { name, ok, detail };
-  } catch (e) {
-    return { name, ok: false, detail: String(e && e.stack ? e.stack : e) };
-  }
-}
+const csvCheck = () =>
+  figureCheck('viewer: a CSV src is read through the files module',
+    { src: new URL('motion.csv', document.baseURI).href, levels: 3 }, (fig, state) => {
+      const poses = fig.document?.poses ?? [];
+      return {
+        ok: poses.length === 4 && Math.abs(poses[1].origin[0] - 2) < 1e-12 && quiet(state),
+        detail: `${poses.length} poses; ${said(state)}`,
+      };
+    });
