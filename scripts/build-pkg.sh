@@ -113,6 +113,43 @@ WASM_OPT_FEATURES=(--enable-bulk-memory --enable-reference-types --enable-nontra
 # Skip wasm-bindgen and wasm-opt (~20 s) when neither the module nor the packaging changed.
 input=$TARGET_DIR/$WASM_TARGET/wasm-release/screwbender_web.wasm
 stamp=$(cat "$input" npm/* scripts/build-pkg.sh Cargo.lock | sha256sum | cut -d' ' -f1)
+
+# wasm_module FEATURES OUT_DIR OPT [node]: the web crate built with FEATURES into OUT_DIR by
+# scripts/wasm-module.sh (which keeps its wasm-bindgen and wasm-opt output, shared with the
+# playground's build, scripts/serve.sh). With `node`, a module that Node and a Node-only
+# TypeScript project use directly: types without the DOM lib and the synchronous Node entry node.js.
+wasm_module() {
+  local features=$1 out=$2 opt=$3 node=${4:-}
+  "$REPO_ROOT/scripts/wasm-module.sh" "$features" "$out" "$opt"
+  if [[ $node == node ]]; then
+    node_types "$out"
+    cp npm/node.js "$out/node.js"
+  fi
+}
+
+# The other modules are built together, after the main module's: wasm-module.sh runs their cargo
+# builds one at a time, and each module's wasm-opt (one core) runs beside the next one's build.
+# Each job's log is printed whole when all are done; a failed job fails the build.
+module_logs=$(mktemp -d)
+module_jobs=()
+start_module() { # LABEL FEATURES OUT_DIR OPT [node]
+  local label=$1
+  shift
+  wasm_module "$@" >"$module_logs/$label.log" 2>&1 &
+  module_jobs+=("$label:$!")
+}
+wait_modules() {
+  local job rc failed=0
+  for job in "${module_jobs[@]}"; do
+    rc=0
+    wait "${job#*:}" || rc=$?
+    cat "$module_logs/${job%%:*}.log" >&2
+    ((rc == 0)) || { log "module ${job%%:*}: FAILED (exit $rc)"; failed=1; }
+  done
+  module_jobs=()
+  ((failed == 0)) || die "a wasm module failed to build"
+}
+
 if [[ -f $PKG_DIR/.build-stamp && $(cat "$PKG_DIR/.build-stamp") == "$stamp" &&
   -f $PKG_DIR/screwbender_bg.wasm ]]; then
   log "pkg/ is up to date with the wasm module and npm/: not regenerating"
@@ -136,34 +173,25 @@ else
   node_types "$PKG_DIR"
 fi
 
-# wasm_module FEATURES OUT_DIR OPT [node]: the web crate built with FEATURES into OUT_DIR by
-# scripts/wasm-module.sh (which keeps its wasm-bindgen and wasm-opt output, shared with the
-# playground's build, scripts/serve.sh). With `node`, a module that Node and a Node-only
-# TypeScript project use directly: types without the DOM lib and the synchronous Node entry node.js.
-wasm_module() {
-  local features=$1 out=$2 opt=$3 node=${4:-}
-  "$REPO_ROOT/scripts/wasm-module.sh" "$features" "$out" "$opt"
-  if [[ $node == node ]]; then
-    node_types "$out"
-    cp npm/node.js "$out/node.js"
-  fi
-}
-
+# The viewer's renderer modules (the WebGL2 one, the longest build, first). Without `files` for
+# WebGPU: glTF's document model and the JSON parsing of its structs are a large part of a module
+# that every figure downloads; a figure with a .glb or .csv `src` fetches full/.
+if [[ ${VIEWER:-1} == 1 ]]; then
+  start_module viewer-gl webgl,files "$PKG_DIR/viewer/pkg-gl" -Oz
+  start_module viewer webgpu "$PKG_DIR/viewer/pkg" -Oz
+fi
 # The `screwbender/full` entry (full/): the math module plus file export and import (glTF, CSV),
 # the comparison methods, the three.js keyframe tracks and the teaching views' functions (no
 # renderer), for developers who want those without the playground. A module of its own, so that
 # the main entry stays light; -Os like the main module (speed matters more than a few KB here).
 if [[ ${FULL:-1} == 1 ]]; then
-  wasm_module export,methods,tracks,teaching "$PKG_DIR/full" -Os node
+  start_module full export,methods,tracks,teaching "$PKG_DIR/full" -Os node
 fi
+wait_modules
 
 if [[ ${VIEWER:-1} == 1 ]]; then
   viewer=$PKG_DIR/viewer
   rm -rf "$viewer/js" "$viewer/css"
-  # Without `files`: glTF's document model and the JSON parsing of its structs are a large part
-  # of a module that every figure downloads; a figure with a .glb or .csv `src` fetches full/.
-  wasm_module webgpu "$viewer/pkg" -Oz
-  wasm_module webgl,files "$viewer/pkg-gl" -Oz
   header "viewer: sources"
   mkdir -p "$viewer/js/element" "$viewer/js/view" "$viewer/js/editor" "$viewer/css"
   # The element's files; modules.js is replaced below.

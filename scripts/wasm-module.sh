@@ -38,14 +38,27 @@ for registry in "${CARGO_HOME:-$HOME/.cargo}"/registry/src/*/; do
   [[ -d $registry ]] && remap+=("\"--remap-path-prefix=$registry=\"")
 done
 
-header "$(basename "$out"): cargo build (wasm32, wasm-release${features:+, features $features})"
+# Several of these may run at once (scripts/build-pkg.sh starts its modules together, so that one
+# module's wasm-opt, which uses one core, runs beside the next module's cargo build). Each build
+# writes the same output file, so the build and the copy of its output hold one lock; what
+# follows works on the private copy.
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+input=$work/screwbender_web.wasm
 feature_args=()
 [[ -n $features ]] && feature_args=(--features "$features")
-timed "cargo build" cargo build -p screwbender-web --lib --profile wasm-release --target "$WASM_TARGET" \
-  --config "target.$WASM_TARGET.rustflags=[$(IFS=,; echo "${remap[*]}")]" "${feature_args[@]}"
-input=$target_dir/$WASM_TARGET/wasm-release/screwbender_web.wasm
+build_and_copy() {
+  header "$(basename "$out"): cargo build (wasm32, wasm-release${features:+, features $features})"
+  timed "cargo build" cargo build -p screwbender-web --lib --profile wasm-release --target "$WASM_TARGET" \
+    --config "target.$WASM_TARGET.rustflags=[$(IFS=,; echo "${remap[*]}")]" "${feature_args[@]}"
+  cp "$target_dir/$WASM_TARGET/wasm-release/screwbender_web.wasm" "$input"
+}
+mkdir -p "$target_dir"
+(
+  flock 9
+  build_and_copy
+) 9>"$target_dir/wasm-module.lock"
 
-# The features rustc enables by default for wasm32 (wasm-opt must accept what the modules use).
 WASM_OPT_FEATURES=(--enable-bulk-memory --enable-reference-types --enable-nontrapping-float-to-int
   --enable-sign-ext --enable-mutable-globals --enable-multivalue --enable-simd)
 

@@ -166,7 +166,7 @@ test('the multiple-choice answers agree with what the wasm API measures', async 
     const jarek = wasm.Motion.fromPreset('circle4');
     jarek.setScheme('jarek');
     return {
-      frameDep, radii, tweaked: Array.from(st.tweaked), jarekJ: jarek.options().j,
+      frameDep, radii, tweaked: Array.from(st.tweaked), jarekS: jarek.options().s,
       vj: Object.fromEntries(Object.entries(rows).map(([k, v]) => [k, v.velocity_jump])),
       fd: Object.fromEntries(Object.entries(rows).map(([k, v]) => [k, v.frame_dependence])),
       jarekInterp: rows.jarek.interpolation_error,
@@ -180,7 +180,7 @@ test('the multiple-choice answers agree with what the wasm API measures', async 
   // Lesson 3: the 4-point tweak moves exactly the inserted midpoints.
   r.tweaked.forEach((t, k) => assert.equal(t, k % 2, `slot ${k}`));
   // Lesson 4: Jarek is s = 1/2.
-  assert.equal(r.jarekJ, 0.5);
+  assert.equal(r.jarekS, 0.5);
   // Lesson 6 Q1: only SLERP jumps (by orders of magnitude); Q2: only ScrewBender is frame-independent.
   assert.ok(r.vj.slerp > 1e3 * Math.max(r.vj.decoupled, r.vj.rb, r.vj.cc1), JSON.stringify(r.vj));
   assert.ok(r.fd.jarek < 1e-12 && r.fd.slerp > 1e-2 && r.fd.decoupled > 1e-2 && r.fd.rb > 1e-2, JSON.stringify(r.fd));
