@@ -45,12 +45,22 @@ passed=0
 
 stage_names=()
 stage_secs=()
+stage_cpus=()
+clk_tck=$(getconf CLK_TCK)
+# cpu_secs: the CPU seconds (user + system) of this shell's finished children so far, from
+# /proc: with two cores, a stage whose CPU time is near twice its wall time cannot go faster by
+# running beside another one, while a stage far below it waits on something.
+cpu_secs() {
+  local -a s
+  read -r -a s </proc/$$/stat
+  echo $(((s[15] + s[16]) / clk_tck))
+}
 # summary FAILED: the per-stage wall times, then the closing count line.
 summary() {
   local i
-  header "stage times"
+  header "stage times (wall, and CPU of all processes)"
   for i in "${!stage_names[@]}"; do
-    printf '%6d s  %s\n' "${stage_secs[$i]}" "${stage_names[$i]}" >&2
+    printf '%6d s %6d cpu s  %s\n' "${stage_secs[$i]}" "${stage_cpus[$i]}" "${stage_names[$i]}" >&2
   done
   printf '%6d s  total (setup included)\n' "$SECONDS" >&2
   printf 'stages: %d passed, %d failed\n' "$passed" "$1"
@@ -58,12 +68,14 @@ summary() {
 
 # stage NAME CMD...: one announced stage; stops the whole run at the first failure.
 stage() {
-  local name=$1 start=$SECONDS rc=0
+  local name=$1 start=$SECONDS rc=0 cpu_start
+  cpu_start=$(cpu_secs)
   shift
   header "stage $((passed + 1)): $name"
   "$@" || rc=$?
   stage_names+=("$name")
   stage_secs+=($((SECONDS - start)))
+  stage_cpus+=($(($(cpu_secs) - cpu_start)))
   if ((rc != 0)); then
     log "stage '$name' FAILED (exit $rc) after $((SECONDS - start)) s"
     summary 1
