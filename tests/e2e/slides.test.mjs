@@ -280,10 +280,21 @@ test('reveal\'s print view (?print-pdf): every figure prints as a picture of its
     await page.waitForTimeout(1500);
     const pdf = await page.pdf({ width: '1000px', height: '700px', printBackground: true });
     const images = pdfImages(pdf);
-    // A figure's picture is at least a quarter of its slide's width; a blank box has no image,
-    // or one of a single colour.
-    const pictures = images.filter((i) => i.w >= 250 && (i.jpeg || i.spread === null || i.spread > 60));
-    assert.ok(pictures.length >= 5, `five figures printed as pictures (images: ${JSON.stringify(images)})`);
+    // What each figure showed, for the message: its renderer, whether it was suspended, its
+    // print picture.
+    const states = await page.evaluate(() =>
+      [...document.querySelectorAll('screw-bender')].map((f) => ({
+        id: f.id,
+        renderer: !!f.viewer?.renderer,
+        suspended: !!f.viewer?.suspended,
+        still: f.shadowRoot?.querySelector('[part=still]') ? 'shown' : 'none',
+      })),
+    );
+    // A figure's picture is at least a quarter of its slide's width and 150 px high (the deck
+    // has other images, under 100 px high); a blank box has no image, or one of a
+    // single colour.
+    const pictures = images.filter((i) => i.w >= 250 && i.h >= 150 && (i.jpeg || i.spread === null || i.spread > 60));
+    assert.equal(pictures.length, 5, `five figures printed as pictures (images: ${JSON.stringify(images)}; figures: ${JSON.stringify(states)})`);
     assert.deepEqual(deck.problems, []);
   } finally {
     await deck.close();

@@ -83,12 +83,26 @@ test(`${BACKEND}: screw axes view lists every span and follows edits and drags`,
   await page.mouse.move(h.x, h.y);
   await page.mouse.down();
   await page.mouse.move(h.x + 30, h.y + 20, { steps: 4 });
-  await sb(() => window.screwbender.flushViews());
-  const during = await spanInfo();
+  // Chromium delivers mouse moves with the next frame, which SwiftShader may draw late: wait for
+  // the table to change (or the timeout) rather than sample it once.
+  const followed = await page
+    .waitForFunction(
+      (was) => {
+        window.screwbender.flushViews();
+        const now = window.screwbender.app.dock.current.state.screws.map((s) => [s.kind, s.angle, s.slide]);
+        return JSON.stringify(now) !== was;
+      },
+      JSON.stringify(after1),
+      { timeout: 10000 },
+    )
+    .then(() => true, () => false);
   await page.mouse.up();
-  assert.notDeepEqual(during, after1, 'the table did not follow the drag');
+  assert.ok(followed, 'the table did not follow the drag');
   // Hovering a row highlights the span and shows its label.
   await page.locator('.view-axes tbody tr').nth(3).hover();
+  await page
+    .waitForFunction(() => window.screwbender.app.dock.current.state.hover === 3, null, { timeout: 10000 })
+    .catch(() => {});
   assert.equal(await sb(() => window.screwbender.app.dock.current.state.hover), 3);
   assert.equal(await sb(() => document.querySelector('.axes-label').hidden), false);
   assert.match(await page.locator('.axes-label').textContent(), /°, slide/);
@@ -109,6 +123,9 @@ test(`${BACKEND}: screw axes view lists every span and follows edits and drags`,
   });
   assert.ok(target, 'no axis visible outside the dock');
   await page.mouse.move(target.x, target.y);
+  await page
+    .waitForFunction((i) => window.screwbender.app.dock.current.state.hover === i, target.i, { timeout: 10000 })
+    .catch(() => {});
   assert.equal(await sb(() => window.screwbender.app.dock.current.state.hover), target.i);
   assert.equal(await sb((i) => document.querySelectorAll('.view-axes tbody tr')[i].classList.contains('hi'), target.i), true);
   await page.mouse.move(5, 790);

@@ -14,7 +14,7 @@ import {
   subdivisionOptions,
 } from './options.js';
 import { Playback, describePose, schemeName } from './playback.js';
-import { drawWhenShown, forget, keepStill, printable, showPoster, whenNear } from './showing.js';
+import { drawWhenShown, forget, isPrinting, keepStill, printable, showPoster, whenNear } from './showing.js';
 import { fetchSource, persist, restorePersisted } from './sources.js';
 import { loadWasm, serially } from './wasm.js';
 
@@ -105,11 +105,12 @@ export class Figure {
 
   /**
    * Far from the viewport for a while (showing.js): frees the renderer and its graphics
-   * context, keeping a still picture for print; not while a pose is dragged or it has the focus.
+   * context, keeping a still picture for print; not while a pose is dragged, it has the focus or
+   * the page prints (the print picture is of the live frame; after print it is asked again).
    */
   suspend() {
     const v = this.viewer;
-    if (!v?.renderer || !this.model.motion || this.drag || this.root.activeElement) return;
+    if (!v?.renderer || !this.model.motion || this.drag || this.root.activeElement || isPrinting()) return;
     keepStill(this);
     v.suspend();
   }

@@ -86,9 +86,14 @@ export function showPoster(fig) {
 
 const printing = new Set();
 let media = null;
+/** Whether the page is in print (print media or between beforeprint and afterprint). */
+let inPrint = false;
 const before = () => still(true);
 const after = () => still(false);
 const change = (e) => still(e.matches);
+
+/** Whether the page is printing: a figure keeps its renderer until print is over. */
+export const isPrinting = () => inPrint;
 
 /** Keeps a still picture of `fig` (before its renderer is freed): print shows it. */
 export function keepStill(fig) {
@@ -100,23 +105,38 @@ export function keepStill(fig) {
   }
 }
 
+/**
+ * In print: every figure shows a picture of its current frame, or the one kept when its renderer
+ * was freed (a suspended figure, or one still making its new renderer), or else the picture it
+ * already shows; a figure is never left blank because it was between two states. Out of print:
+ * the pictures go, and the figures far from the viewport may free their renderers again.
+ */
 function still(on) {
+  inPrint = on;
   for (const fig of printing) {
     const box = fig.el.still;
-    box.replaceChildren();
-    box.hidden = true;
-    if (on && fig.viewer?.suspended && fig.kept) {
-      box.append(fig.kept);
-      box.hidden = false;
+    if (!on) {
+      box.replaceChildren();
+      box.hidden = true;
+      if (fig.onScreen === false && fig.viewer?.renderer) {
+        clearTimeout(fig.suspendTimer);
+        fig.suspendTimer = setTimeout(() => fig.suspend(), SUSPEND_MS);
+      }
+      continue;
     }
-    if (!on || !fig.viewer?.renderer || !fig.model.motion) continue;
-    try {
-      const c = picture(fig.viewer);
-      c.setAttribute('part', 'still');
-      box.append(c);
+    let shot = null;
+    if (fig.viewer?.renderer && fig.model.motion) {
+      try {
+        shot = picture(fig.viewer);
+        shot.setAttribute('part', 'still');
+      } catch {
+        // No picture of the current frame: the kept one, if any.
+      }
+    }
+    shot ??= fig.kept;
+    if (shot) {
+      box.replaceChildren(shot);
       box.hidden = false;
-    } catch {
-      // No picture: the figure prints as the browser prints its canvas.
     }
   }
 }
@@ -139,4 +159,5 @@ export function forget(fig) {
   window.removeEventListener('afterprint', after);
   media?.removeEventListener('change', change);
   media = null;
+  inPrint = false;
 }
