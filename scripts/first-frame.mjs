@@ -101,7 +101,7 @@ const stats = (xs) => ({ median: median(xs), min: Math.min(...xs), max: Math.max
 
 async function main() {
   const o = args();
-  const browser = await launch(o.backend);
+  const browser = await launch(o.backend, { softwarePage: false });
   try {
     if (o.compare) {
       const dirs = o.compare.map((d) => path.resolve(d));

@@ -78,6 +78,7 @@ stage() {
   stage_cpus+=($(($(cpu_secs) - cpu_start)))
   if ((rc != 0)); then
     log "stage '$name' FAILED (exit $rc) after $((SECONDS - start)) s"
+    bg_join
     summary 1
     exit "$rc"
   fi
@@ -110,16 +111,67 @@ stage "wasm tests (node + headless Chromium)" \
   cargo test --target "$WASM_TARGET" -p screwbender -p screwbender-web --features screwbender-web/teaching --tests --lib
 rm -rf "$wasm_tmp"
 
+# Stages beside others: a test.d stage with the line `# test.sh: beside the next stages` in its
+# first lines starts in the background (its output kept in a file) while the next stages run, and
+# is waited for before a stage with the line `# test.sh: alone` and at the end; then its output is
+# printed whole and its time counted. For stages that leave a core idle much of the time (an
+# install, a server starting, a browser waiting for a page), so that two of them share the two.
+bg_name=
+bg_pid=
+bg_log=
+bg_start=0
+bg_join() {
+  [[ -n $bg_pid ]] || return 0
+  local rc=0 cpu_start
+  cpu_start=$(cpu_secs)
+  wait "$bg_pid" || rc=$?
+  cat "$bg_log"
+  rm -f "$bg_log"
+  stage_names+=("$bg_name (beside the next stages)")
+  local end=$SECONDS
+  [[ -s $bg_log.end ]] && end=$(<"$bg_log.end")
+  rm -f "$bg_log.end"
+  stage_secs+=($((end - bg_start)))
+  stage_cpus+=($(($(cpu_secs) - cpu_start)))
+  bg_pid=
+  if ((rc != 0)); then
+    log "stage '$bg_name' FAILED (exit $rc) after $((end - bg_start)) s"
+    summary 1
+    exit "$rc"
+  fi
+  passed=$((passed + 1))
+  log "stage '$bg_name' passed in $((end - bg_start)) s (beside the next stages)"
+}
+bg_stage() {
+  bg_join
+  bg_name=$1
+  shift
+  bg_log=$(mktemp)
+  bg_start=$SECONDS
+  header "stage $((passed + 1)): $bg_name (starts now, runs beside the next stages; output when it ends)"
+  {
+    local rc=0
+    "$@" || rc=$?
+    echo "$SECONDS" >"$bg_log.end"
+    exit "$rc"
+  } >"$bg_log" 2>&1 &
+  bg_pid=$!
+}
+
 # Extra stages from other parts of the project (JS package, node tests, Playwright e2e).
 if [[ -d scripts/test.d ]]; then
   mapfile -t hooks < <(LC_ALL=C find scripts/test.d -maxdepth 1 -type f -name '*.sh' | LC_ALL=C sort)
   for hook in "${hooks[@]}"; do
-    if [[ -x $hook ]]; then
-      stage "${hook#scripts/}" "./$hook"
-    else
+    if [[ ! -x $hook ]]; then
       log "WARNING: $hook is not executable, so it is not run (chmod +x it)"
+    elif grep -qx '# test.sh: beside the next stages' < <(head -n 30 "$hook"); then
+      bg_stage "${hook#scripts/}" "./$hook"
+    else
+      if grep -qx '# test.sh: alone' < <(head -n 30 "$hook"); then bg_join; fi
+      stage "${hook#scripts/}" "./$hook"
     fi
   done
 fi
+bg_join
 
 summary 0

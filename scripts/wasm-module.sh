@@ -43,7 +43,8 @@ done
 # writes the same output file, so the build and the copy of its output hold one lock; what
 # follows works on the private copy.
 work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+started=
+trap 'rm -rf "$work"; [[ -n $started ]] && rm -f "$started"' EXIT
 input=$work/screwbender_web.wasm
 feature_args=()
 [[ -n $features ]] && feature_args=(--features "$features")
@@ -53,16 +54,35 @@ build_and_copy() {
     --config "target.$WASM_TARGET.rustflags=[$(IFS=,; echo "${remap[*]}")]" "${feature_args[@]}"
   cp "$target_dir/$WASM_TARGET/wasm-release/screwbender_web.wasm" "$input"
 }
-mkdir -p "$target_dir"
-(
-  flock 9
-  build_and_copy
-) 9>"$target_dir/wasm-module.lock"
+# A cargo build that has nothing to do still takes seconds (it checks every dependency), and the
+# suite asks for each module in several stages. So each FEATURES/OPT pair keeps a marker naming
+# its last module and the compiler; when no file under crates/ or .cargo/, nor Cargo.toml or
+# Cargo.lock, is newer than the marker (written before that build began, so that an edit during
+# it counts), the kept module is used without asking cargo.
+mkdir -p "$target_dir/wasm-modules"
+marker=$target_dir/wasm-modules/last-$( (echo "$features $opt $have"; cat "${BASH_SOURCE[0]}") | sha256sum | cut -c1-16)
+compiler=$(rustc -V)
+stamp=
+if [[ -f $marker ]]; then
+  read -r kept kept_compiler <"$marker" || true
+  if [[ $kept_compiler == "${compiler// /_}" && -f $target_dir/wasm-modules/$kept/screwbender_bg.wasm &&
+    -z $(find crates Cargo.toml Cargo.lock .cargo -newer "$marker" -print -quit) ]]; then
+    stamp=$kept
+    log "$(basename "$out"): no source changed since its last build: no cargo build"
+  fi
+fi
+if [[ -z $stamp ]]; then
+  started=$(mktemp "$target_dir/wasm-modules/started.XXXXXX")
+  (
+    flock 9
+    build_and_copy
+  ) 9>"$target_dir/wasm-module.lock"
+  stamp=$( (cat "$input" "${BASH_SOURCE[0]}" Cargo.lock; echo "$features $opt $have") | sha256sum | cut -d' ' -f1)
+fi
 
 WASM_OPT_FEATURES=(--enable-bulk-memory --enable-reference-types --enable-nontrapping-float-to-int
   --enable-sign-ext --enable-mutable-globals --enable-multivalue --enable-simd)
 
-stamp=$( (cat "$input" "${BASH_SOURCE[0]}" Cargo.lock; echo "$features $opt $have") | sha256sum | cut -d' ' -f1)
 cache=$target_dir/wasm-modules/$stamp
 if [[ ! -f $cache/screwbender_bg.wasm ]]; then
   tmp=$cache.tmp.$$
@@ -88,6 +108,11 @@ if [[ ! -f $cache/screwbender_bg.wasm ]]; then
   mv "$tmp" "$cache"
 else
   log "$(basename "$out"): unchanged since the last build (wasm-modules/${stamp:0:12}): copied"
+fi
+if [[ -n $started ]]; then
+  echo "$stamp ${compiler// /_}" >"$started"
+  mv "$started" "$marker"
+  started=
 fi
 rm -rf "$out"
 mkdir -p "$out"

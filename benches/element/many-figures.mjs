@@ -33,7 +33,7 @@ const html = `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>
 ${Array.from({ length: N }, (_, k) => `<section style="height: 420px"><screw-bender id="m${k}" scene="${k % 2 ? 'circle4' : 'l_cycle_rotated'}" strobe="24" ${attr}>Figure ${k}.</screw-bender></section>`).join('\n')}
 </main></body></html>`;
 
-const browser = await launch(BACKEND);
+const browser = await launch(BACKEND, { softwarePage: false });
 try {
   const page = await (await browser.newContext({ viewport: { width: 1280, height: 800 } })).newPage();
   await page.route(`${url}examples/many.html`, (r) => r.fulfill({ contentType: 'text/html', body: html }));

@@ -35,7 +35,7 @@ if (!url) {
   url = `http://127.0.0.1:${port}/`;
 }
 
-const browser = await launch(backend);
+const browser = await launch(backend, { softwarePage: false });
 const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
 const { page } = await openPage(context, url, backend);
 

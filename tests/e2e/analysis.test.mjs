@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (computed on the CPU, the same on either backend: once)
 // End-to-end: readable analysis and honest imports. A CSV of many poses asks how to thin it (a
 // modal dialog; Esc changes nothing); the plots have units, labelled 1-2-5 ticks, a playhead
 // that follows playback and a hover that shows that instant's pose in 3-D; Metrics and Methods

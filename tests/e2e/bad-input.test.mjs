@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (computed on the CPU, the same on either backend: once)
 // The bad-input matrix (docs/bad-input.md), page-import column, and the page's security rules.
 //
 //   E2E_BACKEND=webgpu|webgl2 node --test tests/e2e/bad-input.test.mjs

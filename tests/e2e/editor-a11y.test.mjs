@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (computed on the CPU, the same on either backend: once)
 // End-to-end: an accessibility audit of the playground with axe-core (from npm, injected by the
 // test: the page does not ship it). The page with the help overlay, the settings panel and each
 // analysis view of the dock open must have no serious or critical violation.

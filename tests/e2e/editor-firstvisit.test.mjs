@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (the first visit's light WebGPU module)
 // End-to-end: a first visit. A short hint says how to start and stays dismissed; the preset
 // chooser lists every preset by a human name with the paper's figure as a subtitle and its
 // one-line description, none cut off; WebGPU without an adapter is told as neutral information.

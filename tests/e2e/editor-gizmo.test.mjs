@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (computed on the CPU, the same on either backend: once)
 // End-to-end: the gizmo with real mouse events. Snapping lands on the absolute grid and on
 // absolute angles; parts seen edge-on are hidden (not drawn, not grabbable); dragging a handle
 // moves its pose in the world plane facing the view, which is highlighted, never in depth;

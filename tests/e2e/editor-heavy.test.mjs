@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (slow frames on the default backend: the reduced strobe)
 // End-to-end: a heavy session (10,000 strobe copies × 8 levels) stays responsive. stats() gives
 // the real interval between drawn frames (requestAnimationFrame to requestAnimationFrame) beside
 // the CPU time; during an orbit or a pose drag whose frames exceed the budget a reduced strobe is

@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (computed on the CPU, the same on either backend: once)
 // End-to-end: the playground with the keyboard alone. Tab reaches every control (toolbar, panel,
 // dock, timeline) and the 3-D view; the page's shortcuts act only while the view (or the page
 // itself) has the focus; with the view focused a pose is selected, moved and rotated in steps,

@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (computed on the CPU, the same on either backend: once)
 // End-to-end: the playground on a phone, upright (390 × 844) and on its side (844 × 390), with
 // touch emulation: every control on screen and at least 44 px, taps on the toolbar and on a
 // pose handle, pinch zoom and two-finger pan with real touch events, the snap toggle, help for

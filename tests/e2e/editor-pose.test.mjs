@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (computed on the CPU, the same on either backend: once)
 // End-to-end: the pose panel (www/js/editor/pose.js). Typed origin, quaternion, axis–angle and
 // Euler values set the selected pose exactly, as one undo step; a bad value shows a message
 // beside its group and changes nothing; a quaternion off unit length is normalised with a

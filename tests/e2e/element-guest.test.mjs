@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (one WebGPU device per page for many figures)
 // <screw-bender> as a guest in a page (www/js/element/chrome.js, showing.js, view/pointer.js):
 // a focused figure takes only the keys it acts on (on a page that listens to keys on document as
 // reveal.js does: arrows, Space, Escape, O, F) and Tab and Escape get a keyboard user out; many

@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (labels follow the view a renderer draws)
 // Labels on poses and descriptions of <screw-bender> (www/js/element/labels.js, chrome.js):
 // a child with slot="pose-1" (or slot="pose" data-pose="2") sits at its pose's projection within
 // 2 px after an orbit and a drag, hides behind the camera, takes the page's ::part and variable

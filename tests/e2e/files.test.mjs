@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (computed on the CPU, the same on either backend: once)
 // End-to-end: export buttons (glTF .glb / .gltf + .bin, CSV) and drag-and-drop import of
 // .json / .csv / .glb / .gltf + .bin / .obj files, with bad files leaving the session unchanged.
 import { test, before, after } from 'node:test';

@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (what the WebGPU page fetches, and when)
 // End-to-end: what the first visit leaves for later. The first frame is drawn from the renderer
 // module alone (on WebGPU the figure's WebGPU module, on WebGL2 the WebGL2 one): no analysis
 // module, no view, no uPlot, no KaTeX. Opening the dock fetches them, with "loading…" in the

@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (computed on the CPU, the same on either backend: once)
 // Lessons (www/lessons/, www/js/lessons/): every lesson's steps load without errors, every
 // exercise's checks fail on a scripted wrong answer and pass on a scripted right one, the
 // multiple-choice answers agree with what the wasm API measures, malformed lesson files are

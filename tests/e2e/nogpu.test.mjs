@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (its own browser, with neither WebGPU nor WebGL: once is enough)
 // Without WebGPU and WebGL the page must say so clearly (a banner), not fail silently.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';

@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (the offline file on WebGPU and on its WebGL2 fallback)
 // End-to-end: the Share & embed dialog (www/js/editor/share-dialog.js) and its four outputs, each
 // taken as a user takes it (real clicks, keys and touches; the clipboard read back) and shown
 // where it is meant to live:

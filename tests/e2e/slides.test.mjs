@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (figures in a deck on the page's default backend)
 // The reveal.js deck www/examples/slides.html: figures on several slides, picked and dragged with
 // real mouse events under the deck's scaling (a transform: ×1.1 at 1280×800, ×0.37 at 390×844),
 // under CSS zoom and in fullscreen; a figure on a hidden slide draws nothing until its slide is

@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (computed on the CPU, the same on either backend: once)
 // Soak test of the playground: thousands of random edits through the App (pose edits, inserts,
 // deletes, undo/redo, option changes, preset switches) interleaved with real mouse drags of
 // handles, gizmo parts and the view, for a bounded time. Afterwards: no console error, no CSP

@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (computed on the CPU, the same on either backend: once)
 // End-to-end: the teaching surfaces tell the truth and stay out of the way.
 //
 //   E2E_BACKEND=webgpu|webgl2 node --test tests/e2e/teaching-truth.test.mjs

@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (computed on the CPU, the same on either backend: once)
 // End-to-end tests of the teaching views of the analysis dock (www/js/views/axes.js, steps.js,
 // polygon.js, frame.js) in headless Chromium:
 //

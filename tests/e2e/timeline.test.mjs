@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (computed on the CPU, the same on either backend: once)
 // End-to-end: the timeline in seconds. The motion's key times drive 3-D playback (the pose at
 // time t is u = p(t), reached at the key times); key markers on the timeline retime by mouse drag
 // and keys (one undo step per drag; a move past a neighbouring key is refused with a message and

@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (its own browser, with neither WebGPU nor WebGL: once is enough)
 // Without WebGPU and WebGL every <screw-bender> figure says what it needs, keeps its caption,
 // fires `error` and throws nothing into the host page.
 import { test } from 'node:test';

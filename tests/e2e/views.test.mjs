@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (computed on the CPU, the same on either backend: once)
 // End-to-end: the analysis views Plots, Metrics, Timing and Methods open from the dock, follow
 // edits and drags, compute what they claim, and log no console error.
 import { test, before, after } from 'node:test';

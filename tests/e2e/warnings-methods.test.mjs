@@ -1,3 +1,4 @@
+// e2e-backends: webgpu (computed on the CPU, the same on either backend: once)
 // The page's notice where a subdivision is silently poor (Motion.warnings: the V1 4-point and
 // Jarek rules across half a turn), and the Methods view's Chaudhry–Cameron vertex plots with end
 // condition (18)/(19) and the Barr et al. baseline beside Ramamoorthi–Barr. Screenshots go to

@@ -10,7 +10,7 @@ import http from 'node:http';
 import path from 'node:path';
 import { parseArgs } from 'node:util';
 import { chromium } from 'playwright-core';
-import { BASE_FLAGS } from '../e2e/lib.mjs';
+import { BASE_FLAGS, SOFTWARE_RASTER } from '../e2e/lib.mjs';
 
 const { values: args } = parseArgs({
   options: {
@@ -64,7 +64,7 @@ const url = server ? `http://127.0.0.1:${server.address().port}/` : args.url;
 
 const browser = await chromium.launch({
   executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
-  args: BASE_FLAGS,
+  args: [...BASE_FLAGS, ...SOFTWARE_RASTER],
 });
 let ok = false;
 try {

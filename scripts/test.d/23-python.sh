@@ -9,7 +9,11 @@
 # the notebook figure, the course notebook and, when a figure bundle exists, JupyterLab in
 # headless Chromium.
 #
-#   PYTHON=python3.12 scripts/test.d/60-python.sh    # another interpreter (default python3)
+#   PYTHON=python3.12 scripts/test.d/23-python.sh    # another interpreter (default python3)
+#
+# It runs beside the next stages (scripts/test.sh): its install, JupyterLab's start and the
+# browser's waits leave a core idle much of the time. It needs www/'s modules (22-first-frame).
+# test.sh: beside the next stages
 set -euo pipefail
 # shellcheck source=scripts/lib.sh
 source "$(dirname "${BASH_SOURCE[0]}")/../lib.sh"
