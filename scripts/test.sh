@@ -43,6 +43,11 @@ export CARGO_INCREMENTAL=${CARGO_INCREMENTAL:-0}
 
 passed=0
 
+# The Python stage's environment installs in the background from here (scripts/python-env.sh;
+# the stage waits for it); its output is in artifacts/python-env.log.
+mkdir -p artifacts
+./scripts/python-env.sh >artifacts/python-env.log 2>&1 &
+
 stage_names=()
 stage_secs=()
 stage_cpus=()

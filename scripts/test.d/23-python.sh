@@ -20,12 +20,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/../lib.sh"
 cd "$REPO_ROOT"
 
 venv=$REPO_ROOT/.venv
-py=${PYTHON:-python3}
-if [[ ! -x $venv/bin/python ]]; then
-  timed "python venv" "$py" -m venv "$venv"
-fi
-timed "pip install (pinned)" "$venv/bin/pip" install --quiet --disable-pip-version-check \
-  -r python/requirements-dev.txt
+./scripts/python-env.sh
 
 timed "cargo build --release (CLI, the reference)" cargo build --release -q -p screwbender-cli --bin screwbender
 target_dir=$(cargo metadata --format-version 1 --no-deps | "$venv/bin/python" -c \

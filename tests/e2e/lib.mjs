@@ -93,15 +93,13 @@ export const BASE_FLAGS = [
 /**
  * For tests: with no GPU, Chromium's "GPU" rasterisation of the page (text, charts, dialogs) runs
  * on SwiftShader, a GPU emulated on the processor; Skia's own software rasteriser does the same
- * work with less of the processor, which the tests share two at a time. On WebGL2 the compositor
- * goes to software too (the canvas is read back, as on a machine whose compositor is not on the
- * GPU); WebGPU keeps the GPU compositor, without which its canvas draws into no picture. The
- * figures' canvases still draw through WebGPU or WebGL2 on SwiftShader. Benchmarks leave these
+ * work with less of the processor, which the tests share two at a time. The compositor stays on
+ * the (emulated) GPU: without it a WebGPU canvas draws into no picture, and a WebGL2 canvas is
+ * read back every frame with a console warning that a page on a real GPU never sees. The
+ * figures' canvases draw through WebGPU or WebGL2 on SwiftShader as before. Benchmarks leave this
  * out (`launch(backend, { softwarePage: false })`), to time the path a machine with a GPU takes.
  */
 export const SOFTWARE_RASTER = ['--disable-gpu-rasterization'];
-/** See SOFTWARE_RASTER: the compositor in software, for WebGL2 only. */
-export const SOFTWARE_COMPOSITING = ['--disable-gpu-compositing'];
 /** WebGPU on SwiftShader needs all of these (and no --disable-gpu). */
 const WEBGPU_FLAGS = [
   '--enable-unsafe-webgpu',
@@ -111,12 +109,12 @@ const WEBGPU_FLAGS = [
 ];
 
 /**
- * Launches Chromium for `backend` ('webgpu' | 'webgl2'), the page rasterised and composited in
- * software unless `softwarePage` is false (SOFTWARE_RASTER, SOFTWARE_COMPOSITING).
+ * Launches Chromium for `backend` ('webgpu' | 'webgl2'), the page rasterised in software unless
+ * `softwarePage` is false (SOFTWARE_RASTER).
  */
 export async function launch(backend, { softwarePage = true } = {}) {
   const args = [...BASE_FLAGS, ...(backend === 'webgpu' ? WEBGPU_FLAGS : ['--use-angle=swiftshader'])];
-  if (softwarePage) args.push(...SOFTWARE_RASTER, ...(backend === 'webgpu' ? [] : SOFTWARE_COMPOSITING));
+  if (softwarePage) args.push(...SOFTWARE_RASTER);
   return chromium.launch({
     executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
     args,
