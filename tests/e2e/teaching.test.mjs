@@ -39,8 +39,9 @@ async function preset(id) {
 }
 
 async function open(id) {
-  await sb((v) => {
-    window.screwbender.openView(v);
+  // The first view opened fetches the dock, its views and the analysis module: wait for it.
+  await sb(async (v) => {
+    await window.screwbender.openView(v);
     window.screwbender.flushViews();
   }, id);
   await waitFrames(page, 1);

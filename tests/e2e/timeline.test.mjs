@@ -444,10 +444,10 @@ test(`${BACKEND}: a <screw-bender> figure seeks in seconds of its motion's key t
 
 test(`${BACKEND}: screenshots of the timeline (desktop and phone)`, async () => {
   await timed();
-  await sb(() => {
+  await sb(async () => {
     const { app } = window.screwbender;
     app.setVelocities([null, 0.25, null, null, null, null]);
-    app.openView('timing');
+    await app.openView('timing');
     app.seekTime(3.5);
   });
   await sb(() => window.screwbender.flushViews());
