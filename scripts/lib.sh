@@ -45,6 +45,26 @@ locked_wasm_bindgen_version() {
   ' "$REPO_ROOT/Cargo.lock"
 }
 
+# cargo_target_dir: where cargo builds (CARGO_TARGET_DIR or the workspace's target/).
+cargo_target_dir() {
+  cargo metadata --format-version 1 --no-deps |
+    python3 -c 'import json, sys; print(json.load(sys.stdin)["target_directory"])'
+}
+
+# test_cli: the path of the `screwbender` CLI as the native test stage builds it (the dev
+# profile, the workspace's features), after making sure it is up to date with the same cargo
+# command, which does nothing when that stage ran. Stages that run the CLI use this build rather
+# than compiling another one: a release build of the CLI costs a core for about 40 s, and the
+# CLI's outputs are the same at every opt-level (Rust neither reassociates nor fuses
+# floating-point operations).
+test_cli() {
+  CARGO_INCREMENTAL=${CARGO_INCREMENTAL:-0} cargo test --workspace --all-targets --no-run -q >&2
+  local bin
+  bin=$(cargo_target_dir)/debug/screwbender
+  [[ -x $bin ]] || die "no CLI at $bin after the test build"
+  echo "$bin"
+}
+
 # Run as root directly, otherwise through sudo (a developer's own machine).
 as_root() {
   if ((EUID == 0)); then "$@"; else sudo "$@"; fi

@@ -4,8 +4,8 @@
 # Installs a virtual environment in .venv/ (ignored) with the pinned python/requirements-dev.txt
 # (maturin, numpy, pytest, modern_robotics, pytransform3d, the notebook stack), builds the wheel
 # with maturin (release) into artifacts/python/, installs that wheel into the venv, and runs
-# pytest on python/tests: the CLI's poses bit for bit (the CLI is built here too, in release, so
-# it shares the core's build with the extension), the reference libraries, bad input, files,
+# pytest on python/tests: the CLI's poses bit for bit (the CLI as the native test stage built
+# it: scripts/lib.sh `test_cli`), the reference libraries, bad input, files,
 # the notebook figure, the course notebook and, when a figure bundle exists, JupyterLab in
 # headless Chromium.
 #
@@ -22,10 +22,8 @@ cd "$REPO_ROOT"
 venv=$REPO_ROOT/.venv
 ./scripts/python-env.sh
 
-timed "cargo build --release (CLI, the reference)" cargo build --release -q -p screwbender-cli --bin screwbender
-target_dir=$(cargo metadata --format-version 1 --no-deps | "$venv/bin/python" -c \
-  'import json, sys; print(json.load(sys.stdin)["target_directory"])')
-export SCREWBENDER_CLI=$target_dir/release/screwbender
+SCREWBENDER_CLI=$(timed "the CLI (the reference)" test_cli)
+export SCREWBENDER_CLI
 
 if [[ -x python/build-figure.sh ]]; then
   timed "figure bundle" python/build-figure.sh

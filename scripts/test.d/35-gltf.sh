@@ -13,11 +13,7 @@ cd "$REPO_ROOT"
 
 [[ -d node_modules/gltf-validator ]] || die "node_modules/gltf-validator is missing: run npm ci"
 
-timed "cargo build --release --bin screwbender" cargo build --release -p screwbender-cli --bin screwbender
-target_dir=$(cargo metadata --format-version 1 --no-deps | node -e \
-  'let s="";process.stdin.on("data",d=>s+=d).on("end",()=>console.log(JSON.parse(s).target_directory))')
-bin=$target_dir/release/screwbender
-[[ -x $bin ]] || die "no binary at $bin"
+bin=$(timed "the CLI" test_cli)
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/screwbender-gltf.XXXXXX")
 trap 'rm -rf "$work"' EXIT
