@@ -3,7 +3,8 @@
 #
 # Installs a virtual environment in .venv/ (ignored) with the pinned python/requirements-dev.txt
 # (maturin, numpy, pytest, modern_robotics, pytransform3d, the notebook stack), builds the wheel
-# with maturin (release) into artifacts/python/, installs that wheel into the venv, and runs
+# with maturin (release) into artifacts/python/, installs that wheel into the venv, checks that
+# its SIMD lanes are inlined (scripts/check-lanes-inlined.sh), and runs
 # pytest on python/tests: the CLI's poses bit for bit (the CLI as the native test stage built
 # it: scripts/lib.sh `test_cli`), the reference libraries, bad input, files,
 # the notebook figure, the course notebook and, when a figure bundle exists, JupyterLab in
@@ -37,6 +38,11 @@ timed "maturin build --release" bash -c 'cd python && "$1" build --release --qui
 wheel=$(ls artifacts/python/screwbender-*.whl)
 timed "pip install the wheel" "$venv/bin/pip" install --quiet --disable-pip-version-check \
   --force-reinstall --no-deps "$wheel"
+
+# The lanes check (scripts/check-lanes-inlined.sh) on the extension module just built: a release
+# build of the core, so no release CLI is compiled for that check alone.
+module=$(cd / && "$venv/bin/python" -c 'import screwbender._screwbender as m; print(m.__file__)')
+./scripts/check-lanes-inlined.sh "$module"
 
 header "pytest python/tests"
 # From a directory outside python/, so `import screwbender` is the installed wheel and not the

@@ -1,6 +1,10 @@
 #!/usr/bin/env bash
-# Stage: the SIMD lanes are compiled in place. In the release CLI (x86-64), no function calls an
-# x86 intrinsic (`core::arch`'s `_mm512_mul_pd`, `_mm256_add_pd`, …) out of line.
+# The SIMD lanes are compiled in place: in FILE, a release build holding the core (x86-64), no
+# function calls an x86 intrinsic (`core::arch`'s `_mm512_mul_pd`, `_mm256_add_pd`, …) out of
+# line. The Python stage (scripts/test.d/23-python.sh) checks its extension module, a release
+# build of the core it already made, rather than compiling a release CLI for this alone.
+#
+#   scripts/check-lanes-inlined.sh FILE
 #
 # Why a disassembly check: the batches run their arithmetic inside a function compiled for
 # AVX-512 or AVX2 (`lanes::run_widest`), and an intrinsic is one instruction only when it is
@@ -11,11 +15,11 @@
 # are not allowed here, so the compiled code itself is checked.
 #
 # Allowed: the zero lanes that `Avx8::detect` / `Avx4::detect` build before the dispatch (once per
-# batch) and the feature detection's `xgetbv`.
+# batch) and the feature detection's `xgetbv`. A FILE with no call to an intrinsic at all fails:
+# without symbols (a stripped build) the check could not see a bad call.
 set -euo pipefail
 # shellcheck source=scripts/lib.sh
-source "$(dirname "${BASH_SOURCE[0]}")/../lib.sh"
-cd "$REPO_ROOT"
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 
 if [[ $(uname -m) != x86_64 ]]; then
   log "not x86-64: the AVX lanes are not compiled here, nothing to check"
@@ -23,18 +27,16 @@ if [[ $(uname -m) != x86_64 ]]; then
 fi
 command -v objdump >/dev/null || die "objdump is missing (Debian: binutils)"
 
-timed "cargo build --release --bin screwbender" cargo build --release -p screwbender-cli --bin screwbender
-target_dir=$(cargo metadata --format-version 1 --no-deps | node -e \
-  'let s="";process.stdin.on("data",d=>s+=d).on("end",()=>console.log(JSON.parse(s).target_directory))')
-bin=$target_dir/release/screwbender
-[[ -x $bin ]] || die "no binary at $bin"
+bin=${1:?usage: scripts/check-lanes-inlined.sh FILE}
+[[ -f $bin ]] || die "no file $bin"
 
 calls=$(objdump -d --no-show-raw-insn "$bin" | grep -E '\scall\s.*core_arch' | sed 's/.*<//; s/>$//' || true)
 total=$(grep -c . <<<"$calls" || true)
+((total > 0)) || die "no call to an x86 intrinsic in $bin: without symbols it cannot be checked"
 bad=$(grep -vE 'setzero_pd|xgetbv' <<<"$calls" | sort | uniq -c | sort -rn || true)
 if [[ -n $bad ]]; then
   log "out-of-line calls to x86 intrinsics in $bin (a lanes helper was not inlined into the code compiled for AVX):"
   echo "$bad" | head -20
   exit 1
 fi
-log "no lane operation called out of line ($total allowed calls: zero lanes before the dispatch, xgetbv)"
+log "$(basename "$bin"): no lane operation called out of line ($total allowed calls: zero lanes before the dispatch, xgetbv)"
