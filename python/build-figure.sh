@@ -1,12 +1,19 @@
 #!/usr/bin/env bash
 # Bundles the notebook figure into python/screwbender/static/figure.js (python/widget/build.mjs)
 # from the playground's renderer modules in www/pkg-webgpu and www/pkg-gl, building them first
-# when they are missing (scripts/serve.sh's build; in the test suite stage 40-e2e has built them).
+# when they are missing (scripts/serve.sh's build). It reads www/ under the build's lock
+# (scripts/lib.sh `www_lock`): in the test suite the Python stage runs beside the stage that
+# builds www/.
 set -euo pipefail
 # shellcheck source=scripts/lib.sh
 source "$(dirname "${BASH_SOURCE[0]}")/../scripts/lib.sh"
 cd "$REPO_ROOT"
-if [[ ! -f www/pkg-webgpu/screwbender_bg.wasm || ! -f www/pkg-gl/screwbender_bg.wasm ]]; then
+www_lock
+if [[ ! -f www/pkg-webgpu/screwbender_bg.wasm || ! -f www/pkg-gl/screwbender_bg.wasm ||
+  ! -f www/vendor/bunny.obj ]]; then
+  www_unlock
   BUILD_ONLY=1 scripts/serve.sh
+  www_lock
 fi
 node python/widget/build.mjs www
+www_unlock

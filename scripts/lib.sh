@@ -65,6 +65,19 @@ test_cli() {
   echo "$bin"
 }
 
+# www_lock / www_unlock: an exclusive hold on www/'s build (file descriptor 8), so that two
+# scripts of the test suite running side by side never read www/ while the other writes it
+# (scripts/serve.sh's build copies every module into place even when nothing changed). Not
+# reentrant: release it before running a script that takes it.
+www_lock() {
+  exec 8>"$REPO_ROOT/www/.build.lock"
+  flock 8
+}
+www_unlock() {
+  flock -u 8
+  exec 8>&-
+}
+
 # Run as root directly, otherwise through sudo (a developer's own machine).
 as_root() {
   if ((EUID == 0)); then "$@"; else sudo "$@"; fi

@@ -49,7 +49,9 @@ build() {
 if [[ ${SKIP_BUILD:-0} == 1 ]]; then
   log "SKIP_BUILD=1: serving $WWW_DIR/ as it is"
 else
+  www_lock
   build
+  www_unlock
 fi
 
 if [[ ${BUILD_ONLY:-0} == 1 ]]; then

@@ -10,10 +10,12 @@
 # the notebook figure, the course notebook and, when a figure bundle exists, JupyterLab in
 # headless Chromium.
 #
-#   PYTHON=python3.12 scripts/test.d/23-python.sh    # another interpreter (default python3)
+#   PYTHON=python3.12 scripts/test.d/21-python.sh    # another interpreter (default python3)
 #
 # It runs beside the next stages (scripts/test.sh): its install, JupyterLab's start and the
-# browser's waits leave a core idle much of the time. It needs www/'s modules (22-first-frame).
+# browser's waits leave a core idle much of the time. It needs www/'s modules: it starts before
+# 22-first-frame builds them, and python/build-figure.sh waits for that build (or makes it)
+# under www/'s build lock.
 # test.sh: beside the next stages
 set -euo pipefail
 # shellcheck source=scripts/lib.sh
