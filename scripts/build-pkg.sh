@@ -32,7 +32,7 @@ cd "$REPO_ROOT"
 
 PKG_DIR=${PKG_DIR:-$REPO_ROOT/pkg}
 PACK_DIR=${PACK_DIR:-$REPO_ROOT/artifacts/npm}
-TARGET_DIR=${CARGO_TARGET_DIR:-$REPO_ROOT/target}
+TARGET_DIR=$(cargo_target_dir)
 WASM_OPT=$REPO_ROOT/node_modules/.bin/wasm-opt
 
 # node_types DIR: wasm-bindgen's init types name DOM types (RequestInfo, Response, BufferSource)

@@ -48,7 +48,7 @@ seed_corpus() {
   ((need)) || return 0
   timed "cargo build --release -p screwbender-cli --bin screwbender (seeds)" cargo build --release -p screwbender-cli --bin screwbender
   local bin target_dir work
-  target_dir=$(cargo metadata --format-version 1 --no-deps | sed -E 's/.*"target_directory":"([^"]*)".*/\1/')
+  target_dir=$(cargo_target_dir)
   bin=$target_dir/release/screwbender
   work=$(mktemp -d)
   mkdir -p fuzz/corpus/{document_json,subdivide,screw,csv_import,gltf_import}

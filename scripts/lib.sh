@@ -45,10 +45,10 @@ locked_wasm_bindgen_version() {
   ' "$REPO_ROOT/Cargo.lock"
 }
 
-# cargo_target_dir: where cargo builds (CARGO_TARGET_DIR or the workspace's target/).
+# cargo_target_dir: where cargo builds, as cargo itself says (CARGO_TARGET_DIR, build.target-dir
+# of a cargo config, or the workspace's target/).
 cargo_target_dir() {
-  cargo metadata --format-version 1 --no-deps |
-    python3 -c 'import json, sys; print(json.load(sys.stdin)["target_directory"])'
+  cargo metadata --format-version 1 --no-deps | grep -o '"target_directory":"[^"]*"' | cut -d'"' -f4
 }
 
 # test_cli: the path of the `screwbender` CLI as the native test stage builds it (the dev

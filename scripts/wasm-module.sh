@@ -24,8 +24,7 @@ want=$(locked_wasm_bindgen_version)
 have=$(wasm-bindgen --version 2>/dev/null | awk '{print $2}') || true
 [[ $have == "$want" ]] || die "wasm-bindgen $want needed (Cargo.lock), found '${have:-none}': run scripts/setup.sh"
 
-# Honour CARGO_TARGET_DIR / build.target-dir: ask cargo where the artifacts are.
-target_dir=$(cargo metadata --format-version 1 --no-deps | grep -o '"target_directory":"[^"]*"' | cut -d'"' -f4)
+target_dir=$(cargo_target_dir)
 
 # Panic locations name each source file by its path, and those of the dependencies lie under
 # cargo's registry in $CARGO_HOME: a module built in another home directory would differ, in
