@@ -54,9 +54,9 @@ cargo_target_dir() {
 # test_cli: the path of the `screwbender` CLI as the native test stage builds it (the dev
 # profile, the workspace's features), after making sure it is up to date with the same cargo
 # command, which does nothing when that stage ran. Stages that run the CLI use this build rather
-# than compiling another one: a release build of the CLI costs a core for about 40 s, and the
-# CLI's outputs are the same at every opt-level (Rust neither reassociates nor fuses
-# floating-point operations).
+# than compiling another one: a release build of the CLI is a long compile on one core (one
+# codegen unit), and the CLI's outputs are the same at every opt-level (Rust neither
+# reassociates nor fuses floating-point operations).
 test_cli() {
   CARGO_INCREMENTAL=${CARGO_INCREMENTAL:-0} cargo test --workspace --all-targets --no-run -q >&2
   local bin
