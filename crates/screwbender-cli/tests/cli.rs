@@ -315,6 +315,16 @@ fn compare_prints_the_metrics_table() {
     for (row, name) in rows[2..].iter().zip(["polyscrew", "fourpoint", "slerp"]) {
         assert!(row.starts_with(name), "{row}");
     }
+    // The smoothness columns are the converged values: the C⁰ polyscrew's accelerations are
+    // impulses with infinite integrals, the C¹ 4-point's velocity jumps are zero (not the
+    // differences of its refined poses).
+    let cells = |row: &str| row.split_whitespace().map(String::from).collect::<Vec<_>>();
+    let (poly, four) = (cells(rows[2]), cells(rows[3]));
+    assert!(
+        poly[3].starts_with("impulse(") && poly[5] == "∞",
+        "{poly:?}"
+    );
+    assert_eq!((four[1].as_str(), four[2].as_str()), ("0", "0"), "{four:?}");
     let out = run(
         &["compare", "--json", "--methods", "jarek,decoupled"],
         &preset("circle4"),
@@ -325,6 +335,22 @@ fn compare_prints_the_metrics_table() {
     // The paper's Fig. 9 claim: screws keep the circle frame-independently, decoupled does not.
     let frame = |i: usize| v["rows"][i]["frame_dependence"].as_f64().unwrap();
     assert!(frame(0) < 1e-12 && frame(1) > 1e-3, "{}", out.stdout);
+    // The headline fields are converged metrics, each with its limit; the one-step numbers are
+    // under `single_step`, named by their derivative route.
+    for i in 0..2 {
+        assert_eq!(
+            v["rows"][i]["velocity_jump"]["limit"], "zero",
+            "{}",
+            out.stdout
+        );
+        assert!(
+            v["rows"][i]["acceleration_energy"][0]["value"]
+                .as_f64()
+                .unwrap()
+                > 0.0
+        );
+        assert!(v["rows"][i]["single_step"]["derivatives"].is_string());
+    }
     for (args, want) in [
         (
             &["compare", "--methods", "nope"][..],

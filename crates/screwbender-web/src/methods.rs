@@ -13,9 +13,10 @@ use super::convert::{count, is_absent, plain, poses_from_fn, push_kinematics, to
 use super::motion::sample_parameters;
 use super::MotionHandle;
 use screwbender::methods::{
-    compare_methods, fit_barr, fit_quaternion_spline, kinematics_at, motion_metrics,
-    triangle_samples, BarrOptions, Continuity, Derivatives, EndCondition, Method, MetricsOptions,
-    RationalMotion, RbOptions, ReferenceTriangle, Side, TRIANGLE_STRIDE,
+    compare_methods, fit_barr, fit_quaternion_spline, interpolation_error, kinematics_at,
+    single_step_metrics, triangle_samples, BarrOptions, Continuity, Derivatives, EndCondition,
+    Method, MetricsOptions, RationalMotion, RbOptions, ReferenceTriangle, Side, SingleStepMetrics,
+    TRIANGLE_STRIDE,
 };
 use screwbender::{
     Error, ErrorKind, Motion, MotionDocument, Pose, Scheme, ScrewBender, Subdivision,
@@ -38,12 +39,27 @@ export interface MethodInfo {
 }
 
 /**
- * One row of `Motion.compareMethods` (the fields of `screwbender compare --json`, snake_case; a
- * metric that could not be computed is absent, with the reason in `notes`).
+ * One row of `Motion.compareMethods` (the fields of `screwbender compare --json` and of Python's
+ * `compare_methods`, snake_case; a metric that could not be computed is absent, with the reason
+ * in `notes`). The smoothness fields are the converged values, measured the same way for every
+ * method; `single_step` holds the same metrics at one step along the method's own derivative
+ * route, for diagnosis only.
  */
-export interface MetricsRow {
+export interface MetricsRow extends ConvergedMetrics {
   method: MethodId;
   motion: string;
+  interpolation_error: number;
+  frame_dependence?: number;
+  line_error?: number;
+  circle_error?: number;
+  helix_error?: number;
+  notes: string[];
+  single_step: SingleStepMetrics;
+}
+
+/** Smoothness metrics at one step along a motion's own derivative route (analytic, finite differences, or differences of refined poses): not comparable across methods. */
+export interface SingleStepMetrics {
+  /** `analytic`, `finite differences, …` or `pose differences, step h`. */
   derivatives: string;
   velocity_jump: number;
   angular_velocity_jump: number;
@@ -51,14 +67,11 @@ export interface MetricsRow {
   angular_acceleration_jump: number;
   acceleration_energy: number[];
   angular_acceleration_energy: number;
+}
+
+/** `Motion.motionMetrics`: this motion's own metrics at its refined span, and its interpolation error. */
+export interface MotionMetricsRow extends SingleStepMetrics {
   interpolation_error: number;
-  frame_dependence?: number;
-  line_error?: number;
-  circle_error?: number;
-  helix_error?: number;
-  notes: string[];
-  /** The smoothness metrics measured the same way for every method, extrapolated to a vanishing step. */
-  converged?: ConvergedMetrics;
 }
 
 /** What a converged metric tends to: a value, zero, an impulse at the knots (the value is the size of the velocity jump that carries it) or nothing (divergent). */
@@ -368,7 +381,7 @@ impl MotionHandle {
     /// differences of the refined poses (step: the refined span), and the interpolation error;
     /// plus `fourPointGap`, the largest distance between the 4-point motion at the same levels
     /// and the control poses (0 up to rounding: 4-point interpolates).
-    #[wasm_bindgen(js_name = motionMetrics, unchecked_return_type = "{ row: MetricsRow; fourPointGap: number }")]
+    #[wasm_bindgen(js_name = motionMetrics, unchecked_return_type = "{ row: MotionMetricsRow; fourPointGap: number }")]
     pub fn motion_metrics_js(
         &self,
         #[wasm_bindgen(js_name = bodyPoints, unchecked_optional_param_type = "Vec3[]")]
@@ -380,8 +393,9 @@ impl MotionHandle {
         }
         let (doc, sub) = self.snapshot()?;
         let h = 0.5f64.powi(sub.levels as i32);
-        let row = self.with_refined(|m| {
-            motion_metrics("current", m, &doc.poses, Derivatives::Sampled(h), &options)
+        let row = self.with_refined(|m| MotionMetricsRow {
+            metrics: single_step_metrics(m, Derivatives::Sampled(h), &options),
+            interpolation_error: interpolation_error(m, &doc.poses),
         })?;
         let four = Subdivision::new(Scheme::FourPoint, sub.rules, sub.levels);
         let four = ScrewBender::new(doc.poses.clone(), doc.closed, four)?;
@@ -397,8 +411,15 @@ impl MotionHandle {
         #[derive(Serialize)]
         #[serde(rename_all = "camelCase")]
         struct Out {
-            row: screwbender::methods::MetricsRow,
+            row: MotionMetricsRow,
             four_point_gap: f64,
+        }
+        /// The row of `motionMetrics`: the single-step metrics with the interpolation error.
+        #[derive(Serialize)]
+        struct MotionMetricsRow {
+            #[serde(flatten)]
+            metrics: SingleStepMetrics,
+            interpolation_error: f64,
         }
         to_js(&Out {
             row,

@@ -41,7 +41,7 @@ const nameOf = (id) => METHOD_NAMES[id] ?? id;
 
 /**
  * The metrics rows of the table: [label, unit, tooltip, value of a MetricsRow, better]. The
- * smoothness rows read the converged metrics (row.converged: the same derivative route and
+ * smoothness rows read the converged values (the same derivative route and
  * steps for every method, extrapolated to a vanishing step); `better` is '↓' where a lower
  * value is better whatever the method, '' where it is not (an integral of squared acceleration
  * is lower for a motion that strays from its poses, an approximating method's interpolation
@@ -49,13 +49,13 @@ const nameOf = (id) => METHOD_NAMES[id] ?? id;
  */
 /** @type {[string, string, string, (r: any) => any, string][]} */
 const METRICS = [
-  ['velocity jump', 'units/span', 'Largest jump of a body point’s velocity at the knots', (r) => r.converged?.velocity_jump, '↓'],
-  ['angular velocity jump', 'rad/span', 'Largest jump of the angular velocity at the knots', (r) => r.converged?.angular_velocity_jump, '↓'],
-  ['acceleration jump', 'units/span²', 'Largest jump of a body point’s acceleration at the knots', (r) => r.converged?.acceleration_jump, '↓'],
-  ['angular accel. jump', 'rad/span²', 'Largest jump of the angular acceleration at the knots', (r) => r.converged?.angular_acceleration_jump, '↓'],
-  ['∫|a|² (first point)', 'units²/span³', 'Integrated squared linear acceleration of the first body point; lower is smoother only between methods that pass through the same poses', (r) => r.converged?.acceleration_energy[0], ''],
-  ['∫|a|² (second point)', 'units²/span³', 'Integrated squared linear acceleration of the second body point; lower is smoother only between methods that pass through the same poses', (r) => r.converged?.acceleration_energy[1], ''],
-  ['∫|α|²', 'rad²/span³', 'Integrated squared angular acceleration (4× the covariant acceleration); lower is smoother only between methods that pass through the same poses', (r) => r.converged?.angular_acceleration_energy, ''],
+  ['velocity jump', 'units/span', 'Largest jump of a body point’s velocity at the knots', (r) => r.velocity_jump, '↓'],
+  ['angular velocity jump', 'rad/span', 'Largest jump of the angular velocity at the knots', (r) => r.angular_velocity_jump, '↓'],
+  ['acceleration jump', 'units/span²', 'Largest jump of a body point’s acceleration at the knots', (r) => r.acceleration_jump, '↓'],
+  ['angular accel. jump', 'rad/span²', 'Largest jump of the angular acceleration at the knots', (r) => r.angular_acceleration_jump, '↓'],
+  ['∫|a|² (first point)', 'units²/span³', 'Integrated squared linear acceleration of the first body point; lower is smoother only between methods that pass through the same poses', (r) => r.acceleration_energy[0], ''],
+  ['∫|a|² (second point)', 'units²/span³', 'Integrated squared linear acceleration of the second body point; lower is smoother only between methods that pass through the same poses', (r) => r.acceleration_energy[1], ''],
+  ['∫|α|²', 'rad²/span³', 'Integrated squared angular acceleration (4× the covariant acceleration); lower is smoother only between methods that pass through the same poses', (r) => r.angular_acceleration_energy, ''],
   ['interpolation error', 'units + rad', 'Largest distance between a control pose and the motion at its knot: 0 for interpolating methods, by design not for approximating ones (B-spline, Kim–Kim–Shin)', (r) => r.interpolation_error, ''],
   ['frame dependence', 'units', 'Trajectory change when the local frame moves (0: frame-independent)', (r) => r.frame_dependence, '↓'],
   ['line error', 'units', 'Deviation from an exact straight translation sampled by the poses', (r) => r.line_error, '↓'],

@@ -17,7 +17,7 @@
 use glam::{DQuat, DVec3};
 use serde::Serialize;
 
-use super::convergence::{converged_metrics, ConvergedMetrics};
+use super::convergence::{converged_metrics, Converged, ConvergedMetrics, Limit};
 use super::registry::{Method, COMPARISON_LEVELS};
 use crate::error::{Error, ErrorKind};
 use crate::motion::{Kinematics, Motion};
@@ -230,13 +230,14 @@ pub fn sampled_difference(
     }
 }
 
-/// One row of a [`MetricsTable`]: the metrics of one method on one input.
+/// The smoothness metrics of one motion measured at one step along its own derivative route
+/// ([`single_step_metrics`]): analytic kinematics where the method has them, finite
+/// differences otherwise, differences of the refined poses for ScrewBender motions. Kept for
+/// diagnosis beside the converged values of a [`MetricsRow`]; not comparable across methods,
+/// since the routes and steps differ (a ScrewBender motion's refined-pose differences show a
+/// velocity jump of the order of its refined span, a finite difference only its own rounding).
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct MetricsRow {
-    /// Short method name (e.g. `"jarek"`).
-    pub method: String,
-    /// The motion's own description ([`Motion::name`]).
-    pub motion: String,
+pub struct SingleStepMetrics {
     /// Where the derivatives come from: `"analytic"`, `"finite differences, …"` or
     /// `"pose differences, step h"` (see [`Derivatives`]).
     pub derivatives: String,
@@ -249,11 +250,31 @@ pub struct MetricsRow {
     pub acceleration_jump: f64,
     /// Largest jump of the angular acceleration at the knots.
     pub angular_acceleration_jump: f64,
-    /// `∫ |x''(u)|² du` over the domain, one entry per body point.
+    /// `∫ |x''(u)|² du` over the domain, one entry per body point (impulses at velocity jumps
+    /// left out).
     pub acceleration_energy: Vec<f64>,
     /// `∫ |α(u)|² du`, the integrated squared angular acceleration; for unit quaternions
     /// `|q'' \ q|² = |α|²/4`, so this is 4× Ramamoorthi–Barr's covariant acceleration.
     pub angular_acceleration_energy: f64,
+}
+
+/// One row of a [`MetricsTable`]: the metrics of one method on one input.
+///
+/// The smoothness fields ([`MetricsRow::smoothness`], flattened into the row in JSON:
+/// `velocity_jump`, `acceleration_energy`, …) are the converged values, measured the same way
+/// for every method ([`converged_metrics`]); they are what the CLI's table, `compare --json`,
+/// JavaScript's `compareMethods`, Python's `compare_methods` and the page show.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct MetricsRow {
+    /// Short method name (e.g. `"jarek"`).
+    pub method: String,
+    /// The motion's own description ([`Motion::name`]).
+    pub motion: String,
+    /// Velocity and acceleration jumps at the knots and the integrated squared accelerations,
+    /// extrapolated to a vanishing step, each with its limit (a value, zero, an impulse, or
+    /// divergent).
+    #[serde(flatten)]
+    pub smoothness: ConvergedMetrics,
     /// Largest pose distance (origin distance + angle) between control pose `i` and the motion at
     /// knot `i` (zero for interpolating methods).
     pub interpolation_error: f64,
@@ -270,10 +291,9 @@ pub struct MetricsRow {
     /// Messages for metrics that could not be computed (e.g. the method rejected a test input),
     /// and, starting with `warning: `, where the motion itself is poor ([`Method::warnings`]).
     pub notes: Vec<String>,
-    /// The smoothness metrics measured the same way for every method and extrapolated to a
-    /// vanishing step ([`converged_metrics`]); set by [`evaluate`], `None` elsewhere. The page's
-    /// comparison shows these; the fields above keep each method's own derivative route.
-    pub converged: Option<ConvergedMetrics>,
+    /// The same smoothness metrics at one step along the method's own derivative route: for
+    /// diagnosis only (see [`SingleStepMetrics`]).
+    pub single_step: SingleStepMetrics,
 }
 
 /// A comparison table: one [`MetricsRow`] per method, on the same poses.
@@ -326,15 +346,13 @@ const GAUSS4: [(f64, f64); 4] = [
     (0.930_568_155_797_026_3, 0.173_927_422_568_726_93),
 ];
 
-/// The metrics that need only the motion and its control poses (the builder-based ones are
-/// `None`).
-pub fn motion_metrics(
-    method: &str,
+/// The smoothness metrics of `motion` at one step along the route `derivatives` (see
+/// [`SingleStepMetrics`]).
+pub fn single_step_metrics(
     motion: &dyn Motion,
-    poses: &[Pose],
     derivatives: Derivatives,
     options: &MetricsOptions,
-) -> MetricsRow {
+) -> SingleStepMetrics {
     let points = &options.body_points;
     let probe = points.first().copied().unwrap_or(DVec3::ZERO);
     let analytic = motion.kinematics_at(motion.domain().0, probe).is_some();
@@ -401,15 +419,7 @@ pub fn motion_metrics(
             }
         }
     }
-    let knots = motion.knots();
-    let interpolation_error = poses
-        .iter()
-        .zip(&knots)
-        .map(|(p, &u)| motion.pose_at(u).distance(p))
-        .fold(0.0f64, f64::max);
-    MetricsRow {
-        method: method.to_string(),
-        motion: motion.name(),
+    SingleStepMetrics {
         derivatives: derivative_source,
         velocity_jump: vj,
         angular_velocity_jump: wj,
@@ -417,14 +427,17 @@ pub fn motion_metrics(
         angular_acceleration_jump: alj,
         acceleration_energy: energy,
         angular_acceleration_energy: angular,
-        interpolation_error,
-        frame_dependence: None,
-        line_error: None,
-        circle_error: None,
-        helix_error: None,
-        notes: Vec::new(),
-        converged: None,
     }
+}
+
+/// Largest pose distance (origin distance + angle) between control pose `i` and `motion` at its
+/// knot `i`.
+pub fn interpolation_error(motion: &dyn Motion, poses: &[Pose]) -> f64 {
+    poses
+        .iter()
+        .zip(&motion.knots())
+        .map(|(p, &u)| motion.pose_at(u).distance(p))
+        .fold(0.0f64, f64::max)
 }
 
 /// Largest deviation of the body points between two motions sampled at `samples_per_span`
@@ -555,9 +568,10 @@ pub fn preservation_errors(
     })
 }
 
-/// All metrics of one method: builds it on `poses`, measures it, and rebuilds it for the
-/// frame-independence and preservation tests. Errors only when the method rejects `poses`
-/// themselves; a rejected test input leaves that metric `None` with a note.
+/// All metrics of one method: builds it on `poses`, measures it (converged, and at one step
+/// along its own route), and rebuilds it for the frame-independence and preservation tests.
+/// Errors only when the method rejects `poses` themselves; a rejected test input leaves that
+/// metric `None` with a note.
 pub fn evaluate(
     method: Method,
     poses: &[Pose],
@@ -571,13 +585,22 @@ pub fn evaluate(
         }
         _ => Derivatives::Auto,
     };
-    let mut row = motion_metrics(method.name(), motion.as_ref(), poses, derivatives, options);
+    let smoothness = converged_metrics(method, poses, closed, &options.body_points)
+        .map_err(|e| e.within("converged metrics"))?;
+    let mut row = MetricsRow {
+        method: method.name().to_string(),
+        motion: motion.name(),
+        smoothness,
+        interpolation_error: interpolation_error(motion.as_ref(), poses),
+        frame_dependence: None,
+        line_error: None,
+        circle_error: None,
+        helix_error: None,
+        notes: Vec::new(),
+        single_step: single_step_metrics(motion.as_ref(), derivatives, options),
+    };
     for w in method.warnings(poses, closed) {
         row.notes.push(format!("warning: {w}"));
-    }
-    match converged_metrics(method, poses, closed, &options.body_points) {
-        Ok(c) => row.converged = Some(c),
-        Err(e) => row.notes.push(format!("converged metrics: {e}")),
     }
     let build = |p: &[Pose], c: bool| method.build(p, c);
     match frame_dependence(&build, motion.as_ref(), poses, closed, options) {
@@ -640,16 +663,6 @@ pub fn compare_applicable(
     Ok(table)
 }
 
-fn derivative_mark(source: &str) -> &'static str {
-    if source.starts_with("finite") {
-        "*"
-    } else if source.starts_with("pose") {
-        "†"
-    } else {
-        ""
-    }
-}
-
 fn fmt_num(v: f64) -> String {
     if v == 0.0 {
         "0".into()
@@ -660,6 +673,18 @@ fn fmt_num(v: f64) -> String {
 
 fn fmt_opt(v: Option<f64>) -> String {
     v.map_or_else(|| "-".into(), fmt_num)
+}
+
+/// A converged metric as a table cell: its value, `0`, `impulse(s)` for a jump carried by an
+/// impulse of size `s` (the velocity jump), `∞` for an integral over an impulse, `diverges`.
+fn fmt_converged(c: &Converged, integral: bool) -> String {
+    match c.limit {
+        Limit::Value => fmt_num(c.value),
+        Limit::Zero => "0".into(),
+        Limit::Impulse if integral => "∞".into(),
+        Limit::Impulse => format!("impulse({})", fmt_num(c.value)),
+        Limit::Diverges => "diverges".into(),
+    }
 }
 
 impl MetricsTable {
@@ -677,15 +702,16 @@ impl MetricsTable {
         }
         let mut rows: Vec<Vec<String>> = vec![header];
         for r in &self.rows {
+            let c = &r.smoothness;
             let mut line = vec![
-                format!("{}{}", r.method, derivative_mark(&r.derivatives)),
-                fmt_num(r.velocity_jump),
-                fmt_num(r.angular_velocity_jump),
-                fmt_num(r.acceleration_jump),
-                fmt_num(r.angular_acceleration_jump),
+                r.method.clone(),
+                fmt_converged(&c.velocity_jump, false),
+                fmt_converged(&c.angular_velocity_jump, false),
+                fmt_converged(&c.acceleration_jump, false),
+                fmt_converged(&c.angular_acceleration_jump, false),
             ];
-            line.extend(r.acceleration_energy.iter().map(|&e| fmt_num(e)));
-            line.push(fmt_num(r.angular_acceleration_energy));
+            line.extend(c.acceleration_energy.iter().map(|e| fmt_converged(e, true)));
+            line.push(fmt_converged(&c.angular_acceleration_energy, true));
             line.push(fmt_num(r.interpolation_error));
             for v in [
                 r.frame_dependence,
@@ -743,9 +769,9 @@ impl MetricsTable {
              interp: largest distance to the control poses at their knots (length + radians)\n\
              frame: change of the trajectories when the local frame moves (built on P_i∘C)\n\
              line/circle/helix: largest deviation from an exact screw motion sampled at 6 poses\n\
-             *: finite-difference derivatives (jumps below ~1e-6 are zero)\n\
-             †: differences of the refined poses (step = refined span): the smooth limit motion\n\
-             integrals leave out the impulses at velocity jumps (C0 methods)\n",
+             smoothness columns: every method sampled alike at steps 2^-7, 2^-8, 2^-9 and\n\
+             extrapolated to a vanishing step; impulse(s): the velocity jumps by s, so the\n\
+             acceleration there is an impulse (no finite jump; its integral is ∞)\n",
         );
         out
     }

@@ -65,7 +65,7 @@ use crate::motion::Motion;
 // Methods and their registry.
 pub use catmull_rom_squad::DecoupledSmooth;
 pub use kim_kim_shin::KimKimShin;
-pub use registry::{Method, COMPARISON_LEVELS};
+pub use registry::{Method, Smoothness, COMPARISON_LEVELS};
 pub use slerp_polyline::SlerpPolyline;
 
 // Chaudhry & Cameron.
@@ -97,10 +97,11 @@ pub use ramamoorthi_barr::spline::{
 pub use convergence::{converged_metrics, Converged, ConvergedMetrics, Limit, CONVERGENCE_LEVELS};
 pub use metrics::{
     compare_applicable, compare_methods, evaluate, finite_difference, frame_dependence,
-    kinematics_at, motion_metrics, preservation_errors, preservation_inputs, sampled_difference,
-    Derivatives, MetricsOptions, MetricsRow, MetricsTable, MotionBuilder, Side,
-    DEFAULT_QUADRATURE_SUBINTERVALS, DEFAULT_SAMPLES_PER_SPAN, FD_ACCELERATION_STEP,
-    FD_VELOCITY_STEP, KNOT_OFFSET, MAX_METRIC_SAMPLES, PRESERVATION_POSES,
+    interpolation_error, kinematics_at, preservation_errors, preservation_inputs,
+    sampled_difference, single_step_metrics, Derivatives, MetricsOptions, MetricsRow, MetricsTable,
+    MotionBuilder, Side, SingleStepMetrics, DEFAULT_QUADRATURE_SUBINTERVALS,
+    DEFAULT_SAMPLES_PER_SPAN, FD_ACCELERATION_STEP, FD_VELOCITY_STEP, KNOT_OFFSET,
+    MAX_METRIC_SAMPLES, PRESERVATION_POSES,
 };
 
 // Building blocks.

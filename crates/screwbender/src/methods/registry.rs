@@ -22,6 +22,17 @@ use crate::subdivision::Subdivision;
 /// control span).
 pub const COMPARISON_LEVELS: u32 = 5;
 
+/// The continuity class of a method's motion ([`Method::smoothness`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Smoothness {
+    /// Continuous poses; the velocity jumps at the knots.
+    C0,
+    /// Continuous velocity; the acceleration jumps at the knots.
+    C1,
+    /// Continuous acceleration.
+    C2,
+}
+
 /// A motion method, built from control poses with pose `i` at parameter `u = i`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Method {
@@ -86,6 +97,20 @@ impl Method {
             Method::Cc0 => "cc0",
             Method::Cc1 => "cc1",
             Method::Barr => "barr",
+        }
+    }
+
+    /// The method's continuity class on generic poses, which its converged metrics show: C⁰,
+    /// velocity jumps at the knots (the discrete baseline of Barr et al. joins its dense frames
+    /// by SLERP, so it jumps slightly at each of them); C¹, no velocity jump; C², no
+    /// acceleration jump either. Jarek is classed by what is proven of it, at least C¹.
+    pub fn smoothness(self) -> Smoothness {
+        match self {
+            Method::Polyscrew | Method::Slerp | Method::Cc0 | Method::Barr => Smoothness::C0,
+            Method::FourPoint | Method::Jarek | Method::Decoupled | Method::Rb | Method::Cc1 => {
+                Smoothness::C1
+            }
+            Method::BSpline | Method::Kks => Smoothness::C2,
         }
     }
 

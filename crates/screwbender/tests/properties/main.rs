@@ -19,6 +19,7 @@ mod key_velocities;
 mod local_update_buffers;
 mod mesh;
 mod methods_barr;
+mod methods_continuity;
 mod methods_converged;
 mod methods_metrics;
 mod methods_peers;

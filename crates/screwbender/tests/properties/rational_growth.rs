@@ -98,7 +98,7 @@ fn long_noisy_and_zigzag_sequences_are_flagged() {
     assert!(long.warning().is_some(), "{}", long.growth());
     let per_span = |n: usize, m: Method| {
         let t = compare_methods(&zigzag(n), false, &[m], &MetricsOptions::default()).unwrap();
-        t.rows[0].angular_acceleration_energy / (n - 1) as f64
+        t.rows[0].single_step.angular_acceleration_energy / (n - 1) as f64
     };
     let (c0_short, c0_long) = (per_span(8, Method::Cc0), per_span(60, Method::Cc0));
     let (c1_short, c1_long) = (per_span(8, Method::Cc1), per_span(60, Method::Cc1));
