@@ -6,6 +6,7 @@ use std::ffi::OsString;
 
 use clap::error::{ContextKind, ContextValue, ErrorKind};
 use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
+use clap_complete::Shell;
 
 use crate::args::{Finite, SubdivisionArgs};
 use crate::failure::Failure;
@@ -77,6 +78,9 @@ USAGE:
                                                  without -o)
   screwbender import FILE.glb|.gltf|.csv|.json [--node NAME | --nodes A,B,...] [-o OUT]
                                                  control poses as a motion document
+  screwbender completions bash|zsh|fish          a shell completion script on stdout (also
+                                                 elvish, powershell)
+  screwbender man [COMMAND]                      the manual page (roff) on stdout
   screwbender COMMAND --help | help COMMAND      one command in full
   screwbender help | --help | --version
 
@@ -216,6 +220,28 @@ pub enum Command {
     /// keys) gets a note on standard error; --reduce keeps fewer.
     #[command(args_override_self = true, after_long_help = csv_input!())]
     Import(ImportArgs),
+    /// A shell completion script on stdout
+    ///
+    /// Prints the completion script for SHELL, e.g. for bash:
+    ///   screwbender completions bash > ~/.local/share/bash-completion/completions/screwbender
+    /// for zsh, into a file '_screwbender' in a directory of $fpath; for fish:
+    ///   screwbender completions fish > ~/.config/fish/completions/screwbender.fish
+    #[command(verbatim_doc_comment)]
+    Completions {
+        /// The shell: bash, zsh, fish (also elvish, powershell)
+        #[arg(value_name = "SHELL")]
+        shell: Shell,
+    },
+    /// The manual page (roff) on stdout
+    ///
+    /// Prints screwbender's manual page in roff, or with COMMAND the page of that command
+    /// (screwbender-COMMAND), e.g. 'screwbender man | man -l -' to read it, or
+    /// 'screwbender man compare > screwbender-compare.1' to install one.
+    Man {
+        /// A command whose page to print instead (default: the page of screwbender)
+        #[arg(value_name = "COMMAND")]
+        command: Option<String>,
+    },
 }
 
 /// `screwbender subdivide`.

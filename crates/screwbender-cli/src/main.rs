@@ -17,6 +17,8 @@ use std::ffi::OsString;
 use std::io::{self, Write};
 use std::process::ExitCode;
 
+use clap_complete::Shell;
+
 use screwbender::{
     presets, Motion, MotionDocument, Polyscrew, Pose, Screw, ScrewBender, ScrewKind,
 };
@@ -52,7 +54,41 @@ fn run(args: Vec<OsString>) -> Result<Output, Failure> {
         Command::Rational(a) => compare::rational(a).map(Output::text),
         Command::Export(a) => export::export(a),
         Command::Import(a) => import::import(a),
+        Command::Completions { shell } => Ok(completions(shell)),
+        Command::Man { command } => man(command.as_deref()),
     }
+}
+
+/// The completion script for `shell`, made whole before it is written (the generator cannot
+/// report a write error, so a reader that stops early must not meet it).
+fn completions(shell: Shell) -> Output {
+    let mut script = Vec::new();
+    clap_complete::generate(shell, &mut cli::command(), "screwbender", &mut script);
+    Output::writer(move |w| w.write_all(&script))
+}
+
+/// The manual page of screwbender, or of one of its commands, in roff.
+fn man(command: Option<&str>) -> Result<Output, Failure> {
+    let mut cmd = cli::command();
+    // Built, a command knows its full name (`screwbender compare`) for its synopsis.
+    cmd.build();
+    let cmd = match command {
+        None => cmd,
+        Some(name) => {
+            let sub = cmd.find_subcommand(name).cloned().ok_or_else(|| {
+                Failure(format!(
+                    "man: unknown command '{name}' (try 'screwbender man --help')"
+                ))
+            })?;
+            sub.name(format!("screwbender-{name}"))
+                .version(env!("CARGO_PKG_VERSION"))
+        }
+    };
+    let mut page = Vec::new();
+    clap_mangen::Man::new(cmd)
+        .render(&mut page)
+        .map_err(|e| Failure(format!("writing the manual page: {e}")))?;
+    Ok(Output::writer(move |w| w.write_all(&page)))
 }
 
 fn subdivide(a: SubdivideArgs) -> Result<Output, Failure> {

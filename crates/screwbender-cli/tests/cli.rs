@@ -148,6 +148,8 @@ fn help_names_every_flag() {
         "rational",
         "export",
         "import",
+        "completions",
+        "man",
     ];
     let mut flags = Vec::new();
     for command in commands {
