@@ -218,7 +218,12 @@ pub enum Command {
     /// Reads control poses from a glTF asset (.glb, .gltf), a CSV file or a motion document
     /// (.json) and writes them as a motion document. A file of many poses (samples rather than
     /// keys) gets a note on standard error; --reduce keeps fewer.
-    #[command(args_override_self = true, after_long_help = csv_input!())]
+    // FILE is checked by `import` itself, to say which files it reads.
+    #[command(
+        args_override_self = true,
+        override_usage = "screwbender import [OPTIONS] FILE",
+        after_long_help = csv_input!()
+    )]
     Import(ImportArgs),
     /// A shell completion script on stdout
     ///
