@@ -448,6 +448,13 @@ pub fn parse(args: Vec<OsString>) -> Result<Parsed, Failure> {
         .and_then(|a| a.to_str())
         .filter(|a| command().find_subcommand(a).is_some())
         .map(str::to_string);
+    // An option missing its value is the last argument, as typed (`-o` rather than
+    // `--output`).
+    let last = args
+        .last()
+        .and_then(|a| a.to_str())
+        .and_then(|a| a.split('=').next())
+        .map(str::to_string);
     let matches = command().try_get_matches_from(args);
     match matches.and_then(|m| Cli::from_arg_matches(&m)) {
         Ok(cli) => Ok(Parsed::Run(Box::new(cli.command))),
@@ -455,7 +462,7 @@ pub fn parse(args: Vec<OsString>) -> Result<Parsed, Failure> {
             ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
                 Ok(Parsed::Print(e.render().to_string()))
             }
-            _ => Err(Failure(usage_error(&e, name.as_deref()))),
+            _ => Err(Failure(usage_error(&e, name.as_deref(), last.as_deref()))),
         },
     }
 }
@@ -463,7 +470,7 @@ pub fn parse(args: Vec<OsString>) -> Result<Parsed, Failure> {
 /// One line for a usage error found by clap: in the words of the CLI's other messages
 /// (`unknown option '--x'`, `--levels needs a value`) where it has such words, so that a script
 /// matching them keeps working, else clap's own first line; both point at the command's help.
-fn usage_error(e: &clap::Error, command_name: Option<&str>) -> String {
+fn usage_error(e: &clap::Error, command_name: Option<&str>, last: Option<&str>) -> String {
     let context = |kind| match e.get(kind) {
         Some(ContextValue::String(s)) => Some(s.as_str()),
         _ => None,
@@ -507,7 +514,10 @@ fn usage_error(e: &clap::Error, command_name: Option<&str>) -> String {
         (ErrorKind::InvalidValue, Some(arg)) => {
             let name = arg_name(arg);
             match context(ContextKind::InvalidValue) {
-                Some("") | None => format!("{name} needs a value"),
+                Some("") | None => match last {
+                    Some(typed) if typed.starts_with('-') => format!("{typed} needs a value"),
+                    _ => format!("{name} needs a value"),
+                },
                 Some(value) => {
                     let valid = match e.get(ContextKind::ValidValue) {
                         Some(ContextValue::Strings(v)) => format!(" (expected {})", v.join(", ")),

@@ -157,6 +157,8 @@ fn usage_errors_point_at_the_command_help() {
     );
     let line = refuses(&["export", "--format", "csv", "--levels"]);
     assert!(line.contains("--levels needs a value"), "{line}");
+    let line = refuses(&["export", "--format", "csv", "-o"]);
+    assert!(line.contains("-o needs a value"), "{line}");
     let line = refuses(&["preset", "circle4", "pendulum"]);
     assert!(line.contains("'pendulum'"), "{line}");
     // Values the CLI checks itself keep their own words, without a pointer.
