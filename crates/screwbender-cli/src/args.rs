@@ -1,81 +1,52 @@
-//! Reading a command's arguments: option values, the one positional FILE, numbers, and the
-//! subdivision options shared by `subdivide`, `eval` and `export`.
+//! Option values: the subdivision options shared by `subdivide`, `eval` and `export`, and the
+//! checks that turn an option's text into a number, a list or a level count with a message
+//! naming the option.
 
+use std::ffi::OsStr;
+
+use clap::builder::TypedValueParser;
+use clap::error::ErrorKind;
 use screwbender::{Rules, Scheme, Subdivision};
 
 use crate::failure::Failure;
 
-/// Walks one command's arguments.
-pub struct ArgReader<'a> {
-    it: std::slice::Iter<'a, String>,
-    /// The positional FILE argument, if one was given.
-    pub file: Option<String>,
-}
-
-impl<'a> ArgReader<'a> {
-    /// A reader over `args` (the command's arguments, without the command name).
-    pub fn new(args: &'a [String]) -> ArgReader<'a> {
-        ArgReader {
-            it: args.iter(),
-            file: None,
-        }
-    }
-
-    /// The next argument.
-    pub fn next_arg(&mut self) -> Option<&'a str> {
-        self.it.next().map(String::as_str)
-    }
-
-    /// The value that must follow option `name`.
-    pub fn value(&mut self, name: &str) -> Result<String, Failure> {
-        self.it
-            .next()
-            .cloned()
-            .ok_or_else(|| Failure(format!("{name} needs a value")))
-    }
-
-    /// An argument no option of the command claimed: an unknown `--option` is an error,
-    /// anything else is the FILE (at most one).
-    pub fn positional(&mut self, arg: &str) -> Result<(), Failure> {
-        if arg.starts_with("--") {
-            return Err(Failure(format!("unknown option '{arg}' (try --help)")));
-        }
-        if self.file.replace(arg.to_string()).is_some() {
-            return Err(Failure("more than one input FILE given".into()));
-        }
-        Ok(())
-    }
-}
-
-/// `--scheme`, `--s`, `--rules`, `--levels` and `--open`.
-#[derive(Default)]
+/// `--scheme`, `--s`, `--rules`, `--levels` and `--open`, as given: [`Self::subdivision`] is
+/// the one place they become a [`Subdivision`], so that the names, the defaults and the
+/// messages stay those of the core.
+#[derive(clap::Args)]
+#[command(next_help_heading = "Subdivision options")]
 pub struct SubdivisionArgs {
-    scheme: Option<Scheme>,
+    /// Subdivision scheme: bspline, fourpoint or jarek (default: fourpoint)
+    #[arg(long, value_name = "SCHEME", allow_hyphen_values = true)]
+    scheme: Option<String>,
+    /// Use the J_s family with parameter S instead of --scheme (S=0 4-point, S=0.5 Jarek, S=1
+    /// B-spline; direct rules only)
+    #[arg(long, value_name = "S", value_parser = Finite, allow_hyphen_values = true)]
     s: Option<f64>,
-    rules: Rules,
-    levels: Option<u32>,
-    /// `--open` was given (overrides the document's `closed`).
+    /// Rule set: the revised paper's direct rules (direct, the default) or the first version's
+    /// split-then-tweak rules (split-then-tweak, also: split)
+    #[arg(long, value_name = "RULES", allow_hyphen_values = true)]
+    rules: Option<String>,
+    /// Subdivision steps (default 5; eval: 0 = plain polyscrew)
+    #[arg(long, value_name = "N", allow_hyphen_values = true)]
+    levels: Option<String>,
+    /// Treat the poses as an open sequence (overrides the document's 'closed')
+    #[arg(long)]
     pub open: bool,
 }
 
 impl SubdivisionArgs {
-    /// Consumes `flag` (and its value) if it is one of these options; `Ok(false)` otherwise.
-    pub fn take(&mut self, flag: &str, args: &mut ArgReader) -> Result<bool, Failure> {
-        match flag {
-            "--scheme" => self.scheme = Some(args.value(flag)?.parse::<Scheme>()?),
-            "--s" => self.s = Some(number(flag, &args.value(flag)?)?),
-            "--rules" => self.rules = args.value(flag)?.parse::<Rules>()?,
-            "--levels" => self.levels = Some(levels(&args.value(flag)?)?),
-            "--open" => self.open = true,
-            _ => return Ok(false),
-        }
-        Ok(true)
-    }
-
     /// The subdivision asked for (`--s` selects the J_s family), with `default_levels` when
     /// `--levels` was not given.
     pub fn subdivision(&self, default_levels: u32) -> Result<Subdivision, Failure> {
-        let scheme = match (self.scheme, self.s) {
+        let scheme = self
+            .scheme
+            .as_deref()
+            .map(str::parse::<Scheme>)
+            .transpose()?;
+        let rules = self.rules.as_deref().map(str::parse::<Rules>).transpose()?;
+        let levels = self.levels.as_deref().map(levels).transpose()?;
+        let scheme = match (scheme, self.s) {
             (Some(_), Some(_)) => {
                 return Err(Failure(
                     "give either --scheme or --s (the J_s family), not both".into(),
@@ -87,9 +58,31 @@ impl SubdivisionArgs {
         };
         Ok(Subdivision::new(
             scheme,
-            self.rules,
-            self.levels.unwrap_or(default_levels),
+            rules.unwrap_or_default(),
+            levels.unwrap_or(default_levels),
         ))
+    }
+}
+
+/// Parses an option's value as a finite number, refusing anything else with the message of
+/// [`number`] (so a bad `--u` is reported as it is met, before the input is read).
+#[derive(Clone, Copy)]
+pub struct Finite;
+
+impl TypedValueParser for Finite {
+    type Value = f64;
+
+    fn parse_ref(
+        &self,
+        _cmd: &clap::Command,
+        arg: Option<&clap::Arg>,
+        value: &OsStr,
+    ) -> Result<f64, clap::Error> {
+        let name = arg
+            .and_then(clap::Arg::get_long)
+            .map_or_else(String::new, |long| format!("--{long}"));
+        number(&name, &value.to_string_lossy())
+            .map_err(|Failure(message)| clap::Error::raw(ErrorKind::ValueValidation, message))
     }
 }
 

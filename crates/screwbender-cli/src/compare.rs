@@ -15,7 +15,7 @@ use screwbender::methods::{
 };
 use screwbender::{Error, ErrorKind, Pose, Subdivision, MAX_DOCUMENT_BYTES};
 
-use crate::args::{number, ArgReader};
+use crate::cli::RationalArgs;
 use crate::failure::Failure;
 use crate::input::read_document;
 
@@ -152,7 +152,7 @@ pub fn warn_subdivision(sub: &Subdivision, poses: &[Pose], closed: bool) {
     }
 }
 
-/// The options of `screwbender rational`.
+/// The options of `screwbender rational`, checked.
 struct RationalOptions {
     continuity: Continuity,
     triangles: bool,
@@ -160,49 +160,35 @@ struct RationalOptions {
     file: Option<String>,
 }
 
-fn parse_rational(args: &[String]) -> Result<RationalOptions, Failure> {
-    let mut r = ArgReader::new(args);
-    let (mut c1, mut end) = (true, EndCondition::ZeroCurvatureStart);
-    let (mut triangles, mut closing_time) = (false, None);
-    while let Some(arg) = r.next_arg() {
-        match arg {
-            "--continuity" => {
-                c1 = match r.value(arg)?.to_ascii_lowercase().as_str() {
-                    "c0" => false,
-                    "c1" => true,
-                    other => {
-                        return Err(Failure(format!(
-                            "--continuity: unknown value '{other}' (expected c0 or c1)"
-                        )))
-                    }
-                }
-            }
-            "--end" => {
-                end = match r.value(arg)?.as_str() {
-                    "18" => EndCondition::ZeroCurvatureStart,
-                    "19" => EndCondition::ZeroCurvatureEnd,
-                    other => {
-                        return Err(Failure(format!(
-                            "--end: unknown value '{other}' (expected 18: zero curvature at the \
-                             start, or 19: at the end)"
-                        )))
-                    }
-                }
-            }
-            "--triangles" => triangles = true,
-            "--closing-time" => closing_time = Some(number(arg, &r.value(arg)?)?),
-            other => r.positional(other)?,
+fn rational_options(a: RationalArgs) -> Result<RationalOptions, Failure> {
+    let c1 = match a.continuity.map(|c| c.to_ascii_lowercase()).as_deref() {
+        None | Some("c1") => true,
+        Some("c0") => false,
+        Some(other) => {
+            return Err(Failure(format!(
+                "--continuity: unknown value '{other}' (expected c0 or c1)"
+            )))
         }
-    }
+    };
+    let end = match a.end.as_deref() {
+        None | Some("18") => EndCondition::ZeroCurvatureStart,
+        Some("19") => EndCondition::ZeroCurvatureEnd,
+        Some(other) => {
+            return Err(Failure(format!(
+                "--end: unknown value '{other}' (expected 18: zero curvature at the start, or \
+                 19: at the end)"
+            )))
+        }
+    };
     Ok(RationalOptions {
         continuity: if c1 {
             Continuity::C1(end)
         } else {
             Continuity::C0
         },
-        triangles,
-        closing_time,
-        file: r.file,
+        triangles: a.triangles,
+        closing_time: a.closing_time,
+        file: a.file,
     })
 }
 
@@ -279,8 +265,8 @@ fn parse_triangles(text: &str) -> Result<Vec<TriangleSample>, Error> {
 /// times, else one second per span) or, with `--triangles`, to a raw triangle sequence
 /// ([`parse_triangles`]; closed only with `--closing-time`, C⁰). A C¹ fit whose recursion runs
 /// away gets a `screwbender: warning: …` line on standard error.
-pub fn rational(args: &[String]) -> Result<String, Failure> {
-    let o = parse_rational(args)?;
+pub fn rational(args: RationalArgs) -> Result<String, Failure> {
+    let o = rational_options(args)?;
     let motion = if o.triangles {
         let (name, text) = read_text(o.file.as_deref())?;
         let samples = parse_triangles(&text).map_err(|e| Failure(format!("{name}: {e}")))?;

@@ -10,13 +10,13 @@ use screwbender::{
     DEFAULT_TOLERANCE,
 };
 
-use crate::args::{number, numbers, velocities, ArgReader, SubdivisionArgs};
+use crate::args::{numbers, velocities};
+use crate::cli::ExportArgs;
 use crate::failure::Failure;
 use crate::input::read_document;
 use crate::output::Output;
 
-/// Parsed `export` options.
-#[derive(Default)]
+/// The `export` options, checked (the subdivision options stay with [`ExportArgs::sub`]).
 struct ExportOptions {
     format: Option<ExportFormat>,
     tolerance: Option<f64>,
@@ -25,45 +25,50 @@ struct ExportOptions {
     velocities: Option<Vec<Option<f64>>>,
     radius: Option<f64>,
     point: Option<DVec3>,
-    sub: SubdivisionArgs,
     control_nodes: bool,
     verbose: bool,
-    file: Option<String>,
     output: Option<String>,
 }
 
-fn parse(args: &[String]) -> Result<ExportOptions, Failure> {
-    let mut o = ExportOptions::default();
-    let mut r = ArgReader::new(args);
-    while let Some(arg) = r.next_arg() {
-        if o.sub.take(arg, &mut r)? {
-            continue;
+fn check(a: &ExportArgs) -> Result<ExportOptions, Failure> {
+    let format = a
+        .format
+        .as_deref()
+        .map(|f| ExportFormat::parse(f, "--format"))
+        .transpose()?;
+    let point = match a.point.as_deref() {
+        None => None,
+        Some(text) => {
+            let v = numbers("--point", text)?;
+            let [x, y, z] = v[..] else {
+                return Err(Failure(format!(
+                    "--point: {} number(s) given, expected x,y,z",
+                    v.len()
+                )));
+            };
+            Some(DVec3::new(x, y, z))
         }
-        match arg {
-            "--format" => o.format = Some(ExportFormat::parse(&r.value(arg)?, "--format")?),
-            "--tolerance" => o.tolerance = Some(number(arg, &r.value(arg)?)?),
-            "--fps" => o.fps = Some(number(arg, &r.value(arg)?)?),
-            "--times" => o.times = Some(numbers(arg, &r.value(arg)?)?),
-            "--velocities" => o.velocities = Some(velocities(arg, &r.value(arg)?)?),
-            "--radius" => o.radius = Some(number(arg, &r.value(arg)?)?),
-            "--point" => {
-                let v = numbers(arg, &r.value(arg)?)?;
-                let [x, y, z] = v[..] else {
-                    return Err(Failure(format!(
-                        "--point: {} number(s) given, expected x,y,z",
-                        v.len()
-                    )));
-                };
-                o.point = Some(DVec3::new(x, y, z));
-            }
-            "--control-nodes" => o.control_nodes = true,
-            "--verbose" | "-v" => o.verbose = true,
-            "-o" | "--output" => o.output = Some(r.value("-o")?),
-            other => r.positional(other)?,
-        }
-    }
-    o.sub.subdivision(5)?;
-    o.file = r.file;
+    };
+    let o = ExportOptions {
+        format,
+        tolerance: a.tolerance,
+        fps: a.fps,
+        times: a
+            .times
+            .as_deref()
+            .map(|t| numbers("--times", t))
+            .transpose()?,
+        velocities: a
+            .velocities
+            .as_deref()
+            .map(|v| velocities("--velocities", v))
+            .transpose()?,
+        radius: a.radius,
+        point,
+        control_nodes: a.control_nodes,
+        verbose: a.verbose,
+        output: a.output.clone(),
+    };
     if o.tolerance.is_some() && o.fps.is_some() {
         return Err(Failure(
             "give either --tolerance (adaptive sampling) or --fps (fixed rate), not both".into(),
@@ -90,21 +95,22 @@ fn write(path: &Path, data: &[u8]) -> Result<(), Failure> {
 }
 
 /// Runs `screwbender export`; returns what goes to standard output (CSV without `-o`).
-pub fn export(args: &[String]) -> Result<Output, Failure> {
-    let o = parse(args)?;
+pub fn export(args: ExportArgs) -> Result<Output, Failure> {
+    let o = check(&args)?;
+    // The subdivision options are checked before the input is read.
+    let sub = args.sub.subdivision(5)?;
     let format = o
         .format
         .ok_or_else(|| Failure("export needs --format glb|gltf|csv".into()))?;
     if format != ExportFormat::Csv && o.output.is_none() {
         return Err(Failure("export --format glb|gltf needs -o OUT".into()));
     }
-    let mut doc = read_document(o.file.as_deref())?;
-    doc.set_closed(doc.closed && !o.sub.open);
+    let mut doc = read_document(args.file.as_deref())?;
+    doc.set_closed(doc.closed && !args.sub.open);
     // Key times and velocities: the options override the document's own.
     let times = o.times.clone().or_else(|| doc.times.clone());
     let given = o.velocities.clone().or_else(|| doc.velocities.clone());
     doc.set_timing(times, given)?;
-    let sub = o.sub.subdivision(5)?;
     crate::compare::warn_subdivision(&sub, &doc.poses, doc.closed);
     let object = PresetObject::of(&doc);
     let out = o.output.as_deref();

@@ -12,7 +12,8 @@ use screwbender::{
     MAX_GLTF_BYTES,
 };
 
-use crate::args::{number, ArgReader};
+use crate::args::number;
+use crate::cli::ImportArgs;
 use crate::failure::Failure;
 use crate::output::Output;
 
@@ -89,33 +90,20 @@ fn reduction(text: &str) -> Result<Reduction, Failure> {
 }
 
 /// Runs `screwbender import`; returns the document for standard output (empty with `-o`).
-pub fn import(args: &[String]) -> Result<Output, Failure> {
-    let mut output = None;
-    let mut selection = NodeSelection::Auto;
-    let mut open = false;
-    let mut verbose = false;
-    let mut reduce = None;
-    let mut r = ArgReader::new(args);
-    while let Some(arg) = r.next_arg() {
-        match arg {
-            "--node" => selection = NodeSelection::Animated(r.value(arg)?),
-            "--nodes" => {
-                selection = NodeSelection::Transforms(
-                    r.value(arg)?
-                        .split(',')
-                        .map(|s| s.trim().to_string())
-                        .collect(),
-                )
-            }
-            "--open" => open = true,
-            "--reduce" => reduce = Some(reduction(&r.value(arg)?)?),
-            "--verbose" | "-v" => verbose = true,
-            "-o" | "--output" => output = Some(r.value("-o")?),
-            other => r.positional(other)?,
+pub fn import(args: ImportArgs) -> Result<Output, Failure> {
+    // `--node` and `--nodes` override each other: the last one given counts.
+    let selection = match (args.node, args.nodes) {
+        (Some(name), _) => NodeSelection::Animated(name),
+        (None, Some(names)) => {
+            NodeSelection::Transforms(names.split(',').map(|s| s.trim().to_string()).collect())
         }
-    }
-    let file = r.file;
-    let file = file.ok_or_else(|| Failure("import needs a FILE (.glb, .gltf or .csv)".into()))?;
+        (None, None) => NodeSelection::Auto,
+    };
+    let reduce = args.reduce.as_deref().map(reduction).transpose()?;
+    let (open, verbose, output) = (args.open, args.verbose, args.output);
+    let file = args
+        .file
+        .ok_or_else(|| Failure("import needs a FILE (.glb, .gltf or .csv)".into()))?;
     let path = Path::new(&file);
     let bytes = read_limited(path)?;
     let dir = path.parent().unwrap_or(Path::new("."));
