@@ -5,6 +5,7 @@ from typing import Literal, Optional, Sequence, Tuple, TypedDict, Union
 
 import numpy as np
 import numpy.typing as npt
+from typing_extensions import deprecated
 
 #: Pose input: one pose ``(7,)`` (``x y z qw qx qy qz``) or ``(4, 4)``, or a batch ``(n, 7)`` /
 #: ``(n, 4, 4)``; any array-like of real numbers (floats or integers).
@@ -13,7 +14,11 @@ PoseArray = npt.ArrayLike
 Parameters = Union[float, npt.ArrayLike]
 FloatArray = npt.NDArray[np.float64]
 SchemeName = Literal["bspline", "fourpoint", "jarek", "j"]
-RulesName = Literal["direct", "split-then-tweak", "split"]
+#: A rule set as ``Motion.rules`` reports it (the id of files, the JS API and the CLI).
+RulesId = Literal["direct", "split"]
+#: A rule set as accepted: the ids, and the core's former id ``"split-then-tweak"`` (the core's
+#: other aliases, such as ``"v1"`` and ``"v2"``, are accepted too).
+RulesName = Literal["direct", "split", "split-then-tweak"]
 PathLike = Union[str, "os.PathLike[str]"]
 
 __version__: str
@@ -36,10 +41,11 @@ class Motion:
     or an open sequence. ``scheme``: ``"bspline"``, ``"fourpoint"`` (default) or ``"jarek"``;
     or ``s=``, the J_s family's parameter (``0`` 4-point, ``0.5`` Jarek, ``1`` B-spline,
     ``|s| <= 4``, direct rules only). ``levels``: subdivision steps (default 5; ``0`` is the plain
-    polyscrew). ``rules``: ``"direct"`` (the revised paper's) or ``"split-then-tweak"`` (the
-    first version's; also ``"split"``). ``times``: when each key is reached, in seconds (``n``
-    for an open motion, ``n + 1`` for a cycle); ``velocities``: the rate at each key in poses per
-    second, ``None`` where free (both used by ``export``).
+    polyscrew). ``rules``: ``"direct"`` (the revised paper's) or ``"split"`` (the first
+    version's split-then-tweak rules; ``"split-then-tweak"`` is accepted too). ``times``: when
+    each key is reached, in seconds (``n`` for an open motion, ``n + 1`` for a cycle);
+    ``velocities``: the rate at each key in poses per second, ``None`` where free (both used by
+    ``export``).
 
     Parameters ``u`` are in coarse units: control pose ``i`` sits at ``u = i``; refined pose
     ``j`` at ``u = j / 2**levels``. Every setter validates the whole new state and raises
@@ -104,7 +110,11 @@ class Motion:
     def copy(self) -> "Motion": ...
     def __copy__(self) -> "Motion": ...
     def __deepcopy__(self, memo: object) -> "Motion": ...
-    def __len__(self) -> int: ...
+    def __len__(self) -> int:
+        """The number of control poses (also ``pose_count``)."""
+    @property
+    def pose_count(self) -> int:
+        """The number of control poses (JS ``poseCount``)."""
     poses: FloatArray
     """The control poses, ``(n, 7)``; assign ``(n, 7)`` or ``(n, 4, 4)``."""
     def pose(self, i: int) -> FloatArray:
@@ -119,7 +129,12 @@ class Motion:
     """``"bspline"``, ``"fourpoint"``, ``"jarek"``, or ``"j"`` for the J_s family."""
     s: float
     """The J_s parameter of the scheme (``1`` B-spline, ``0`` 4-point, ``0.5`` Jarek); setting it selects the J_s family."""
-    rules: Literal["direct", "split-then-tweak"]
+    @property
+    def rules(self) -> RulesId:
+        """The rule set: ``"direct"`` or ``"split"`` (the id of files, the JS API and the CLI);
+        setting it also accepts ``"split-then-tweak"``."""
+    @rules.setter
+    def rules(self, value: RulesName) -> None: ...
     levels: int
     def warnings(self) -> list[str]:
         """Warnings about the options on these poses (e.g. a span close to a half turn)."""
@@ -131,15 +146,24 @@ class Motion:
         """``(0, n)`` for a cycle of ``n`` poses, ``(0, m - 1)`` for an open sequence."""
     def subdivide(self) -> FloatArray:
         """The refined poses, ``(N, 7)``."""
+    def refined_matrices(self) -> FloatArray:
+        """The refined poses as homogeneous matrices, ``(N, 4, 4)`` (JS ``refinedMatrices``)."""
+    @deprecated("Motion.matrices() is deprecated: use Motion.refined_matrices()")
     def matrices(self) -> FloatArray:
-        """The refined poses as homogeneous matrices, ``(N, 4, 4)``."""
+        """Former name of :meth:`refined_matrices`, kept for one release: it warns
+        (``DeprecationWarning``)."""
     def poses_at(self, u: Parameters) -> FloatArray:
         """The poses at ``u``: ``(7,)`` for a number, ``u.shape + (7,)`` for an array."""
     def sample(self, count: int) -> FloatArray:
         """``count`` poses at uniformly spaced parameters, ``(count, 7)``."""
-    def kinematics(self, u: Parameters, point: Optional[npt.ArrayLike] = None) -> Kinematics:
+    def kinematics_at(self, u: Parameters, point: Optional[npt.ArrayLike] = None) -> Kinematics:
         """Closed-form kinematics at ``u`` of the body point ``point`` (local coordinates,
-        default the origin), world frame, per unit of ``u``: arrays of shape ``u.shape + (3,)``."""
+        default the origin), world frame, per unit of ``u``: arrays of shape ``u.shape + (3,)``
+        (JS ``kinematicsAt``)."""
+    @deprecated("Motion.kinematics() is deprecated: use Motion.kinematics_at()")
+    def kinematics(self, u: Parameters, point: Optional[npt.ArrayLike] = None) -> Kinematics:
+        """Former name of :meth:`kinematics_at`, kept for one release: it warns
+        (``DeprecationWarning``)."""
 
 def screw(a: PoseArray, t: Parameters, b: PoseArray) -> FloatArray:
     """``screw(a, t, b)``: the pose after the fraction ``t`` of the screw motion from ``a`` to ``b``
