@@ -1,7 +1,7 @@
 """Type stubs of the extension module `screwbender._screwbender` (the Rust core, PyO3)."""
 
 import os
-from typing import Literal, Optional, Sequence, Tuple, TypedDict, Union
+from typing import Any, Literal, Optional, Sequence, Tuple, TypedDict, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -19,6 +19,11 @@ RulesId = Literal["direct", "split"]
 #: A rule set as accepted: the ids, and the core's former id ``"split-then-tweak"`` (the core's
 #: other aliases, such as ``"v1"`` and ``"v2"``, are accepted too).
 RulesName = Literal["direct", "split", "split-then-tweak"]
+#: A method of the comparison (``compare_methods``).
+MethodName = Literal[
+    "polyscrew", "bspline", "fourpoint", "jarek", "slerp", "decoupled", "kks", "rb", "cc0",
+    "cc1", "barr",
+]
 PathLike = Union[str, "os.PathLike[str]"]
 
 __version__: str
@@ -31,6 +36,22 @@ class Kinematics(TypedDict):
     acceleration: FloatArray
     angular_velocity: FloatArray
     angular_acceleration: FloatArray
+
+class MetricsTable(TypedDict):
+    """The comparison table (``compare_methods``), as ``screwbender compare --json`` prints it
+    and the JS API's ``Motion.compareMethods`` returns it."""
+
+    pose_count: int
+    closed: bool
+    #: The body points (local coordinates) whose trajectories are measured.
+    body_points: list[list[float]]
+    #: One dict per method, in table order: ``method`` (its name) and the core's metrics, under
+    #: the names of the CLI's JSON (a metric that could not be computed is absent or ``None``,
+    #: with the reason in ``notes``).
+    rows: list[dict[str, Any]]
+    #: The methods left out because they do not support these poses, with the reason
+    #: (``"cc1: …"``); only when ``methods`` is not given.
+    skipped: list[str]
 
 class Motion:
     """Control poses (a cycle or an open sequence) smoothed by screw subdivision.
@@ -164,6 +185,15 @@ class Motion:
     def kinematics(self, u: Parameters, point: Optional[npt.ArrayLike] = None) -> Kinematics:
         """Former name of :meth:`kinematics_at`, kept for one release: it warns
         (``DeprecationWarning``)."""
+    def compare_methods(
+        self,
+        methods: Union[None, str, Sequence[MethodName]] = None,
+        body_points: Optional[npt.ArrayLike] = None,
+    ) -> MetricsTable:
+        """The metrics of the comparison methods on the control poses (``closed`` as this
+        motion; its scheme, rules and levels play no part), as ``screwbender compare --json``
+        prints them and JS ``Motion.compareMethods`` returns them: ``compare_methods(m.poses,
+        m.closed, methods, body_points)``."""
 
 def screw(a: PoseArray, t: Parameters, b: PoseArray) -> FloatArray:
     """``screw(a, t, b)``: the pose after the fraction ``t`` of the screw motion from ``a`` to ``b``
@@ -175,6 +205,30 @@ def screw(a: PoseArray, t: Parameters, b: PoseArray) -> FloatArray:
     -> ``t.shape + (7,)`` (the logarithm computed once); or batches ``(n, 7)`` / ``(n, 4, 4)`` (one
     side may be a single pose) with ``t`` a number or ``(n,)`` -> ``(n, 7)``, computed several at a
     time on SIMD lanes, bit for bit the same as one at a time.
+    """
+
+def compare_methods(
+    poses: PoseArray,
+    closed: bool = True,
+    methods: Union[None, str, Sequence[MethodName]] = None,
+    body_points: Optional[npt.ArrayLike] = None,
+) -> MetricsTable:
+    """The metrics of the comparison methods on the control poses ``poses`` (pose ``i`` at
+    ``u = i``; ``closed``: a cycle), the table ``screwbender compare --json`` prints (the same
+    field names, parsed with ``json.loads``) and JS ``Motion.compareMethods`` returns.
+
+    ``methods``: ``None`` (every method that applies; one that does not support these poses is
+    listed in ``skipped``), a list of names (``"polyscrew"``, ``"bspline"``, ``"fourpoint"``,
+    ``"jarek"``, ``"slerp"``, ``"decoupled"``, ``"kks"``, ``"rb"``, ``"cc0"``, ``"cc1"``,
+    ``"barr"``; case-insensitive, a name given twice is measured once) or one string of names
+    separated by commas (as the CLI's ``--methods``). ``body_points``: the local points whose
+    trajectories are measured, ``(k, 3)`` with ``k`` from 1 to 16 (default ``(0, 0, 0)`` and
+    ``(2, 0, 0)``). The CLI's extra ``objectives`` (when ``barr`` is named) are not computed.
+
+    An unknown name raises ``ValueError`` naming it (``methods[1]: unknown value 'x' (expected
+    polyscrew, …)``); a named method that rejects the poses (``cc1`` on a cycle) raises
+    ``ValueError`` prefixed with its name. Computed without the GIL; it takes a while (every
+    metric is measured at several steps).
     """
 
 def presets() -> list[str]:

@@ -22,7 +22,7 @@ use crate::convert::{
     detached, flag, number, optional_number, optional_text, parameters, pose_from, poses_from,
     poses_to_array, text, to_array, value_error, write_matrices, write_rows, POSE_STRIDE,
 };
-use crate::files;
+use crate::{compare, files};
 
 /// The default number of subdivision levels (as the CLI and the JS API).
 pub const DEFAULT_LEVELS: u32 = 5;
@@ -825,6 +825,20 @@ impl PyMotion {
             c"Motion.kinematics() is deprecated: use Motion.kinematics_at()",
         )?;
         self.kinematics_at(py, u, point)
+    }
+
+    /// The metrics of the comparison methods on the control poses (the motion's own scheme,
+    /// rules and levels play no part), as `screwbender compare --json` prints them: see
+    /// `compare_methods` in `screwbender/_screwbender.pyi`.
+    #[pyo3(signature = (methods=None, body_points=None))]
+    fn compare_methods<'py>(
+        &self,
+        py: Python<'py>,
+        methods: Option<&Bound<'py, PyAny>>,
+        body_points: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let doc = &self.state.doc;
+        compare::table(py, &doc.poses, doc.closed, methods, body_points)
     }
 
     /// The number of control poses (also `len(m)`).
