@@ -3,7 +3,8 @@
 //! set of control poses, as `screwbender compare --json` prints them and the JS API's
 //! `Motion.compareMethods` returns them.
 //!
-//! The table crosses into Python as the core's own JSON ([`MetricsTable::to_json`]) read by
+//! The table crosses into Python as the core's own JSON
+//! ([`MetricsTable::to_json`](screwbender::methods::MetricsTable::to_json)) read by
 //! `json.loads`: the three APIs then agree on every field name by construction, and a field the
 //! core adds or renames reaches Python without a change here.
 
