@@ -3,7 +3,9 @@
 Control poses (a cycle or an open sequence) are smoothed by Split&Tweak subdivision on screws
 (A. Powell and J. Rossignac, *ScrewBender: Polyscrew Subdivision for Smoothing Interpolating
 Motions*): cubic B-spline, 4-point and Jarek schemes, the revised paper's ``"direct"`` rules and
-the first version's ``"split-then-tweak"`` rules, and the J_s family (parameter ``s``).
+the first version's split-then-tweak rules (id ``"split"``), and the J_s family (parameter
+``s``). :func:`compare_methods` measures the other methods of the comparison on the same poses,
+as ``screwbender compare --json``.
 
 Poses are numpy arrays: ``(n, 7)`` rows ``x y z qw qx qy qz`` (quaternions scalar first) or
 ``(n, 4, 4)`` homogeneous matrices, accepted everywhere a pose array is (so ``modern_robotics``,
@@ -28,6 +30,7 @@ from ._screwbender import (
     MAX_REFINED_POSES,
     Motion,
     __version__,
+    compare_methods,
     preset_descriptions,
     presets,
     screw,
@@ -38,6 +41,7 @@ __all__ = [
     "Figure",
     "Motion",
     "__version__",
+    "compare_methods",
     "preset_descriptions",
     "presets",
     "screw",

@@ -117,7 +117,7 @@ class Figure(anywidget.AnyWidget):
 
     Options: ``closed``; ``scheme`` (``"bspline"``, ``"fourpoint"``, ``"jarek"``) or ``s`` (the
     J_s family); ``levels`` (0 to 12 in the figure); ``rules`` (``"direct"``,
-    ``"split-then-tweak"``); ``show`` (layers: ``"strobe control trajectories polyscrew polygon
+    ``"split"``); ``show`` (layers: ``"strobe control trajectories polyscrew polygon
     triads grid"``); ``strobe`` (copies of the object); ``camera`` (``"iso"``, ``"front"``,
     ``"side"``, ``"top"`` or ``"yaw pitch [distance]"`` in degrees); ``autoplay``;
     ``controls`` (``"none"``, ``"minimal"``, ``"full"``); ``theme`` (``"light"``, ``"dark"``);
@@ -238,7 +238,11 @@ class Figure(anywidget.AnyWidget):
             change = {name: proposal["value"]}
             if name == "scheme" and proposal["value"] is not None:
                 change["s"] = None
-            self._motion_with(**change)
+            m = self._motion_with(**change)
+            if name == "rules":
+                # The id the Motion reports (an alias such as "split-then-tweak" becomes
+                # "split"), so that the figure and its page hold one name per rule set.
+                return m.rules
         return proposal["value"]
 
     @traitlets.observe("scheme")

@@ -1,10 +1,11 @@
 """Type stubs of the extension module `screwbender._screwbender` (the Rust core, PyO3)."""
 
 import os
-from typing import Literal, Optional, Sequence, Tuple, TypedDict, Union
+from typing import Any, Literal, Optional, Sequence, Tuple, TypedDict, Union
 
 import numpy as np
 import numpy.typing as npt
+from typing_extensions import deprecated
 
 #: Pose input: one pose ``(7,)`` (``x y z qw qx qy qz``) or ``(4, 4)``, or a batch ``(n, 7)`` /
 #: ``(n, 4, 4)``; any array-like of real numbers (floats or integers).
@@ -13,7 +14,16 @@ PoseArray = npt.ArrayLike
 Parameters = Union[float, npt.ArrayLike]
 FloatArray = npt.NDArray[np.float64]
 SchemeName = Literal["bspline", "fourpoint", "jarek", "j"]
-RulesName = Literal["direct", "split-then-tweak", "split"]
+#: A rule set as ``Motion.rules`` reports it (the id of files, the JS API and the CLI).
+RulesId = Literal["direct", "split"]
+#: A rule set as accepted: the ids, and the core's former id ``"split-then-tweak"`` (the core's
+#: other aliases, such as ``"v1"`` and ``"v2"``, are accepted too).
+RulesName = Literal["direct", "split", "split-then-tweak"]
+#: A method of the comparison (``compare_methods``).
+MethodName = Literal[
+    "polyscrew", "bspline", "fourpoint", "jarek", "slerp", "decoupled", "kks", "rb", "cc0",
+    "cc1", "barr",
+]
 PathLike = Union[str, "os.PathLike[str]"]
 
 __version__: str
@@ -27,6 +37,22 @@ class Kinematics(TypedDict):
     angular_velocity: FloatArray
     angular_acceleration: FloatArray
 
+class MetricsTable(TypedDict):
+    """The comparison table (``compare_methods``), as ``screwbender compare --json`` prints it
+    and the JS API's ``Motion.compareMethods`` returns it."""
+
+    pose_count: int
+    closed: bool
+    #: The body points (local coordinates) whose trajectories are measured.
+    body_points: list[list[float]]
+    #: One dict per method, in table order: ``method`` (its name) and the core's metrics, under
+    #: the names of the CLI's JSON (a metric that could not be computed is absent or ``None``,
+    #: with the reason in ``notes``).
+    rows: list[dict[str, Any]]
+    #: The methods left out because they do not support these poses, with the reason
+    #: (``"cc1: …"``); only when ``methods`` is not given.
+    skipped: list[str]
+
 class Motion:
     """Control poses (a cycle or an open sequence) smoothed by screw subdivision.
 
@@ -36,10 +62,11 @@ class Motion:
     or an open sequence. ``scheme``: ``"bspline"``, ``"fourpoint"`` (default) or ``"jarek"``;
     or ``s=``, the J_s family's parameter (``0`` 4-point, ``0.5`` Jarek, ``1`` B-spline,
     ``|s| <= 4``, direct rules only). ``levels``: subdivision steps (default 5; ``0`` is the plain
-    polyscrew). ``rules``: ``"direct"`` (the revised paper's) or ``"split-then-tweak"`` (the
-    first version's; also ``"split"``). ``times``: when each key is reached, in seconds (``n``
-    for an open motion, ``n + 1`` for a cycle); ``velocities``: the rate at each key in poses per
-    second, ``None`` where free (both used by ``export``).
+    polyscrew). ``rules``: ``"direct"`` (the revised paper's) or ``"split"`` (the first
+    version's split-then-tweak rules; ``"split-then-tweak"`` is accepted too). ``times``: when
+    each key is reached, in seconds (``n`` for an open motion, ``n + 1`` for a cycle);
+    ``velocities``: the rate at each key in poses per second, ``None`` where free (both used by
+    ``export``).
 
     Parameters ``u`` are in coarse units: control pose ``i`` sits at ``u = i``; refined pose
     ``j`` at ``u = j / 2**levels``. Every setter validates the whole new state and raises
@@ -104,7 +131,11 @@ class Motion:
     def copy(self) -> "Motion": ...
     def __copy__(self) -> "Motion": ...
     def __deepcopy__(self, memo: object) -> "Motion": ...
-    def __len__(self) -> int: ...
+    def __len__(self) -> int:
+        """The number of control poses (also ``pose_count``)."""
+    @property
+    def pose_count(self) -> int:
+        """The number of control poses (JS ``poseCount``)."""
     poses: FloatArray
     """The control poses, ``(n, 7)``; assign ``(n, 7)`` or ``(n, 4, 4)``."""
     def pose(self, i: int) -> FloatArray:
@@ -119,7 +150,12 @@ class Motion:
     """``"bspline"``, ``"fourpoint"``, ``"jarek"``, or ``"j"`` for the J_s family."""
     s: float
     """The J_s parameter of the scheme (``1`` B-spline, ``0`` 4-point, ``0.5`` Jarek); setting it selects the J_s family."""
-    rules: Literal["direct", "split-then-tweak"]
+    @property
+    def rules(self) -> RulesId:
+        """The rule set: ``"direct"`` or ``"split"`` (the id of files, the JS API and the CLI);
+        setting it also accepts ``"split-then-tweak"``."""
+    @rules.setter
+    def rules(self, value: RulesName) -> None: ...
     levels: int
     def warnings(self) -> list[str]:
         """Warnings about the options on these poses (e.g. a span close to a half turn)."""
@@ -131,15 +167,33 @@ class Motion:
         """``(0, n)`` for a cycle of ``n`` poses, ``(0, m - 1)`` for an open sequence."""
     def subdivide(self) -> FloatArray:
         """The refined poses, ``(N, 7)``."""
+    def refined_matrices(self) -> FloatArray:
+        """The refined poses as homogeneous matrices, ``(N, 4, 4)`` (JS ``refinedMatrices``)."""
+    @deprecated("Motion.matrices() is deprecated: use Motion.refined_matrices()")
     def matrices(self) -> FloatArray:
-        """The refined poses as homogeneous matrices, ``(N, 4, 4)``."""
+        """Former name of :meth:`refined_matrices`, kept for one release: it warns
+        (``DeprecationWarning``)."""
     def poses_at(self, u: Parameters) -> FloatArray:
         """The poses at ``u``: ``(7,)`` for a number, ``u.shape + (7,)`` for an array."""
     def sample(self, count: int) -> FloatArray:
         """``count`` poses at uniformly spaced parameters, ``(count, 7)``."""
-    def kinematics(self, u: Parameters, point: Optional[npt.ArrayLike] = None) -> Kinematics:
+    def kinematics_at(self, u: Parameters, point: Optional[npt.ArrayLike] = None) -> Kinematics:
         """Closed-form kinematics at ``u`` of the body point ``point`` (local coordinates,
-        default the origin), world frame, per unit of ``u``: arrays of shape ``u.shape + (3,)``."""
+        default the origin), world frame, per unit of ``u``: arrays of shape ``u.shape + (3,)``
+        (JS ``kinematicsAt``)."""
+    @deprecated("Motion.kinematics() is deprecated: use Motion.kinematics_at()")
+    def kinematics(self, u: Parameters, point: Optional[npt.ArrayLike] = None) -> Kinematics:
+        """Former name of :meth:`kinematics_at`, kept for one release: it warns
+        (``DeprecationWarning``)."""
+    def compare_methods(
+        self,
+        methods: Union[None, str, Sequence[MethodName]] = None,
+        body_points: Optional[npt.ArrayLike] = None,
+    ) -> MetricsTable:
+        """The metrics of the comparison methods on the control poses (``closed`` as this
+        motion; its scheme, rules and levels play no part), as ``screwbender compare --json``
+        prints them and JS ``Motion.compareMethods`` returns them: ``compare_methods(m.poses,
+        m.closed, methods, body_points)``."""
 
 def screw(a: PoseArray, t: Parameters, b: PoseArray) -> FloatArray:
     """``screw(a, t, b)``: the pose after the fraction ``t`` of the screw motion from ``a`` to ``b``
@@ -151,6 +205,30 @@ def screw(a: PoseArray, t: Parameters, b: PoseArray) -> FloatArray:
     -> ``t.shape + (7,)`` (the logarithm computed once); or batches ``(n, 7)`` / ``(n, 4, 4)`` (one
     side may be a single pose) with ``t`` a number or ``(n,)`` -> ``(n, 7)``, computed several at a
     time on SIMD lanes, bit for bit the same as one at a time.
+    """
+
+def compare_methods(
+    poses: PoseArray,
+    closed: bool = True,
+    methods: Union[None, str, Sequence[MethodName]] = None,
+    body_points: Optional[npt.ArrayLike] = None,
+) -> MetricsTable:
+    """The metrics of the comparison methods on the control poses ``poses`` (pose ``i`` at
+    ``u = i``; ``closed``: a cycle), the table ``screwbender compare --json`` prints (the same
+    field names, parsed with ``json.loads``) and JS ``Motion.compareMethods`` returns.
+
+    ``methods``: ``None`` (every method that applies; one that does not support these poses is
+    listed in ``skipped``), a list of names (``"polyscrew"``, ``"bspline"``, ``"fourpoint"``,
+    ``"jarek"``, ``"slerp"``, ``"decoupled"``, ``"kks"``, ``"rb"``, ``"cc0"``, ``"cc1"``,
+    ``"barr"``; case-insensitive, a name given twice is measured once) or one string of names
+    separated by commas (as the CLI's ``--methods``). ``body_points``: the local points whose
+    trajectories are measured, ``(k, 3)`` with ``k`` from 1 to 16 (default ``(0, 0, 0)`` and
+    ``(2, 0, 0)``). The CLI's extra ``objectives`` (when ``barr`` is named) are not computed.
+
+    An unknown name raises ``ValueError`` naming it (``methods[1]: unknown value 'x' (expected
+    polyscrew, …)``); a named method that rejects the poses (``cc1`` on a cycle) raises
+    ``ValueError`` prefixed with its name. Computed without the GIL; it takes a while (every
+    metric is measured at several steps).
     """
 
 def presets() -> list[str]:

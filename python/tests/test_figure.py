@@ -64,6 +64,18 @@ def test_python_changes_are_checked_and_observed():
     assert seen == ["poses", "scheme", "levels"]
 
 
+def test_a_figure_holds_the_rule_set_id():
+    # The id the page and the element use, whichever accepted name came in.
+    assert sb.Figure(P, rules="split-then-tweak").rules == "split"
+    assert sb.Figure(sb.Motion(P, rules="split-then-tweak")).rules == "split"
+    fig = sb.Figure(P)
+    fig.rules = "split-then-tweak"
+    assert fig.rules == "split" and fig.motion.rules == "split"
+    with pytest.raises(ValueError, match="rules: unknown value 'v3'"):
+        fig.rules = "v3"
+    assert fig.rules == "split"
+
+
 def test_front_end_poses_arrive_as_an_array():
     fig = sb.Figure(P)
     rows = (P + [0.25, 0, 0, 0, 0, 0, 0]).tolist()

@@ -47,7 +47,7 @@ def test_matrices_in_equal_quaternions_in():
         for closed in (True, False):
             q = sb.Motion(P, closed=closed, levels=4, **kwargs)
             m = sb.Motion(mats, closed=closed, levels=4, **kwargs)
-            assert np.abs(m.matrices() - q.matrices()).max() <= 1e-12
+            assert np.abs(m.refined_matrices() - q.refined_matrices()).max() <= 1e-12
             u = np.linspace(-0.5, 6.5, 41)
             assert np.abs(matrices_of(m.poses_at(u)) - matrices_of(q.poses_at(u))).max() <= 1e-12
     a, b = P[1], P[4]
@@ -63,8 +63,8 @@ def pose_mat(p):
 
 def test_matrices_out_are_the_poses():
     m = sb.Motion(P, levels=3)
-    assert np.abs(m.matrices() - matrices_of(m.subdivide())).max() <= 1e-15
-    assert m.matrices().shape == (48, 4, 4)
+    assert np.abs(m.refined_matrices() - matrices_of(m.subdivide())).max() <= 1e-15
+    assert m.refined_matrices().shape == (48, 4, 4)
 
 
 def test_other_real_dtypes_and_layouts_are_accepted():
@@ -95,7 +95,7 @@ def test_nan_is_refused_and_named():
     m = sb.Motion(P)
     refuses(ValueError, "u[1]: not a finite number", m.poses_at, [0.5, math.nan])
     refuses(ValueError, "t: not a finite number", sb.screw, P[0], math.nan, P[1])
-    refuses(ValueError, "point[1]: not a finite number", m.kinematics, 0.5, point=[0, math.nan, 0])
+    refuses(ValueError, "point[1]: not a finite number", m.kinematics_at, 0.5, point=[0, math.nan, 0])
     mats = matrices_of(P)
     mats[3, 1, 2] = math.nan
     refuses(ValueError, "poses[3].basis", sb.Motion, mats)
@@ -154,14 +154,14 @@ def test_too_few_poses_are_refused():
 def test_unknown_option_values_are_refused_and_named():
     refuses(ValueError, "scheme: unknown value 'cubic' (expected bspline, fourpoint, jarek)", sb.Motion, P, scheme="cubic")
     refuses(ValueError, "rules: unknown value 'v3'", sb.Motion, P, rules="v3")
-    refuses(ValueError, "rules: the J_s family is defined with the direct rules only", sb.Motion, P, s=0.5, rules="split-then-tweak")
+    refuses(ValueError, "rules: the J_s family is defined with the direct rules only", sb.Motion, P, s=0.5, rules="split")
     refuses(ValueError, "s: give either scheme or s", sb.Motion, P, scheme="jarek", s=0.5)
     refuses(ValueError, "levels: -1 is out of range", sb.Motion, P, levels=-1)
     refuses(TypeError, "levels: expected a whole number", sb.Motion, P, levels=2.5)
     refuses(TypeError, "levels: expected a whole number", sb.Motion, P, levels=True)
     refuses(TypeError, "unexpected keyword argument 'sheme'", sb.Motion, P, sheme="jarek")
     refuses(ValueError, "name: 'nope' is out of range (expected a preset: ", sb.Motion.from_preset, "nope")
-    assert sb.Motion(P, rules="split").rules == "split-then-tweak"
+    assert sb.Motion(P, rules="split").rules == "split"
     assert sb.Motion(P, levels=np.int64(2)).levels == 2
 
 
@@ -223,7 +223,7 @@ def test_wrong_shapes_are_refused_and_named():
     refuses(ValueError, "poses: shape (2, 3, 3) is not", sb.Motion, np.zeros((2, 3, 3)))
     refuses(ValueError, "poses: not a rectangular array of numbers", sb.Motion, [[0, 0, 0, 1, 0, 0, 0], [1, 0, 0, 1]])
     refuses(ValueError, "a: shape (6,) is not", sb.screw, P[0, :6], 0.5, P[1])
-    refuses(ValueError, "point: shape (2,) is not (3,)", sb.Motion(P).kinematics, 0.5, point=[1, 2])
+    refuses(ValueError, "point: shape (2,) is not (3,)", sb.Motion(P).kinematics_at, 0.5, point=[1, 2])
     refuses(ValueError, "t of shape (3,)", sb.screw, P[:2], [0.1, 0.2, 0.3], P[2:4])
     refuses(ValueError, "2 start pose(s), 3 end pose(s)", sb.screw, P[:2], 0.5, P[2:5])
     refuses(ValueError, "times: shape (2, 4) is not (n,)", sb.Motion, P, times=np.zeros((2, 4)))

@@ -13,10 +13,10 @@ from test_inputs import P
 def test_the_issues_example_runs():
     m = sb.Motion(P, closed=True, scheme="fourpoint", levels=5, rules="direct")
     assert m.subdivide().shape == (6 * 32, 7)
-    assert m.matrices().shape == (6 * 32, 4, 4)
+    assert m.refined_matrices().shape == (6 * 32, 4, 4)
     u = np.linspace(0, 6, 13)
     assert m.poses_at(u).shape == (13, 7)
-    k = m.kinematics(u, point=[2, 0, 0])
+    k = m.kinematics_at(u, point=[2, 0, 0])
     assert set(k) == {"position", "velocity", "acceleration", "angular_velocity", "angular_acceleration"}
     assert all(v.shape == (13, 3) for v in k.values())
     assert sb.screw(P[0], 0.5, P[1]).shape == (7,)
@@ -53,13 +53,13 @@ def test_kinematics_are_the_derivatives_of_the_motion():
         )
         return poses[:, :3] + r @ point
 
-    k = m.kinematics(u, point=point)
+    k = m.kinematics_at(u, point=point)
     assert np.abs(k["position"] - position(u)).max() <= 1e-12
     velocity = (position(u + h) - position(u - h)) / (2 * h)
     assert np.abs(k["velocity"] - velocity).max() <= 1e-6 * max(1, np.abs(velocity).max())
-    acc = (k["velocity"] - m.kinematics(u - h, point=point)["velocity"]) / h
+    acc = (k["velocity"] - m.kinematics_at(u - h, point=point)["velocity"]) / h
     assert np.abs(k["acceleration"] - acc).max() <= 1e-4 * max(1, np.abs(acc).max())
-    scalar = m.kinematics(float(u[3]), point=point)
+    scalar = m.kinematics_at(float(u[3]), point=point)
     assert scalar["velocity"].shape == (3,)
     assert np.array_equal(scalar["velocity"], k["velocity"][3])
 
@@ -91,8 +91,11 @@ def test_options_round_trip_and_invalidate():
     m.s = 0.25
     assert m.scheme == "j" and m.s == 0.25
     m.scheme = "fourpoint"
+    m.rules = "split"
+    assert m.rules == "split"
+    # The core's former id is accepted and reported as the one id.
     m.rules = "split-then-tweak"
-    assert m.rules == "split-then-tweak"
+    assert m.rules == "split" and "rules='split'" in repr(m)
     m.rules = "direct"
     assert np.array_equal(m.subdivide(), first)
     m.set_pose(-1, P[0])
@@ -151,3 +154,40 @@ def test_large_work_releases_the_gil():
     # The main thread kept running Python while the subdivision ran.
     assert elapsed > 0.005
     assert len(ticks) >= 3
+
+
+# ---- former names: they still work for one release, and warn ---------------------------------
+
+
+def test_matrices_is_the_former_name_of_refined_matrices():
+    m = sb.Motion(P, levels=2)
+    with pytest.warns(DeprecationWarning, match=r"use Motion\.refined_matrices\(\)") as seen:
+        got = m.matrices()
+    assert np.array_equal(got, m.refined_matrices())
+    # Attributed to the caller's line, as `stacklevel=2` in Python.
+    assert seen[0].filename == __file__
+
+
+def test_kinematics_is_the_former_name_of_kinematics_at():
+    m = sb.Motion(P, levels=2)
+    u = np.linspace(0, 6, 7)
+    with pytest.warns(DeprecationWarning, match=r"use Motion\.kinematics_at\(\)") as seen:
+        got = m.kinematics(u, point=[1, 0, 0])
+    want = m.kinematics_at(u, point=[1, 0, 0])
+    assert set(got) == set(want) and all(np.array_equal(got[k], want[k]) for k in want)
+    assert seen[0].filename == __file__
+
+
+def test_split_then_tweak_is_accepted_and_reported_as_split():
+    m = sb.Motion(P, rules="split-then-tweak", levels=2)
+    assert m.rules == "split"
+    assert np.array_equal(m.subdivide(), sb.Motion(P, rules="split", levels=2).subdivide())
+    assert sb.Motion.from_preset("circle4", rules="split-then-tweak").rules == "split"
+    m.rules = "direct"
+    m.rules = "split-then-tweak"
+    assert m.rules == "split" and "rules='split'" in repr(m)
+
+
+def test_pose_count_is_the_number_of_control_poses():
+    m = sb.Motion(P)
+    assert m.pose_count == len(m) == 6

@@ -4,6 +4,8 @@
 //! * [`motion`]: the `Motion` class (control poses, options, timing; subdivision, evaluation,
 //!   kinematics).
 //! * [`screw`]: `screw(a, t, b)` for one pair or batches.
+//! * [`compare`]: `compare_methods`, the metrics of the comparison methods (as `screwbender
+//!   compare --json`).
 //! * [`files`]: `Motion.load` / `Motion.export` in the CLI's formats.
 //! * [`convert`]: numpy arrays ↔ poses, with errors naming the element.
 //!
@@ -12,6 +14,7 @@
 //! of unwinding into the interpreter. The Python side (`screwbender/__init__.py`) adds the
 //! notebook figure; the type stubs are `screwbender/_screwbender.pyi`.
 
+pub mod compare;
 pub mod convert;
 pub mod files;
 pub mod motion;
@@ -39,6 +42,7 @@ fn preset_descriptions() -> Vec<(&'static str, &'static str, &'static str)> {
 fn _screwbender(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<motion::PyMotion>()?;
     m.add_function(wrap_pyfunction!(screw::screw, m)?)?;
+    m.add_function(wrap_pyfunction!(compare::compare, m)?)?;
     m.add_function(wrap_pyfunction!(presets, m)?)?;
     m.add_function(wrap_pyfunction!(preset_descriptions, m)?)?;
     m.add("MAX_REFINED_POSES", screwbender::MAX_REFINED_POSES)?;

@@ -22,7 +22,7 @@ use crate::convert::{
     detached, flag, number, optional_number, optional_text, parameters, pose_from, poses_from,
     poses_to_array, text, to_array, value_error, write_matrices, write_rows, POSE_STRIDE,
 };
-use crate::files;
+use crate::{compare, files};
 
 /// The default number of subdivision levels (as the CLI and the JS API).
 pub const DEFAULT_LEVELS: u32 = 5;
@@ -43,28 +43,17 @@ impl State {
     }
 }
 
-/// A rule set's name: `"direct"`, or `"split-then-tweak"` (also `"split"` and the core's
-/// aliases).
+/// A rule set's name: `"direct"` or `"split"`, and the core's aliases ([`Rules`]' `FromStr`:
+/// `"split-then-tweak"`, `"v1"`, `"v2"`, …), with the core's error words.
 pub fn parse_rules(name: &str) -> Result<Rules, Error> {
-    match name.to_ascii_lowercase().as_str() {
-        "split-then-tweak" => Ok(Rules::SplitThenTweak),
-        other => other.parse::<Rules>().map_err(|_| {
-            Error::new(
-                "rules",
-                ErrorKind::UnknownValue {
-                    value: name.to_string(),
-                    expected: "direct, split-then-tweak (also split)",
-                },
-            )
-        }),
-    }
+    name.parse::<Rules>()
 }
 
-/// A rule set's name as this package writes it.
+/// A rule set's id as files, the JS API and the CLI write it: `"direct"` or `"split"`.
 pub fn rules_name(rules: Rules) -> &'static str {
     match rules {
         Rules::Direct => "direct",
-        Rules::SplitThenTweak => "split-then-tweak",
+        Rules::SplitThenTweak => "split",
     }
 }
 
@@ -211,10 +200,10 @@ fn point_from(obj: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<Option<DVe
     }
 }
 
-/// The memory `subdivide()` and `matrices()` subdivide in, kept from one call to the next: the
-/// subdivision's working sequences, and the refined poses of a state changed since (their
-/// capacity). Subdividing into fresh memory pays a page fault for every 4 KB it touches (see
-/// [`Subdivision::apply_into`]); with these, only the returned array is fresh. A copy of a
+/// The memory `subdivide()` and `refined_matrices()` subdivide in, kept from one call to the
+/// next: the subdivision's working sequences, and the refined poses of a state changed since
+/// (their capacity). Subdividing into fresh memory pays a page fault for every 4 KB it touches
+/// (see [`Subdivision::apply_into`]); with these, only the returned array is fresh. A copy of a
 /// `Motion` starts without them.
 #[derive(Default)]
 struct Workspace {
@@ -233,7 +222,7 @@ impl Clone for Workspace {
 #[derive(Clone)]
 pub struct PyMotion {
     state: State,
-    /// The refined poses of `state` alone, from `subdivide()` / `matrices()`.
+    /// The refined poses of `state` alone, from `subdivide()` / `refined_matrices()`.
     refined: Option<Vec<Pose>>,
     /// The refined motion with its span screws, for evaluation.
     motion: Option<ScrewBender>,
@@ -654,7 +643,8 @@ impl PyMotion {
         })
     }
 
-    /// The rule set: `"direct"` or `"split-then-tweak"` (also accepts `"split"`).
+    /// The rule set: `"direct"` or `"split"` (also accepts the core's aliases, e.g.
+    /// `"split-then-tweak"`).
     #[getter]
     fn get_rules(&self) -> &'static str {
         rules_name(self.state.subdivision.rules)
@@ -721,12 +711,22 @@ impl PyMotion {
         })
     }
 
-    /// The refined poses as homogeneous matrices, `(N, 4, 4)`.
-    fn matrices<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    /// The refined poses as homogeneous matrices, `(N, 4, 4)` (the JS API's
+    /// `refinedMatrices`).
+    fn refined_matrices<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let poses = self.refined_poses(py)?;
         filled_array(py, vec![poses.len(), 4, 4], |out| {
             write_matrices(out, poses)
         })
+    }
+
+    /// Former name of `refined_matrices`, kept for one release (a `DeprecationWarning`).
+    fn matrices<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        deprecated(
+            py,
+            c"Motion.matrices() is deprecated: use Motion.refined_matrices()",
+        )?;
+        self.refined_matrices(py)
     }
 
     /// The poses at parameters `u` (a number: `(7,)`; an array: `u.shape + (7,)`). Cycles wrap
@@ -769,7 +769,7 @@ impl PyMotion {
     /// origin): a dict of `u.shape + (3,)` arrays `position`, `velocity`, `acceleration`,
     /// `angular_velocity`, `angular_acceleration` (world frame, per unit of `u`).
     #[pyo3(signature = (u, point=None))]
-    fn kinematics<'py>(
+    fn kinematics_at<'py>(
         &mut self,
         py: Python<'py>,
         u: &Bound<'py, PyAny>,
@@ -812,10 +812,57 @@ impl PyMotion {
         Ok(dict)
     }
 
+    /// Former name of `kinematics_at`, kept for one release (a `DeprecationWarning`).
+    #[pyo3(signature = (u, point=None))]
+    fn kinematics<'py>(
+        &mut self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        point: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        deprecated(
+            py,
+            c"Motion.kinematics() is deprecated: use Motion.kinematics_at()",
+        )?;
+        self.kinematics_at(py, u, point)
+    }
+
+    /// The metrics of the comparison methods on the control poses (the motion's own scheme,
+    /// rules and levels play no part), as `screwbender compare --json` prints them: see
+    /// `compare_methods` in `screwbender/_screwbender.pyi`.
+    #[pyo3(signature = (methods=None, body_points=None))]
+    fn compare_methods<'py>(
+        &self,
+        py: Python<'py>,
+        methods: Option<&Bound<'py, PyAny>>,
+        body_points: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let doc = &self.state.doc;
+        compare::table(py, &doc.poses, doc.closed, methods, body_points)
+    }
+
+    /// The number of control poses (also `len(m)`).
+    #[getter]
+    fn pose_count(&self) -> usize {
+        self.state.doc.poses.len()
+    }
+
     /// The number of control poses.
     fn __len__(&self) -> usize {
         self.state.doc.poses.len()
     }
+}
+
+/// Warns that a former name was called: a `DeprecationWarning` attributed to the caller's line
+/// (a method written in Rust has no frame of its own, so stack level 1 is the caller's, as
+/// `stacklevel=2` in a Python function).
+fn deprecated(py: Python<'_>, message: &std::ffi::CStr) -> PyResult<()> {
+    PyErr::warn(
+        py,
+        &py.get_type::<pyo3::exceptions::PyDeprecationWarning>(),
+        message,
+        1,
+    )
 }
 
 impl PyMotion {
