@@ -27,7 +27,7 @@ export interface ScrewBenderAttributes {
   /** A playground share-link payload (the part after `#s=`, or the whole link). */
   share?: string;
   scheme?: SubdivisionOptions['scheme'];
-  /** Subdivision levels, 0 to 12. */
+  /** Subdivision levels, 0 to 19. */
   levels?: NumberAttribute;
   /** The J_s parameter `s`, -4 to 4 (implies scheme `'j'`). */
   s?: NumberAttribute;

@@ -20,7 +20,7 @@ export interface ViewerOptions {
   /** A motion document (mount only; the element reads an inline `<script type="application/json">` child). */
   document?: MotionDocumentInput;
   scheme?: SubdivisionOptions['scheme'];
-  /** Subdivision levels, 0 to 12 (and within the module's refined-pose limit). */
+  /** Subdivision levels, 0 to 19 (and within the module's refined-pose limit). */
   levels?: number | string;
   /** The J_s parameter `s`, -4 to 4 (implies scheme `'j'` unless a scheme is given). */
   s?: number | string;

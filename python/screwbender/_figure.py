@@ -116,7 +116,7 @@ class Figure(anywidget.AnyWidget):
     the figure keeps its state.
 
     Options: ``closed``; ``scheme`` (``"bspline"``, ``"fourpoint"``, ``"jarek"``) or ``s`` (the
-    J_s family); ``levels`` (0 to 12 in the figure); ``rules`` (``"direct"``,
+    J_s family); ``levels`` (0 to 19, as everywhere); ``rules`` (``"direct"``,
     ``"split"``); ``show`` (layers: ``"strobe control trajectories polyscrew polygon
     triads grid"``); ``strobe`` (copies of the object); ``camera`` (``"iso"``, ``"front"``,
     ``"side"``, ``"top"`` or ``"yaw pitch [distance]"`` in degrees); ``autoplay``;

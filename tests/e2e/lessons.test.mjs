@@ -232,7 +232,7 @@ test('malformed lesson files: the message names step and field, and nothing chan
     [variant((l) => (l.steps[3].exercise.checks[0].kind = 'guess')), /steps\[3\]\.exercise\.checks\[0\]\.kind: "guess" is not one of/],
     [variant((l) => (l.steps[0].text = 'a formula $\\frac{1}{$ here')), /steps\[0\]\.text: math/],
     [variant((l) => (l.steps[0].text = 'unclosed $x')), /steps\[0\]\.text: unclosed \$/],
-    [variant((l) => (l.steps[1].options = { levels: 12 })), /steps\[1\]\.options\.levels: expected a whole number from 0 to 8/],
+    [variant((l) => (l.steps[1].options = { levels: 20 })), /steps\[1\]\.options\.levels: expected a whole number from 0 to 19/],
     [variant((l) => (l.steps[1].options = { s: 0.3, j: 0.4 })), /steps\[1\]\.options\.s: s and j disagree/],
     [variant((l) => (l.steps[1].highlight = { panel: 'Nope' })), /steps\[1\]\.highlight\.panel: "Nope" is not one of/],
     [variant((l) => (l.steps[0].colour = 'red')), /steps\[0\]\.colour: unknown field/],

@@ -10,6 +10,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { describe, it } from 'node:test';
 
+import { MAX_LEVELS } from '../../www/js/element/options.js';
 import { entry, sb } from './package.mjs';
 
 const { Motion } = sb;
@@ -109,12 +110,23 @@ describe('module', () => {
   it('limits', () => {
     assert.deepEqual(sb.limits(), {
       maxRefinedPoses: 1048576,
+      maxLevels: 19,
+      defaultLevels: 5,
       maxBatch: 1048576,
       maxDocumentBytes: 16777216,
       poseStride: 7,
       matrixStride: 16,
       kinematicsStride: 16,
     });
+  });
+
+  it('the element and the lessons cap levels where the core does', () => {
+    // One level more than maxLevels never fits maxRefinedPoses, even for two poses.
+    assert.equal(2 * 2 ** sb.limits().maxLevels, sb.limits().maxRefinedPoses);
+    assert.equal(MAX_LEVELS, sb.limits().maxLevels);
+    const two = [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0];
+    assert.equal(Motion.fromPoses(two, true, { levels: MAX_LEVELS }).refinedCount, 2 ** 20);
+    assert.throws(() => Motion.fromPoses(two, true, { levels: MAX_LEVELS + 1 }), /levels: 20 is out of range \(expected a whole number from 0 to 19/);
   });
 
   it('the former preset names are aliases of the new ones', () => {

@@ -6,7 +6,8 @@ use std::ffi::OsStr;
 
 use clap::builder::TypedValueParser;
 use clap::error::ErrorKind;
-use screwbender::{Rules, Scheme, Subdivision};
+use screwbender::frontend::{self, OptionsInput};
+use screwbender::Subdivision;
 
 use crate::failure::Failure;
 
@@ -16,18 +17,18 @@ use crate::failure::Failure;
 #[derive(clap::Args)]
 #[command(next_help_heading = "Subdivision options")]
 pub struct SubdivisionArgs {
-    /// Subdivision scheme: bspline, fourpoint or jarek (default: fourpoint)
+    /// Subdivision scheme: bspline, fourpoint, jarek, or j with --s (default: fourpoint)
     #[arg(long, value_name = "SCHEME", allow_hyphen_values = true)]
     scheme: Option<String>,
-    /// Use the J_s family with parameter S instead of --scheme (S=0 4-point, S=0.5 Jarek, S=1
-    /// B-spline; direct rules only)
+    /// The J_s family's parameter (S=0 4-point, S=0.5 Jarek, S=1 B-spline; direct rules
+    /// only); alone it selects the family, with --scheme it must agree with the scheme
     #[arg(long, value_name = "S", value_parser = Finite, allow_hyphen_values = true)]
     s: Option<f64>,
     /// Rule set: the revised paper's direct rules (direct, the default) or the first version's
-    /// split-then-tweak rules (split-then-tweak, also: split)
+    /// split-then-tweak rules (split, also: split-then-tweak)
     #[arg(long, value_name = "RULES", allow_hyphen_values = true)]
     rules: Option<String>,
-    /// Subdivision steps (default 5; eval: 0 = plain polyscrew)
+    /// Subdivision steps, 0 to 19 (default 5; eval: 0 = plain polyscrew)
     #[arg(long, value_name = "N", allow_hyphen_values = true)]
     levels: Option<String>,
     /// Treat the poses as an open sequence (overrides the document's 'closed')
@@ -36,31 +37,23 @@ pub struct SubdivisionArgs {
 }
 
 impl SubdivisionArgs {
-    /// The subdivision asked for (`--s` selects the J_s family), with `default_levels` when
-    /// `--levels` was not given.
-    pub fn subdivision(&self, default_levels: u32) -> Result<Subdivision, Failure> {
-        let scheme = self
-            .scheme
+    /// The subdivision asked for, resolved by the core's front-end rules (the same ids,
+    /// defaults, ranges and messages as JavaScript and Python): `--s` alone selects the J_s
+    /// family, with `--scheme` it must agree with the scheme; 5 levels unless `--levels`.
+    pub fn subdivision(&self) -> Result<Subdivision, Failure> {
+        let levels = self
+            .levels
             .as_deref()
-            .map(str::parse::<Scheme>)
+            .map(frontend::parse_levels_text)
             .transpose()?;
-        let rules = self.rules.as_deref().map(str::parse::<Rules>).transpose()?;
-        let levels = self.levels.as_deref().map(levels).transpose()?;
-        let scheme = match (scheme, self.s) {
-            (Some(_), Some(_)) => {
-                return Err(Failure(
-                    "give either --scheme or --s (the J_s family), not both".into(),
-                ))
-            }
-            (_, Some(s)) => Scheme::J(s),
-            (Some(scheme), None) => scheme,
-            (None, None) => Scheme::default(),
+        let input = OptionsInput {
+            scheme: self.scheme.as_deref(),
+            s: self.s,
+            j: None,
+            rules: self.rules.as_deref(),
+            levels: levels.map(f64::from),
         };
-        Ok(Subdivision::new(
-            scheme,
-            rules.unwrap_or_default(),
-            levels.unwrap_or(default_levels),
-        ))
+        Ok(frontend::resolve(Subdivision::default(), &input)?)
     }
 }
 
@@ -97,15 +90,6 @@ pub fn number(name: &str, text: &str) -> Result<f64, Failure> {
 /// A comma-separated list of finite numbers.
 pub fn numbers(name: &str, text: &str) -> Result<Vec<f64>, Failure> {
     text.split(',').map(|t| number(name, t.trim())).collect()
-}
-
-/// A level count (a whole number ≥ 0).
-pub fn levels(text: &str) -> Result<u32, Failure> {
-    text.parse::<u32>().map_err(|_| {
-        Failure(format!(
-            "--levels: '{text}' is not a level count (expected a whole number ≥ 0)"
-        ))
-    })
 }
 
 /// A comma-separated list of key velocities: numbers ≥ 0, or `-` for a free slope

@@ -85,12 +85,15 @@ USAGE:
   screwbender help | --help | --version
 
 OPTIONS (subdivide, eval):
-  --scheme bspline|fourpoint|jarek   subdivision scheme (default: fourpoint)
-  --s S                              use the J_s family with parameter S instead of --scheme
-                                     (S=0 4-point, S=0.5 Jarek, S=1 B-spline; direct rules only)
-  --rules direct|split-then-tweak    rule set: revised paper's direct rules (default) or the
-                                     first version's split-then-tweak rules (also: split)
-  --levels N                         subdivision steps (default 5; eval: 0 = plain polyscrew)
+  --scheme bspline|fourpoint|jarek|j subdivision scheme (default: fourpoint)
+  --s S                              the J_s family's parameter (S=0 4-point, S=0.5 Jarek, S=1
+                                     B-spline; direct rules only): alone it selects the family,
+                                     with --scheme it must agree with the scheme
+  --rules direct|split               rule set: revised paper's direct rules (default) or the
+                                     first version's split-then-tweak rules (also:
+                                     split-then-tweak)
+  --levels N                         subdivision steps, 0 to 19 (default 5; eval: 0 = plain
+                                     polyscrew)
   --open                             treat the poses as an open sequence (overrides 'closed')
 
 EXPORT OPTIONS (also --scheme, --s, --rules, --levels, --open as above):

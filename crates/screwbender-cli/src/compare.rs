@@ -8,10 +8,10 @@ use std::time::Instant;
 
 use glam::DQuat;
 
+use screwbender::frontend::compare::{parse_methods, split_names};
 use screwbender::methods::{
-    compare_applicable, compare_methods, fit_barr, fit_quaternion_spline, triangle_samples,
-    BarrOptions, Continuity, EndCondition, Method, MetricsOptions, RationalMotion, RbOptions,
-    ReferenceTriangle, TriangleSample, TRIANGLE_STRIDE,
+    fit_barr, fit_quaternion_spline, triangle_samples, BarrOptions, Continuity, EndCondition,
+    Method, RationalMotion, RbOptions, ReferenceTriangle, TriangleSample, TRIANGLE_STRIDE,
 };
 use screwbender::{Error, ErrorKind, Pose, Subdivision, MAX_DOCUMENT_BYTES};
 
@@ -35,21 +35,14 @@ pub fn compare(
     methods: &[String],
     json: bool,
 ) -> Result<String, Error> {
-    let mut chosen: Vec<Method> = Vec::new();
-    for entry in methods {
-        for name in entry.split(',').map(str::trim).filter(|s| !s.is_empty()) {
-            let m: Method = name.parse()?;
-            if !chosen.contains(&m) {
-                chosen.push(m);
-            }
-        }
-    }
-    let options = MetricsOptions::default();
-    let table = if chosen.is_empty() {
-        compare_applicable(poses, closed, &options)?
-    } else {
-        compare_methods(poses, closed, &chosen, &options)?
-    };
+    let names = split_names(methods);
+    let chosen = parse_methods(&names)?;
+    let table = screwbender::frontend::compare::compare(
+        poses,
+        closed,
+        (!names.is_empty()).then_some(&names[..]),
+        None,
+    )?;
     // Where a motion is poor though it was built: one line each on standard error.
     for row in &table.rows {
         for note in &row.notes {

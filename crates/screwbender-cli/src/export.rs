@@ -98,7 +98,7 @@ fn write(path: &Path, data: &[u8]) -> Result<(), Failure> {
 pub fn export(args: ExportArgs) -> Result<Output, Failure> {
     let o = check(&args)?;
     // The subdivision options are checked before the input is read.
-    let sub = args.sub.subdivision(5)?;
+    let sub = args.sub.subdivision()?;
     let format = o
         .format
         .ok_or_else(|| Failure("export needs --format glb|gltf|csv".into()))?;

@@ -7,63 +7,13 @@
 
 use std::path::Path;
 
-use screwbender::{
-    import_motion_file, reduce_poses, Error, ErrorKind, NodeSelection, Reduction, MANY_POSES,
-    MAX_GLTF_BYTES,
-};
+use screwbender::frontend::files::import_motion_path;
+use screwbender::{reduce_poses, NodeSelection, Reduction, MANY_POSES};
 
 use crate::args::number;
 use crate::cli::ImportArgs;
 use crate::failure::Failure;
 use crate::output::Output;
-
-/// Reads a file of at most [`MAX_GLTF_BYTES`] (checked before reading).
-fn read_limited(path: &Path) -> Result<Vec<u8>, Failure> {
-    let shown = path.display();
-    let meta = std::fs::metadata(path).map_err(|e| Failure(format!("{shown}: {e}")))?;
-    if meta.len() > MAX_GLTF_BYTES as u64 {
-        return Err(Failure(format!(
-            "{shown}: {} bytes is larger than the limit of {MAX_GLTF_BYTES} bytes",
-            meta.len()
-        )));
-    }
-    std::fs::read(path).map_err(|e| Failure(format!("{shown}: {e}")))
-}
-
-/// Decodes `%XX` escapes of a relative URI into a file name.
-fn uri_to_path(uri: &str) -> Result<String, Error> {
-    let bytes = uri.as_bytes();
-    let mut out = Vec::with_capacity(bytes.len());
-    let mut i = 0;
-    while i < bytes.len() {
-        if bytes[i] == b'%' {
-            let hex = uri
-                .get(i + 1..i + 3)
-                .and_then(|h| u8::from_str_radix(h, 16).ok())
-                .ok_or_else(|| {
-                    Error::new(
-                        "uri",
-                        ErrorKind::Parse {
-                            message: format!("bad percent escape in '{uri}'"),
-                        },
-                    )
-                })?;
-            out.push(hex);
-            i += 3;
-        } else {
-            out.push(bytes[i]);
-            i += 1;
-        }
-    }
-    String::from_utf8(out).map_err(|_| {
-        Error::new(
-            "uri",
-            ErrorKind::Parse {
-                message: format!("'{uri}' is not UTF-8"),
-            },
-        )
-    })
-}
 
 /// Parses `--reduce every:K` or `--reduce fit:TOL[:RADIUS]` (radius default 0: the origin).
 fn reduction(text: &str) -> Result<Reduction, Failure> {
@@ -104,17 +54,8 @@ pub fn import(args: ImportArgs) -> Result<Output, Failure> {
     let file = args
         .file
         .ok_or_else(|| Failure("import needs a FILE (.glb, .gltf or .csv)".into()))?;
-    let path = Path::new(&file);
-    let bytes = read_limited(path)?;
-    let dir = path.parent().unwrap_or(Path::new("."));
-    let mut resolve = |uri: &str| -> Result<Vec<u8>, Error> {
-        let name = uri_to_path(uri)?;
-        read_limited(&dir.join(name))
-            .map_err(|Failure(message)| Error::new(String::new(), ErrorKind::Parse { message }))
-    };
-    let name = path.file_name().and_then(|f| f.to_str()).unwrap_or(&file);
-    let result = import_motion_file(name, &bytes, &mut resolve, &selection);
-    let mut doc = result.map_err(|e| Failure(format!("{file}: {e}")))?;
+    let mut doc =
+        import_motion_path(Path::new(&file), &selection).map_err(|e| Failure(e.to_string()))?;
     if open {
         doc.set_closed(false);
     }

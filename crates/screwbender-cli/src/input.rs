@@ -2,6 +2,7 @@
 
 use std::io::Read;
 
+use screwbender::frontend::files::read_document_path;
 use screwbender::MotionDocument;
 
 use crate::failure::Failure;
@@ -18,17 +19,8 @@ pub fn read_document(file: Option<&str>) -> Result<MotionDocument, Failure> {
             ("standard input".to_string(), text)
         }
         Some(path) => {
-            let meta = std::fs::metadata(path).map_err(|e| Failure(format!("{path}: {e}")))?;
-            if meta.len() > screwbender::MAX_DOCUMENT_BYTES as u64 {
-                return Err(Failure(format!(
-                    "{path}: {} bytes is larger than the limit of {} bytes",
-                    meta.len(),
-                    screwbender::MAX_DOCUMENT_BYTES
-                )));
-            }
-            let text =
-                std::fs::read_to_string(path).map_err(|e| Failure(format!("{path}: {e}")))?;
-            (path.to_string(), text)
+            return read_document_path(std::path::Path::new(path))
+                .map_err(|e| Failure(e.to_string()))
         }
     };
     MotionDocument::from_json(&text).map_err(|e| Failure(format!("{name}: {e}")))

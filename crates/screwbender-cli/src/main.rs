@@ -93,7 +93,7 @@ fn man(command: Option<&str>) -> Result<Output, Failure> {
 
 fn subdivide(a: SubdivideArgs) -> Result<Output, Failure> {
     // The subdivision options are checked before the input is read.
-    let sub = a.sub.subdivision(5)?;
+    let sub = a.sub.subdivision()?;
     let doc = read_document(a.file.as_deref())?;
     let closed = doc.closed && !a.sub.open;
     compare::warn_subdivision(&sub, &doc.poses, closed);
@@ -110,7 +110,7 @@ fn pose_json(p: &Pose) -> Value {
 }
 
 fn eval(a: EvalArgs) -> Result<Output, Failure> {
-    let sub = a.sub.subdivision(5)?;
+    let sub = a.sub.subdivision()?;
     if a.us.is_empty() {
         return Err(Failure("eval needs at least one --u U".into()));
     }

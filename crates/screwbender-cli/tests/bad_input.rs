@@ -358,12 +358,12 @@ fn unknown_option_values_are_refused_and_named() {
     cli_refuses(
         &["subdivide", "--levels", "two"],
         &doc,
-        &["--levels: 'two' is not a level count"],
+        &["levels: 'two' is not a level count"],
     );
     cli_refuses(
         &["subdivide", "--levels", "-3"],
         &doc,
-        &["--levels: '-3' is not a level count"],
+        &["levels: -3 is out of range (expected a whole number from 0 to 19"],
     );
 }
 
@@ -388,10 +388,19 @@ fn levels_beyond_the_cap_are_refused_before_any_work() {
         .output_len(3, true)
         .is_ok());
     let doc = doc_with(GOOD);
+    // Beyond MAX_LEVELS no input fits: refused as out of range, whatever the poses.
     for args in [
         &["subdivide", "--levels", "30"][..],
         &["eval", "--u", "1", "--levels", "30"],
         &["export", "--format", "csv", "--levels", "30"],
+    ] {
+        cli_refuses(args, &doc, &["levels: 30 is out of range", "from 0 to 19"]);
+    }
+    // Within it, the memory guard on these 3 poses.
+    for args in [
+        &["subdivide", "--levels", "19"][..],
+        &["eval", "--u", "1", "--levels", "19"],
+        &["export", "--format", "csv", "--levels", "19"],
     ] {
         cli_refuses(
             args,
@@ -402,7 +411,7 @@ fn levels_beyond_the_cap_are_refused_before_any_work() {
     cli_refuses(
         &["subdivide", "--levels", "99999999999"],
         &doc,
-        &["--levels: '99999999999' is not a level count"],
+        &["levels: 99999999999 is out of range"],
     );
 }
 

@@ -242,7 +242,7 @@ fn bad_input_exits_2_with_one_line() {
         (
             &["subdivide", "--levels", "-1"],
             TWO_POSES,
-            "--levels: '-1' is not a level count",
+            "levels: -1 is out of range (expected a whole number from 0 to 19",
         ),
         (
             &["subdivide", "--levels", "99"],
@@ -374,7 +374,7 @@ fn compare_prints_the_metrics_table() {
     for (args, want) in [
         (
             &["compare", "--methods", "nope"][..],
-            "methods: unknown value 'nope'",
+            "methods[0]: unknown value 'nope'",
         ),
         (&["compare", "--methods", "cc1"][..], "cc1"),
         (

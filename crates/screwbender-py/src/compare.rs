@@ -8,53 +8,25 @@
 //! `json.loads`: the three APIs then agree on every field name by construction, and a field the
 //! core adds or renames reaches Python without a change here.
 
-use std::str::FromStr;
-
 use glam::DVec3;
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyString;
-use screwbender::methods::{compare_applicable, compare_methods, Method, MetricsOptions};
-use screwbender::{Error, ErrorKind, Pose};
+use screwbender::frontend::compare::{compare, parse_methods, split_names, MAX_BODY_POINTS};
+use screwbender::Pose;
 
 use crate::convert::{detached, flag, parameters, poses_from, shape_text, value_error};
 
-/// The most body points one comparison measures (as the JS API's `bodyPoints`).
-pub const MAX_BODY_POINTS: usize = 16;
-
-/// The core's error for an unknown method name, located at `at` (`methods[2]` in a list).
-fn method_named(name: &str, at: &str) -> Result<Method, Error> {
-    Method::from_str(name).map_err(|e| match e.kind() {
-        ErrorKind::UnknownValue { value, expected } => Error::new(
-            at,
-            ErrorKind::UnknownValue {
-                value: value.clone(),
-                expected,
-            },
-        ),
-        _ => e,
-    })
-}
-
-/// The methods of `methods=`: `None` (every method that applies), a string (names separated by
-/// commas, as the CLI's `--methods`) or a sequence of names. A method named twice is measured
-/// once, as by the CLI.
-fn methods_from(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Vec<Method>>> {
+/// The method names of `methods=`: `None` (every method that applies), a string (names
+/// separated by commas, as the CLI's `--methods`) or a sequence of names; they are resolved by
+/// the core ([`parse_methods`]: unknown names at `methods[i]`, each method measured once).
+fn methods_from(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Vec<String>>> {
     let Some(obj) = obj.filter(|o| !o.is_none()) else {
         return Ok(None);
     };
-    let mut chosen = Vec::new();
-    let mut add = |m: Method| {
-        if !chosen.contains(&m) {
-            chosen.push(m);
-        }
-    };
     if obj.is_instance_of::<PyString>() {
         let text: String = obj.extract()?;
-        for name in text.split(',').map(str::trim).filter(|s| !s.is_empty()) {
-            add(method_named(name, "methods").map_err(value_error)?);
-        }
-        return Ok(Some(chosen));
+        return Ok(Some(split_names(&[text])));
     }
     let type_error = |what: &Bound<'_, PyAny>, at: &str| {
         PyTypeError::new_err(format!(
@@ -66,16 +38,16 @@ fn methods_from(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Vec<Method>>>
         ))
     };
     let items = obj.try_iter().map_err(|_| type_error(obj, "methods"))?;
+    let mut names = Vec::new();
     for (i, item) in items.enumerate() {
         let item = item?;
-        let at = format!("methods[{i}]");
         if !item.is_instance_of::<PyString>() {
-            return Err(type_error(&item, &at));
+            return Err(type_error(&item, &format!("methods[{i}]")));
         }
-        let name: String = item.extract()?;
-        add(method_named(&name, &at).map_err(value_error)?);
+        names.push(item.extract::<String>()?);
     }
-    Ok(Some(chosen))
+    parse_methods(&names).map_err(value_error)?;
+    Ok(Some(names))
 }
 
 /// The body points of `body_points=`: `None` (the core's default, `(0, 0, 0)` and `(2, 0, 0)`)
@@ -110,17 +82,11 @@ pub fn table<'py>(
     body_points: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let methods = methods_from(methods)?;
-    let mut options = MetricsOptions::default();
-    if let Some(points) = body_points_from(body_points)? {
-        options.body_points = points;
-    }
+    let points = body_points_from(body_points)?;
     let json = detached(py, || {
-        let table = match &methods {
-            // As the CLI: a method that does not support these poses is listed in `skipped`.
-            None => compare_applicable(poses, closed, &options)?,
-            Some(list) => compare_methods(poses, closed, list, &options)?,
-        };
-        Ok::<_, Error>(table.to_json())
+        // As the CLI and JavaScript: with no names, a method that does not support these poses
+        // is listed in `skipped`.
+        compare(poses, closed, methods.as_deref(), points).map(|t| t.to_json())
     })?
     .map_err(value_error)?;
     py.import("json")?.call_method1("loads", (json,))
@@ -129,7 +95,7 @@ pub fn table<'py>(
 /// See `compare_methods` in `screwbender/_screwbender.pyi`.
 #[pyfunction]
 #[pyo3(name = "compare_methods", signature = (poses, closed=None, methods=None, body_points=None))]
-pub fn compare<'py>(
+pub fn compare_methods<'py>(
     py: Python<'py>,
     poses: &Bound<'py, PyAny>,
     closed: Option<&Bound<'py, PyAny>>,

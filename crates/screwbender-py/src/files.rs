@@ -8,12 +8,12 @@ use glam::DVec3;
 use pyo3::exceptions::{PyFileNotFoundError, PyOSError, PyPermissionError, PyValueError};
 use pyo3::prelude::*;
 use screwbender::{
-    export_motion, import_motion_file, Error, ErrorKind, ExportFormat, ExportSamples,
-    ExportSettings, MotionDocument, NodeSelection, PresetObject, SamplingMode, Subdivision,
-    DEFAULT_TOLERANCE, MAX_GLTF_BYTES,
+    export_motion, Error, ExportFormat, ExportSamples, ExportSettings, MotionDocument,
+    NodeSelection, PresetObject, SamplingMode, Subdivision, DEFAULT_TOLERANCE,
 };
 
 use crate::convert::detached;
+use screwbender::frontend::files::{import_motion_path, FileError};
 
 /// An `OSError` of the matching subclass whose message names `path`.
 fn os_error(path: &Path, e: std::io::Error) -> PyErr {
@@ -30,21 +30,18 @@ fn file_error(path: &Path, e: Error) -> PyErr {
     PyValueError::new_err(format!("{}: {e}", path.display()))
 }
 
-/// Reads a file of at most [`MAX_GLTF_BYTES`] (checked before reading).
-fn read_limited(path: &Path) -> PyResult<Vec<u8>> {
-    let meta = std::fs::metadata(path).map_err(|e| os_error(path, e))?;
-    if meta.len() > MAX_GLTF_BYTES as u64 {
-        return Err(PyValueError::new_err(format!(
-            "{}: {} bytes is larger than the limit of {MAX_GLTF_BYTES} bytes",
-            path.display(),
-            meta.len()
-        )));
+/// A core file error as the matching Python exception: an `OSError` subclass for the system's
+/// errors, a `ValueError` for a bad or too large file, each naming the file.
+fn file_failure(e: FileError) -> PyErr {
+    match e {
+        FileError::Io { path, error } => os_error(&path, error),
+        FileError::Content { path, error } => file_error(&path, error),
     }
-    std::fs::read(path).map_err(|e| os_error(path, e))
 }
 
-/// The control poses of the file at `path`; `node` / `nodes` pick glTF nodes as the CLI's
-/// `--node` / `--nodes`.
+/// The control poses of the file at `path`, read by the core as the CLI reads it (size limits,
+/// `.gltf` buffers beside it by their percent-decoded URIs); `node` / `nodes` pick glTF nodes as
+/// the CLI's `--node` / `--nodes`.
 pub fn load(
     path: &Path,
     node: Option<String>,
@@ -59,29 +56,7 @@ pub fn load(
             (None, Some(ns)) => NodeSelection::Transforms(ns),
             (None, None) => NodeSelection::Auto,
         };
-    let bytes = read_limited(path)?;
-    let dir = path.parent().unwrap_or(Path::new(".")).to_path_buf();
-    // A `.gltf` names its buffers by relative URI: they are read beside it, and an I/O failure
-    // is reported inside the import's error (which names the buffer).
-    let mut resolve = |uri: &str| -> Result<Vec<u8>, Error> {
-        let buffer = dir.join(uri);
-        let parse = |message: String| Error::new(String::new(), ErrorKind::Parse { message });
-        let meta =
-            std::fs::metadata(&buffer).map_err(|e| parse(format!("{}: {e}", buffer.display())))?;
-        if meta.len() > MAX_GLTF_BYTES as u64 {
-            return Err(parse(format!(
-                "{}: larger than the limit of {MAX_GLTF_BYTES} bytes",
-                buffer.display()
-            )));
-        }
-        std::fs::read(&buffer).map_err(|e| parse(format!("{}: {e}", buffer.display())))
-    };
-    let name = path
-        .file_name()
-        .and_then(|f| f.to_str())
-        .unwrap_or_default()
-        .to_string();
-    import_motion_file(&name, &bytes, &mut resolve, &selection).map_err(|e| file_error(path, e))
+    import_motion_path(path, &selection).map_err(file_failure)
 }
 
 /// The options of `Motion.export`.

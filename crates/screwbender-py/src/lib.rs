@@ -42,7 +42,7 @@ fn preset_descriptions() -> Vec<(&'static str, &'static str, &'static str)> {
 fn _screwbender(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<motion::PyMotion>()?;
     m.add_function(wrap_pyfunction!(screw::screw, m)?)?;
-    m.add_function(wrap_pyfunction!(compare::compare, m)?)?;
+    m.add_function(wrap_pyfunction!(compare::compare_methods, m)?)?;
     m.add_function(wrap_pyfunction!(presets, m)?)?;
     m.add_function(wrap_pyfunction!(preset_descriptions, m)?)?;
     m.add("MAX_REFINED_POSES", screwbender::MAX_REFINED_POSES)?;

@@ -12,7 +12,8 @@ use glam::DVec3;
 use numpy::{PyArrayDyn, PyArrayMethods};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyDict, PyInt, PyType};
+use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyType};
+use screwbender::frontend::{self, OptionsInput};
 use screwbender::{
     presets, Error, ErrorKind, Motion, MotionDocument, Pose, Rules, Scheme, ScrewBender,
     Subdivision, SubdivisionBuffers,
@@ -24,8 +25,8 @@ use crate::convert::{
 };
 use crate::{compare, files};
 
-/// The default number of subdivision levels (as the CLI and the JS API).
-pub const DEFAULT_LEVELS: u32 = 5;
+/// The default number of subdivision levels: the core's, as the CLI and the JS API.
+pub use screwbender::frontend::DEFAULT_LEVELS;
 
 /// What a `Motion` stores: always valid (see [`State::check`]).
 #[derive(Clone, Debug)]
@@ -51,75 +52,52 @@ pub fn parse_rules(name: &str) -> Result<Rules, Error> {
 
 /// A rule set's id as files, the JS API and the CLI write it: `"direct"` or `"split"`.
 pub fn rules_name(rules: Rules) -> &'static str {
-    match rules {
-        Rules::Direct => "direct",
-        Rules::SplitThenTweak => "split",
-    }
+    frontend::rules_name(&rules)
 }
 
-/// A scheme's name as this package writes it (`"j"` for the J_s family; its parameter is `s`).
+/// A scheme's id as every front end writes it (`"j"` for the J_s family; its parameter is `s`).
 pub fn scheme_name(scheme: Scheme) -> &'static str {
-    match scheme {
-        Scheme::BSpline => "bspline",
-        Scheme::FourPoint => "fourpoint",
-        Scheme::Jarek => "jarek",
-        Scheme::J(_) => "j",
-    }
+    frontend::scheme_name(&scheme)
 }
 
-/// The scheme of `scheme=` and `s=` (as the CLI's `--scheme` and `--s`: one or the other;
-/// `scheme="j"` with `s` names the J_s family explicitly). `current` is kept when neither is
-/// given.
+/// The scheme of `scheme=` and `s=` over the `current` one, by the core's front-end rules (as
+/// the CLI's `--scheme` and `--s` and JavaScript's options): `s` alone selects the J_s family,
+/// with a named scheme it must agree with it, with `"j"` it is the parameter.
 fn scheme_from(scheme: Option<&str>, s: Option<f64>, current: Scheme) -> Result<Scheme, Error> {
-    match (scheme, s) {
-        (Some(name), Some(s)) if name.eq_ignore_ascii_case("j") => Ok(Scheme::J(s)),
-        (Some(_), Some(_)) => Err(Error::new(
-            "s",
-            ErrorKind::Unsupported {
-                reason: "give either scheme or s (the J_s family), not both".into(),
-            },
-        )),
-        (Some(name), None) if name.eq_ignore_ascii_case("j") => Err(Error::new(
-            "s",
-            ErrorKind::Unsupported {
-                reason: "scheme \"j\" (the J_s family) needs its parameter s".into(),
-            },
-        )),
-        (Some(name), None) => name.parse::<Scheme>(),
-        (None, Some(s)) => Ok(Scheme::J(s)),
-        (None, None) => Ok(current),
-    }
+    let base = Subdivision::new(current, Rules::Direct, 0);
+    let input = OptionsInput {
+        scheme,
+        s,
+        ..OptionsInput::default()
+    };
+    frontend::resolve(base, &input).map(|sub| sub.scheme)
 }
 
-/// A level count: a whole number ≥ 0 (a Python `int`, not a `bool` or a float).
+/// A level count: a number (Python's or numpy's, not a `bool`) that the core's front-end rules
+/// accept ([`frontend::parse_levels`]: a whole number from 0 to [`frontend::MAX_LEVELS`]), so
+/// `levels=2.5` gets the same words here as in JavaScript and on the command line.
 fn level_count(obj: &Bound<'_, PyAny>) -> PyResult<u32> {
-    if obj.is_instance_of::<PyBool>() || !obj.is_instance_of::<PyInt>() {
-        let numpy_int = obj
-            .py()
-            .import("numpy")?
-            .getattr("integer")
-            .and_then(|t| obj.is_instance(&t))
-            .unwrap_or(false);
-        if !numpy_int || obj.is_instance_of::<PyBool>() {
-            return Err(PyTypeError::new_err(format!(
-                "levels: expected a whole number ≥ 0, got a {}",
-                obj.get_type().name()?
-            )));
-        }
+    let numeric = !obj.is_instance_of::<PyBool>()
+        && (obj.is_instance_of::<PyInt>()
+            || obj.is_instance_of::<PyFloat>()
+            || obj
+                .py()
+                .import("numpy")?
+                .getattr("number")
+                .and_then(|t| obj.is_instance(&t))
+                .unwrap_or(false));
+    if !numeric {
+        return Err(PyTypeError::new_err(format!(
+            "levels: expected a whole number ≥ 0, got a {}",
+            obj.get_type().name()?
+        )));
     }
-    let text = obj.str()?.to_string();
-    obj.extract::<i64>()
-        .ok()
-        .and_then(|v| u32::try_from(v).ok())
-        .ok_or_else(|| {
-            value_error(Error::new(
-                "levels",
-                ErrorKind::OutOfRange {
-                    value: text,
-                    expected: "a whole number ≥ 0".into(),
-                },
-            ))
-        })
+    // Integers beyond f64's exact range are far beyond the cap either way.
+    let v = match obj.extract::<i64>() {
+        Ok(i) => i as f64,
+        Err(_) => obj.extract::<f64>()?,
+    };
+    frontend::parse_levels(v).map_err(value_error)
 }
 
 /// Key times: `None` or a 1-D array of numbers (validated against the poses later).
@@ -350,7 +328,7 @@ impl PyMotion {
             .map(|c| flag(c, "closed"))
             .transpose()?
             .unwrap_or(true);
-        let defaults = Subdivision::new(Scheme::FourPoint, Rules::Direct, DEFAULT_LEVELS);
+        let defaults = frontend::default_subdivision();
         let (scheme, rules) = (
             optional_text(scheme, "scheme")?,
             optional_text(rules, "rules")?,
@@ -421,7 +399,7 @@ impl PyMotion {
         let doc = MotionDocument::from_json(text).map_err(value_error)?;
         PyMotion::from_state(State {
             doc,
-            subdivision: Subdivision::new(Scheme::FourPoint, Rules::Direct, DEFAULT_LEVELS),
+            subdivision: frontend::default_subdivision(),
         })
     }
 
@@ -441,7 +419,7 @@ impl PyMotion {
         }
         PyMotion::from_state(State {
             doc,
-            subdivision: Subdivision::new(Scheme::FourPoint, Rules::Direct, DEFAULT_LEVELS),
+            subdivision: frontend::default_subdivision(),
         })
     }
 

@@ -75,6 +75,8 @@ pub fn limits() -> Result<JsValue, JsError> {
     #[serde(rename_all = "camelCase")]
     struct Limits {
         max_refined_poses: usize,
+        max_levels: u32,
+        default_levels: u32,
         max_batch: usize,
         max_document_bytes: usize,
         pose_stride: usize,
@@ -83,6 +85,8 @@ pub fn limits() -> Result<JsValue, JsError> {
     }
     to_js(&Limits {
         max_refined_poses: screwbender::MAX_REFINED_POSES,
+        max_levels: screwbender::frontend::MAX_LEVELS,
+        default_levels: screwbender::frontend::DEFAULT_LEVELS,
         max_batch: screwbender::MAX_REFINED_POSES,
         max_document_bytes: screwbender::MAX_DOCUMENT_BYTES,
         pose_stride: POSE_STRIDE,

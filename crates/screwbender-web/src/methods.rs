@@ -12,6 +12,7 @@ use wasm_bindgen::prelude::*;
 use super::convert::{count, is_absent, plain, poses_from_fn, push_kinematics, to_js};
 use super::motion::sample_parameters;
 use super::MotionHandle;
+use screwbender::frontend::compare::MAX_BODY_POINTS;
 use screwbender::methods::{
     compare_methods, fit_barr, fit_quaternion_spline, interpolation_error, kinematics_at,
     single_step_metrics, triangle_samples, BarrOptions, Continuity, Derivatives, EndCondition,
@@ -250,12 +251,12 @@ fn body_points(value: &JsValue) -> Result<Option<Vec<DVec3>>, Error> {
     }
     let v = plain(value, "bodyPoints")?;
     let list: Vec<[f64; 3]> = super::convert::from_js(&v, "bodyPoints", "body points")?;
-    if list.is_empty() || list.len() > 16 {
+    if list.is_empty() || list.len() > MAX_BODY_POINTS {
         return Err(Error::new(
             "bodyPoints",
             ErrorKind::OutOfRange {
                 value: format!("{} points", list.len()),
-                expected: "1 to 16 points".into(),
+                expected: format!("1 to {MAX_BODY_POINTS} points"),
             },
         ));
     }
@@ -351,8 +352,8 @@ impl MotionHandle {
         points: JsValue,
     ) -> Result<JsValue, JsError> {
         let (doc, _) = self.snapshot()?;
-        let list = if is_absent(&names) {
-            Method::applicable(doc.closed)
+        let names = if is_absent(&names) {
+            None
         } else {
             let names = plain(&names, "methods")?;
             let arr = names.dyn_ref::<js_sys::Array>().ok_or_else(|| {
@@ -363,16 +364,28 @@ impl MotionHandle {
                     },
                 )
             })?;
-            arr.iter()
+            let texts = arr
+                .iter()
                 .enumerate()
-                .map(|(i, v)| method(&v, &format!("methods[{i}]")))
-                .collect::<Result<Vec<_>, Error>>()?
+                .map(|(i, v)| {
+                    v.as_string().ok_or_else(|| {
+                        Error::new(
+                            format!("methods[{i}]"),
+                            ErrorKind::Parse {
+                                message: "expected a method name".into(),
+                            },
+                        )
+                    })
+                })
+                .collect::<Result<Vec<_>, Error>>()?;
+            Some(texts)
         };
-        let mut options = MetricsOptions::default();
-        if let Some(p) = body_points(&points)? {
-            options.body_points = p;
-        }
-        let table = compare_methods(&doc.poses, doc.closed, &list, &options)?;
+        let table = screwbender::frontend::compare::compare(
+            &doc.poses,
+            doc.closed,
+            names.as_deref(),
+            body_points(&points)?,
+        )?;
         to_js(&table)
     }
 

@@ -158,6 +158,10 @@ export type SceneInfo = PresetInfo;
 export interface Limits {
   /** Most refined poses a motion may have (the memory guard; more throws). */
   maxRefinedPoses: number;
+  /** Most subdivision levels any front end accepts (0 to this): one level more never fits `maxRefinedPoses`, whatever the poses. */
+  maxLevels: number;
+  /** Subdivision levels of a new motion when the options do not say. */
+  defaultLevels: number;
   /** Most values per bulk call (`screwPoses`, `screwPairs`, `posesAt`, `sample`, ...). */
   maxBatch: number;
   /** Largest JSON motion document accepted, in bytes. */

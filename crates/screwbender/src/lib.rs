@@ -93,6 +93,7 @@
 mod closure;
 mod error;
 mod formats;
+pub mod frontend;
 mod lanes;
 pub mod methods;
 mod motion;

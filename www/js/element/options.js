@@ -2,6 +2,14 @@
 // checks of their values, and the error that names the option and the value at fault.
 
 /** Attributes the element watches (each maps onto an option of mount()). */
+/**
+ * The most subdivision levels: the core's `frontend::MAX_LEVELS`, which every front end shares
+ * (one level more never fits the memory limit, whatever the poses; `limits().maxLevels` of the
+ * wasm API, compared with this in tests/js/api.test.mjs). Here as a constant because attributes
+ * are checked before the figure's module is fetched.
+ */
+export const MAX_LEVELS = 19;
+
 export const ATTRIBUTES = [
   'preset', 'src', 'share', 'scheme', 'levels', 's', 'rules', 'strobe', 'show', 'autoplay', 'loop',
   'speed', 'editable', 'controls', 'camera', 'theme', 'persist', 'alt', 'loading', 'poster', 'touch-action',
@@ -91,7 +99,7 @@ export function subdivisionOptions(o) {
     throw new OptionError('s', o.s, `s and j disagree (j="${o.j}"; j is the former name of s)`);
   }
   if (o.rules != null && o.rules !== '') out.rules = oneOf('rules', o.rules, RULES);
-  if (o.levels != null && o.levels !== '') out.levels = number('levels', o.levels, 0, 12, true);
+  if (o.levels != null && o.levels !== '') out.levels = number('levels', o.levels, 0, MAX_LEVELS, true);
   return out;
 }
 

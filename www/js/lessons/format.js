@@ -3,6 +3,7 @@
 // (paragraphs, **bold**, *italic*, `code`, $inline$ and $$display$$ math typeset by KaTeX as
 // MathML, which needs no inline styles under the page's CSP).
 import katex from '../../vendor/katex.min.mjs';
+import { MAX_LEVELS } from '../element/options.js';
 
 /** Largest lesson file accepted, in bytes. */
 export const MAX_LESSON_BYTES = 512 * 1024;
@@ -183,7 +184,7 @@ function validateOptions(o, p, isCheck) {
     if (o.levels !== undefined) range(o.levels, `${p}.levels`);
     for (const f of ['s', 'j']) if (o[f] !== undefined) range(o[f], `${p}.${f}`);
   } else {
-    if (o.levels !== undefined && !(Number.isInteger(o.levels) && o.levels >= 0 && o.levels <= 8)) fail(`${p}.levels`, 'expected a whole number from 0 to 8');
+    if (o.levels !== undefined && !(Number.isInteger(o.levels) && o.levels >= 0 && o.levels <= MAX_LEVELS)) fail(`${p}.levels`, `expected a whole number from 0 to ${MAX_LEVELS}`);
     for (const f of ['s', 'j']) if (o[f] !== undefined && !(isNum(o[f]) && Math.abs(o[f]) <= 4)) fail(`${p}.${f}`, 'expected a number from -4 to 4');
   }
 }

@@ -22,8 +22,10 @@ use scheme::{Rules, Scheme, MAX_J_PARAMETER};
 /// [`ErrorKind::TooManyPoses`] before anything is allocated.
 pub const MAX_REFINED_POSES: usize = 1 << 20;
 
-/// A complete subdivision request: scheme, rule set and number of levels.
-#[derive(Clone, Copy, Debug, PartialEq, Default)]
+/// A complete subdivision request: scheme, rule set and number of levels. The default is the
+/// subdivision of a new motion in every front end: 4-point, direct rules, 5 levels
+/// ([`crate::frontend::DEFAULT_LEVELS`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Subdivision {
     /// The scheme (or J_s parameter).
     pub scheme: Scheme,
@@ -31,6 +33,16 @@ pub struct Subdivision {
     pub rules: Rules,
     /// Number of subdivision steps; `0` leaves the input as it is.
     pub levels: u32,
+}
+
+impl Default for Subdivision {
+    fn default() -> Self {
+        Subdivision::new(
+            Scheme::default(),
+            Rules::default(),
+            crate::frontend::DEFAULT_LEVELS,
+        )
+    }
 }
 
 impl Subdivision {

@@ -13,6 +13,7 @@ mod batch_blends;
 mod control_poses_csv;
 mod export_tolerance;
 mod frame_independence;
+mod frontend_options;
 mod fuzz_regressions;
 mod interop;
 mod key_velocities;

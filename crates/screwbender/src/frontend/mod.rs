@@ -1,0 +1,18 @@
+//! What every front end shares: the page and its element (through the wasm API), the npm module,
+//! the command line and the Python package each only convert their own types to and from these,
+//! so that they resolve options, name things and word their errors the same way.
+//!
+//! * [`options`]: subdivision options (`scheme`, `s`, `rules`, `levels`) with their ids,
+//!   aliases, ranges and defaults;
+//! * [`compare`]: the method comparison (names, body points, which methods by default);
+//! * [`files`] (feature `gltf`): motion files read from a path under their size limits.
+
+pub mod compare;
+#[cfg(feature = "gltf")]
+pub mod files;
+pub mod options;
+
+pub use options::{
+    default_subdivision, parse_levels, parse_levels_text, resolve, rules_display, rules_name,
+    scheme_name, OptionsInput, DEFAULT_LEVELS, MAX_LEVELS, SCHEME_NAMES,
+};
