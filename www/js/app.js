@@ -37,14 +37,6 @@ const loadViewModules = lazy('the analysis views', (a) =>
 
 const PARTS = [notices, session, files, input, pose, presets, responsive, labels, viewpoint, theme, media];
 
-/** Strobe count when a preset loads: fewer copies where the object is bulky (readable, as in the paper). */
-const PRESET_STROBE = {
-  spinning_block: 14, pendulum: 18, cylinder5: 36, pip_morph5: 36, circle4: 40,
-  triangle7: 40, rb_sphere7: 20, rb_ibeam7: 30, rb_molecule4: 24,
-};
-const DEFAULT_STROBE = 64;
-/** Pose selected when a preset loads (scenes.md A3: "drag or rotate the top-left pose"). */
-const PRESELECT = { l_cycle_edit: 4 };
 /** Default preset on a first visit. */
 const DEFAULT_SCENE = 'l_cycle_rotated';
 
@@ -624,9 +616,10 @@ export class App {
     const info = this.scenes.find((s) => s.id === id);
     if (!info) return this.showError(`unknown preset ${id}`);
     const apply = () => {
-      // The editing scene (A3) starts with its top-left pose selected, ready to drag.
-      this.setMotion(this.wasm.Motion.fromPreset(id), PRESELECT[id] ?? -1);
-      this.updateView({ scene: id, object: 'scene', strobe: PRESET_STROBE[id] ?? DEFAULT_STROBE });
+      // How the preset is shown (its strobe count, the pose selected on load: the editing
+      // scene's top-left pose, ready to drag) is the core's, as in every front end.
+      this.setMotion(this.wasm.Motion.fromPreset(id), info.selected ?? -1);
+      this.updateView({ scene: id, object: 'scene', strobe: info.strobe });
       this.setPlayback({ u: 0, t: undefined });
       this.meshesChanged();
       this.frameAll();

@@ -2,12 +2,12 @@
 //! (the object's mesh animated by adaptive or fixed-rate keyframes, plus the control poses) or as
 //! CSV samples / a body-point trajectory.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use glam::DVec3;
+use screwbender::frontend;
 use screwbender::{
     export_motion, ExportFormat, ExportSamples, ExportSettings, PresetObject, SamplingMode,
-    DEFAULT_TOLERANCE,
 };
 
 use crate::args::{numbers, velocities};
@@ -69,25 +69,9 @@ fn check(a: &ExportArgs) -> Result<ExportOptions, Failure> {
         verbose: a.verbose,
         output: a.output.clone(),
     };
-    if o.tolerance.is_some() && o.fps.is_some() {
-        return Err(Failure(
-            "give either --tolerance (adaptive sampling) or --fps (fixed rate), not both".into(),
-        ));
-    }
+    // Checked before the input is read.
+    frontend::export::sampling(o.tolerance, o.fps)?;
     Ok(o)
-}
-
-/// The `.gltf` + `.bin` pair for `OUT`: a `.gltf`/`.glb`/`.bin` extension of `OUT` is replaced,
-/// anything else is kept (`out.v2` gives `out.v2.gltf` + `out.v2.bin`).
-fn gltf_paths(out: &str) -> (PathBuf, PathBuf) {
-    let stem = [".gltf", ".glb", ".bin"]
-        .iter()
-        .find_map(|ext| out.strip_suffix(ext))
-        .unwrap_or(out);
-    (
-        PathBuf::from(format!("{stem}.gltf")),
-        PathBuf::from(format!("{stem}.bin")),
-    )
 }
 
 fn write(path: &Path, data: &[u8]) -> Result<(), Failure> {
@@ -114,16 +98,9 @@ pub fn export(args: ExportArgs) -> Result<Output, Failure> {
     crate::compare::warn_subdivision(&sub, &doc.poses, doc.closed);
     let object = PresetObject::of(&doc);
     let out = o.output.as_deref();
-    let (gltf_path, bin_path) = gltf_paths(out.unwrap_or("motion"));
-    let bin_name = bin_path
-        .file_name()
-        .and_then(|f| f.to_str())
-        .ok_or_else(|| Failure(format!("{}: not a valid file name", bin_path.display())))?
-        .to_string();
-    let sampling = match o.fps {
-        Some(fps) => SamplingMode::FixedRate(fps),
-        None => SamplingMode::Adaptive(o.tolerance.unwrap_or(DEFAULT_TOLERANCE)),
-    };
+    let (gltf_path, bin_path) = frontend::export::gltf_paths(Path::new(out.unwrap_or("motion")));
+    let bin_name = frontend::export::bin_name(&bin_path)?;
+    let sampling = frontend::export::sampling(o.tolerance, o.fps)?;
     let settings = ExportSettings {
         format,
         sampling,

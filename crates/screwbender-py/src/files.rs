@@ -9,10 +9,12 @@ use pyo3::exceptions::{PyFileNotFoundError, PyOSError, PyPermissionError, PyValu
 use pyo3::prelude::*;
 use screwbender::{
     export_motion, Error, ExportFormat, ExportSamples, ExportSettings, MotionDocument,
-    NodeSelection, PresetObject, SamplingMode, Subdivision, DEFAULT_TOLERANCE,
+    NodeSelection, PresetObject, Subdivision,
 };
 
 use crate::convert::detached;
+use crate::convert::value_error;
+use screwbender::frontend::export as export_request;
 use screwbender::frontend::files::{import_motion_path, FileError};
 
 /// An `OSError` of the matching subclass whose message names `path`.
@@ -112,28 +114,10 @@ pub fn export(
         write(path, doc.to_json().as_bytes())?;
         return Ok(doc.poses.len());
     };
-    if o.tolerance.is_some() && o.fps.is_some() {
-        return Err(PyValueError::new_err(
-            "fps: give either tolerance (adaptive sampling) or fps (fixed rate), not both",
-        ));
-    }
+    let sampling = export_request::sampling(o.tolerance, o.fps).map_err(value_error)?;
     let object = PresetObject::of(doc);
-    let sampling = match o.fps {
-        Some(fps) => SamplingMode::FixedRate(fps),
-        None => SamplingMode::Adaptive(o.tolerance.unwrap_or(DEFAULT_TOLERANCE)),
-    };
-    let text = path.to_string_lossy().to_string();
-    let stem = [".gltf", ".glb", ".bin"]
-        .iter()
-        .find_map(|ext| text.strip_suffix(ext))
-        .unwrap_or(&text)
-        .to_string();
-    let (gltf_path, bin_path) = (format!("{stem}.gltf"), format!("{stem}.bin"));
-    let bin_name = Path::new(&bin_path)
-        .file_name()
-        .and_then(|f| f.to_str())
-        .unwrap_or("motion.bin")
-        .to_string();
+    let (gltf_path, bin_path) = export_request::gltf_paths(path);
+    let bin_name = export_request::bin_name(&bin_path).map_err(value_error)?;
     let settings = ExportSettings {
         format,
         sampling,
@@ -157,11 +141,8 @@ pub fn export(
     let exported =
         detached(py, || export_motion(doc, sub, settings))?.map_err(|e| file_error(path, e))?;
     if format == ExportFormat::Gltf {
-        write(Path::new(&gltf_path), &exported.data)?;
-        write(
-            Path::new(&bin_path),
-            exported.bin.as_deref().unwrap_or_default(),
-        )?;
+        write(&gltf_path, &exported.data)?;
+        write(&bin_path, exported.bin.as_deref().unwrap_or_default())?;
     } else {
         write(path, &exported.data)?;
     }

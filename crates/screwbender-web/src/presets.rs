@@ -15,6 +15,12 @@ use screwbender::{Error, ErrorKind};
 #[serde(rename_all = "camelCase")]
 struct PresetInfo {
     id: &'static str,
+    /// The name in words ([`presets::display`]).
+    name: &'static str,
+    /// Copies of the object the strobe draws when the preset loads.
+    strobe: u32,
+    /// The control pose selected when it loads, if any.
+    selected: Option<usize>,
     label: &'static str,
     figure: &'static str,
     description: &'static str,
@@ -51,8 +57,9 @@ pub(crate) fn find_preset(id: &str, path: &'static str) -> Result<Preset, Error>
     })
 }
 
-/// The presets reproducing the papers' figures (id, label, figure, description, closed,
-/// default scheme and levels, pose count, the object to draw). Load one with
+/// The presets reproducing the papers' figures (id, name, label, figure, description, closed,
+/// default scheme and levels, pose count, the object to draw, how the page shows it: strobe
+/// count and the pose selected on load). Load one with
 /// `Motion.fromPreset(id)`.
 #[wasm_bindgen(unchecked_return_type = "PresetInfo[]")]
 pub fn presets() -> Result<JsValue, JsError> {
@@ -60,6 +67,9 @@ pub fn presets() -> Result<JsValue, JsError> {
         .into_iter()
         .map(|s| PresetInfo {
             id: s.id,
+            name: presets::display(s.id).name,
+            strobe: presets::display(s.id).strobe,
+            selected: presets::display(s.id).selected,
             label: s.label,
             figure: s.figure,
             description: s.description,

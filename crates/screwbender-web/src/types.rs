@@ -137,6 +137,12 @@ export type Shape =
 /** A preset as listed by `presets()`. */
 export interface PresetInfo {
   id: PresetId;
+  /** The preset's name in words, e.g. `L cycle, rotated poses`. */
+  name: string;
+  /** Copies of the object the strobe draws when the preset loads (fewer for bulky objects). */
+  strobe: number;
+  /** The control pose selected when the preset loads, or null. */
+  selected: number | null;
   label: string;
   figure: string;
   description: string;

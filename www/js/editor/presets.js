@@ -4,28 +4,9 @@
 
 import { foldPanelOnSmallScreens } from './fold.js';
 
-/** Human names of the presets (the paper's codes and figures are the subtitle). */
-const NAMES = {
-  l_cycle_parallel: 'L cycle, parallel poses',
-  l_cycle_rotated: 'L cycle, rotated poses',
-  l_cycle_edit: 'L cycle, editing',
-  pendulum: 'Pendulum',
-  spinning_block: 'Spinning block',
-  cylinder5: 'Tumbling cylinder',
-  pip_morph5: 'Morphing shapes',
-  circle4: 'Circle',
-  bunny6: 'Inconsistent rotations',
-  helix_open: 'Helix (open)',
-  triangle7: 'Tumbling triangle',
-  rb_sphere7: 'Turning about a centre',
-  rb_ibeam7: 'Flipping I-beam',
-  rb_molecule4: 'Tumbling molecule',
-};
-
-/** The human name of a preset (its id in words where no name is given). */
+/** The name of a preset in words (the core's, `presets()[i].name`). */
 export function presetName(info) {
-  const id = info.id;
-  return NAMES[id] ?? id.charAt(0).toUpperCase() + id.slice(1).replace(/_/g, ' ');
+  return info.name;
 }
 
 /** The subtitle of a preset: its label in the paper's scene list and its figure. */

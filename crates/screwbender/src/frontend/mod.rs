@@ -5,9 +5,12 @@
 //! * [`options`]: subdivision options (`scheme`, `s`, `rules`, `levels`) with their ids,
 //!   aliases, ranges and defaults;
 //! * [`compare`]: the method comparison (names, body points, which methods by default);
+//! * [`export`] (feature `gltf`): export requests (sampling, the `.gltf` + `.bin` names);
 //! * [`files`] (feature `gltf`): motion files read from a path under their size limits.
 
 pub mod compare;
+#[cfg(feature = "gltf")]
+pub mod export;
 #[cfg(feature = "gltf")]
 pub mod files;
 pub mod options;

@@ -7,10 +7,13 @@
 use glam::{DQuat, DVec2, DVec3};
 use serde::Serialize;
 
+pub mod display;
 pub(crate) mod hull;
 pub mod mesh;
 pub(crate) mod morph;
 pub(crate) mod pieces;
+
+pub use display::{display, PresetDisplay, DEFAULT_STROBE};
 
 use crate::pose::Pose;
 use crate::subdivision::scheme::Scheme;
