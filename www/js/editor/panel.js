@@ -11,7 +11,8 @@ import { describeScene } from './status.js';
 /** The largest strobe count the panel offers. */
 const STROBE_MAX = 10000;
 const SCHEMES = { 'Cubic B-spline': 'bspline', '4-point': 'fourpoint', Jarek: 'jarek', 'J_s (slider)': 'j' };
-const RULES = { 'Direct (V2)': 'direct', 'Split & tweak (V1)': 'split' };
+// The rule sets' display names, as the core's `frontend::rules_display` words them.
+const RULES = { 'direct (V2)': 'direct', 'split-then-tweak (V1)': 'split' };
 const OBJECTS = {
   "Preset's object": 'scene',
   Bar: 'bar',
