@@ -141,8 +141,8 @@ export interface PresetInfo {
   name: string;
   /** Copies of the object the strobe draws when the preset loads (fewer for bulky objects). */
   strobe: number;
-  /** The control pose selected when the preset loads, or null. */
-  selected: number | null;
+  /** The control pose selected when the preset loads (absent: none). */
+  selected?: number;
   label: string;
   figure: string;
   description: string;

@@ -33,8 +33,10 @@ pub(crate) fn from_js<T: DeserializeOwned>(
 
 /// Serialises a value to plain JavaScript objects and arrays.
 pub(crate) fn to_js<T: Serialize + ?Sized>(value: &T) -> Result<JsValue, JsError> {
+    // Structs with flattened fields (a comparison row's converged metrics) serialize as maps:
+    // as plain objects, they read like every other struct.
     value
-        .serialize(&serde_wasm_bindgen::Serializer::new())
+        .serialize(&serde_wasm_bindgen::Serializer::new().serialize_maps_as_objects(true))
         .map_err(|e| JsError::new(&js_message(&JsValue::from(e))))
 }
 
