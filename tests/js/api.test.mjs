@@ -704,14 +704,14 @@ describe('bad input: clear Error, state unchanged', () => {
     const m = fresh();
     throwsUnchanged(m, () => m.setScheme('cubic'), "scheme: unknown value 'cubic' (expected bspline, fourpoint, jarek, j)");
     throwsUnchanged(m, () => m.setScheme(3), 'scheme: expected a string, got number');
-    throwsUnchanged(m, () => m.setRules('v3'), "rules: unknown value 'v3' (expected direct, split-then-tweak (also split))");
+    throwsUnchanged(m, () => m.setRules('v3'), "rules: unknown value 'v3' (expected direct, split (also split-then-tweak))");
     throwsUnchanged(m, () => m.setS(NaN), 's: not a finite number (NaN or infinity)');
     throwsUnchanged(m, () => m.setS('0.5'), 's: expected a number, got string');
     throwsUnchanged(m, () => m.setOptions({ scheme: 'fourpoint', s: 0.3 }), "s: s = 0.3 contradicts scheme 'fourpoint' (whose J_s parameter is 0); use scheme 'j' for other values");
     throwsUnchanged(m, () => m.setOptions({ levle: 3 }), 'invalid options: unknown field `levle`, expected one of `scheme`, `s`, `j`, `rules`, `levels`');
     throwsUnchanged(m, () => m.setOptions({ levels: '3' }), 'levels: invalid options: invalid type: string "3", expected f64');
     throwsUnchanged(m, () => m.setOptions('fast'), 'invalid options: expected an object {scheme?, s?, rules?, levels?}, got string');
-    throwsUnchanged(m, () => m.setOptions({ scheme: 'jarek', levels: 2, rules: 'nope' }), "rules: unknown value 'nope' (expected direct, split-then-tweak (also split))");
+    throwsUnchanged(m, () => m.setOptions({ scheme: 'jarek', levels: 2, rules: 'nope' }), "rules: unknown value 'nope' (expected direct, split (also split-then-tweak))");
     m.setS(0.2);
     throwsUnchanged(m, () => m.setRules('split'), 'rules: the J_s family is defined with the direct rules only');
     m.setScheme('fourpoint');

@@ -174,7 +174,7 @@ describe('bad-input matrix: JS API', () => {
     const doc = docWith(P());
     const cases = [
       [{ scheme: 'cubic' }, "scheme: unknown value 'cubic' (expected bspline, fourpoint, jarek, j)"],
-      [{ rules: 'v3' }, "rules: unknown value 'v3' (expected direct, split-then-tweak (also split))"],
+      [{ rules: 'v3' }, "rules: unknown value 'v3' (expected direct, split (also split-then-tweak))"],
       [{ levle: 3 }, 'invalid options: unknown field `levle`, expected one of `scheme`, `s`, `j`, `rules`, `levels`'],
       [{ levels: -1 }, 'levels: -1 is out of range (expected a whole number ≥ 0)'],
       [{ levels: 2.5 }, 'levels: 2.5 is out of range (expected a whole number ≥ 0)'],
@@ -188,7 +188,7 @@ describe('bad-input matrix: JS API', () => {
       throwsUnchanged(m, () => m.setOptions(options), message, JSON.stringify(options));
     }
     throwsUnchanged(m, () => m.setScheme('cubic'), "scheme: unknown value 'cubic' (expected bspline, fourpoint, jarek, j)");
-    throwsUnchanged(m, () => m.setRules('v3'), "rules: unknown value 'v3' (expected direct, split-then-tweak (also split))");
+    throwsUnchanged(m, () => m.setRules('v3'), "rules: unknown value 'v3' (expected direct, split (also split-then-tweak))");
     throwsError(() => Motion.fromPreset('nope'), /^preset: unknown value 'nope' \(expected /);
   });
 

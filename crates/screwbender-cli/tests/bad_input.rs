@@ -331,7 +331,7 @@ fn unknown_option_values_are_refused_and_named() {
     let e = "v3".parse::<Rules>().unwrap_err();
     assert_eq!(
         e.to_string(),
-        "rules: unknown value 'v3' (expected direct, split-then-tweak (also split))"
+        "rules: unknown value 'v3' (expected direct, split (also split-then-tweak))"
     );
     let e = Subdivision::new(Scheme::J(0.3), Rules::SplitThenTweak, 2)
         .validate()

@@ -180,7 +180,7 @@ fn bad_input_is_rejected_and_changes_nothing() {
     rejects(
         &m,
         m.set_rules("v3".into()),
-        "rules: unknown value 'v3' (expected direct, split-then-tweak (also split))",
+        "rules: unknown value 'v3' (expected direct, split (also split-then-tweak))",
     );
     rejects(
         &m,

@@ -110,7 +110,7 @@ pub enum Rules {
 
 impl Rules {
     /// The names accepted by [`Rules::from_str`].
-    pub const NAMES: &'static str = "direct, split-then-tweak (also split)";
+    pub const NAMES: &'static str = "direct, split (also split-then-tweak)";
 
     /// Former name of [`Rules::SplitThenTweak`], kept for one release: "Split&Tweak" names the
     /// whole framework, of which both rule sets are part.
