@@ -56,8 +56,10 @@ def test_python_changes_are_checked_and_observed():
         fig.poses = np.vstack([P[:1], np.zeros((1, 7)), P[2:]])
     with pytest.raises(ValueError, match="scheme: unknown value 'cubic'"):
         fig.scheme = "cubic"
-    with pytest.raises(ValueError, match="levels: the result would have"):
+    with pytest.raises(ValueError, match="levels: 30 is out of range"):
         fig.levels = 30
+    with pytest.raises(ValueError, match="levels: the result would have"):
+        fig.levels = 19
     with pytest.raises(ValueError, match="strobe"):
         sb.Figure(P, strobe=-1)
     assert np.array_equal(fig.poses, before[0]) and (fig.scheme, fig.levels) == before[1:]

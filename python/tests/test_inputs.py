@@ -152,12 +152,15 @@ def test_too_few_poses_are_refused():
 
 
 def test_unknown_option_values_are_refused_and_named():
-    refuses(ValueError, "scheme: unknown value 'cubic' (expected bspline, fourpoint, jarek)", sb.Motion, P, scheme="cubic")
+    refuses(ValueError, "scheme: unknown value 'cubic' (expected bspline, fourpoint, jarek, j)", sb.Motion, P, scheme="cubic")
     refuses(ValueError, "rules: unknown value 'v3'", sb.Motion, P, rules="v3")
     refuses(ValueError, "rules: the J_s family is defined with the direct rules only", sb.Motion, P, s=0.5, rules="split")
-    refuses(ValueError, "s: give either scheme or s", sb.Motion, P, scheme="jarek", s=0.5)
+    # A scheme and s must agree (as in JavaScript and on the command line).
+    refuses(ValueError, "s: s = 0.3 contradicts scheme 'jarek'", sb.Motion, P, scheme="jarek", s=0.3)
+    assert sb.Motion(P, scheme="jarek", s=0.5).scheme == "jarek"
     refuses(ValueError, "levels: -1 is out of range", sb.Motion, P, levels=-1)
-    refuses(TypeError, "levels: expected a whole number", sb.Motion, P, levels=2.5)
+    refuses(ValueError, "levels: 2.5 is out of range (expected a whole number from 0 to 19", sb.Motion, P, levels=2.5)
+    assert sb.Motion(P, levels=3.0).levels == 3
     refuses(TypeError, "levels: expected a whole number", sb.Motion, P, levels=True)
     refuses(TypeError, "unexpected keyword argument 'sheme'", sb.Motion, P, sheme="jarek")
     refuses(ValueError, "name: 'nope' is out of range (expected a preset: ", sb.Motion.from_preset, "nope")
@@ -170,7 +173,8 @@ def test_levels_beyond_the_cap_are_refused_before_any_work():
     m = sb.Motion(P, levels=17)
     assert m.refined_count == 6 * 2**17
     before = state(m)
-    refuses(ValueError, "levels: the result would have", setattr, m, "levels", 40)
+    refuses(ValueError, "levels: 40 is out of range (expected a whole number from 0 to 19", setattr, m, "levels", 40)
+    refuses(ValueError, "levels: the result would have", setattr, m, "levels", 19)
     assert state(m) == before
 
 
