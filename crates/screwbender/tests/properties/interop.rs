@@ -383,7 +383,10 @@ fn the_fetched_bunny_is_the_compiled_in_bunny() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
     let asset = std::fs::read_to_string(root.join("assets/bunny.obj")).unwrap();
     let page = std::fs::read_to_string(root.join("../../www/vendor/bunny.obj")).unwrap();
-    assert!(asset == page, "www/vendor/bunny.obj differs from the crate's assets/bunny.obj");
+    assert!(
+        asset == page,
+        "www/vendor/bunny.obj differs from the crate's assets/bunny.obj"
+    );
     let s = presets::preset("bunny6").unwrap();
     let mut doc = MotionDocument::new(s.poses.clone(), s.closed);
     doc.name = Some("bunny6".into());
@@ -398,7 +401,10 @@ fn the_fetched_bunny_is_the_compiled_in_bunny() {
     let pendulum = PresetObject::of_preset("pendulum", &doc)
         .with_bunny_obj("pendulum", &page)
         .unwrap();
-    assert_eq!(pendulum.mesh, PresetObject::of_preset("pendulum", &doc).mesh);
+    assert_eq!(
+        pendulum.mesh,
+        PresetObject::of_preset("pendulum", &doc).mesh
+    );
     let bad = PresetObject::of_preset("bunny6", &doc).with_bunny_obj("bunny6", "v 1 2\n");
     assert!(bad.unwrap_err().path().starts_with("bunny"));
 }
