@@ -48,8 +48,9 @@ export interface ScrewBenderAttributes {
   /** The figure's chrome: none, minimal (default) or full. */
   controls?: 'none' | 'minimal' | 'full';
   /**
-   * `iso`, `front`, `side`, `top` or `"yaw pitch [distance]"` (degrees, scene units) as an
-   * attribute; as a property, the camera as state (radians, scene units).
+   * `iso`, `front`, `side`, `top`, `"yaw pitch [distance]"` or `"yaw pitch distance tx ty tz"`
+   * (degrees, scene units; the last three the point looked at) as an attribute; as a property,
+   * the camera as state (radians, scene units).
    */
   camera?: string | Partial<CameraState>;
   theme?: 'light' | 'dark';

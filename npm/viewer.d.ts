@@ -40,7 +40,7 @@ export interface ViewerOptions {
   editable?: boolean | string;
   /** The figure's chrome: none, minimal (play, scrub, time; default) or full (plus scheme, levels, frame). */
   controls?: 'none' | 'minimal' | 'full';
-  /** `iso`, `front`, `side`, `top` or `"yaw pitch [distance]"` (degrees, scene units). */
+  /** `iso`, `front`, `side`, `top`, `"yaw pitch [distance]"` or `"yaw pitch distance tx ty tz"` (degrees, scene units; the last three the point looked at). */
   camera?: string;
   /** The figure's chrome, frame and 3-D view (background and line colours). */
   theme?: 'light' | 'dark';

@@ -122,7 +122,7 @@ function assertSame(state, exactCamera) {
   assert.equal(state.view.showPolyscrew, true, 'the polyscrew shown, as in the playground');
   if (exactCamera) assert.deepEqual(state.camera, session.camera);
   else {
-    // The attribute holds degrees to 2 decimals and the distance to 3.
+    // The attribute holds degrees and scene units to 10 decimals.
     assert.ok(Math.abs(state.camera.yaw - session.camera.yaw) < 1e-3, `yaw ${state.camera.yaw} vs ${session.camera.yaw}`);
     assert.ok(Math.abs(state.camera.pitch - session.camera.pitch) < 1e-3, `pitch ${state.camera.pitch} vs ${session.camera.pitch}`);
     assert.ok(Math.abs(state.camera.distance - session.camera.distance) < 1e-3, `distance ${state.camera.distance} vs ${session.camera.distance}`);

@@ -22,7 +22,7 @@ import session, { History } from './editor/session.js';
 import files from './editor/files.js';
 import input from './editor/input.js';
 import pose from './editor/pose.js';
-import presets from './editor/presets.js';
+import presets, { presetName } from './editor/presets.js';
 import responsive from './editor/responsive.js';
 import labels from './editor/labels.js';
 import viewpoint from './editor/viewpoint.js';
@@ -295,8 +295,7 @@ export class App {
     const { backend, renderer } = this.viewer;
     document.getElementById('backend').textContent = `${backend}${renderer.samples > 1 ? ` · MSAA ${renderer.samples}×` : ''}`;
 
-    // Share link > autosave > default preset.
-    if (!this.parts.session.restoreInitial()) this.loadPreset(DEFAULT_SCENE, false);
+    this.openInitial(params);
     this.ui = buildUi(this);
     if (this.view.dock) this.openView(this.view.dock);
     this.parts.input.bind();
@@ -309,6 +308,31 @@ export class App {
     this.parts.media.bind();
     window.addEventListener('beforeunload', () => this.autosave());
     this.ready = true;
+  }
+
+  /**
+   * The first motion: share link (#s=) > `?preset=<id>` > autosave > default preset. A linked
+   * preset over an autosaved session is one undoable edit, as a pick in the Presets menu is
+   * (Ctrl+Z brings the session back); an unknown id says so and the page opens as it would
+   * without it. The parameter then leaves the address, so a reload keeps the edits made since
+   * instead of loading the preset afresh.
+   * @param {URLSearchParams} params
+   */
+  openInitial(params) {
+    const restored = this.parts.session.restoreInitial();
+    const linked = restored === 'link' ? null : params.get('preset');
+    const known = linked !== null && this.scenes.some((s) => s.id === linked);
+    if (known && restored) this.loadPreset(linked);
+    else if (!restored) this.loadPreset(known ? linked : DEFAULT_SCENE, false);
+    if (linked !== null && !known) {
+      const shown = restored ? 'the last session is shown' : `showing ${presetName(this.sceneInfo)}`;
+      this.showError(`The link asks for preset "${linked}", which does not exist (the Presets menu lists them); ${shown}.`, 'warn');
+    }
+    if (params.has('preset')) {
+      const url = new URL(location.href);
+      url.searchParams.delete('preset');
+      history.replaceState(history.state, '', url.href);
+    }
   }
 
   /**

@@ -36,8 +36,10 @@ export interface ExportSettings {
   point?: Vec3;
   /** glTF only: also one empty node per control pose. */
   controlNodes?: boolean;
-  /** glTF only: the object's mesh by name (`bar`, `block`, …, `scene:<id>`); default: the preset's object if the document is named after a preset (the morphing shapes of a preset with one shape per pose, such as `pip_morph5`), else a placeholder box. */
+  /** glTF only: the object's mesh by name (`bar`, `block`, …), or `scene:<id>` for preset `<id>`'s object as the playground draws it (the morphing shapes of a preset with one shape per pose, such as `pip_morph5`; the Stanford bunny for `bunny6` given `bunny`); default: the preset's object if the document is named after a preset, else a placeholder box. */
   object?: string;
+  /** glTF only: the OBJ text of the Stanford bunny (the playground's `vendor/bunny.obj`, the file the CLI compiles in), the object of preset `bunny6`, which this module leaves out; without it a wedge stands in, as the page draws it until the file arrives. */
+  bunny?: string;
   /** glTF only: an imported mesh (OBJ text or glTF/GLB bytes), scaled to fit a cube of side `size`. */
   mesh?: { kind: 'obj' | 'gltf'; data: string | Uint8Array; size: number };
   /** The file name's stem (default: the document's name, else `motion`); the suggested name adds what the file holds: `<name>-motion.glb` / `.gltf` (+ `-motion.bin`), `<name>-poses.csv`, `<name>-path.csv` (not repeated when the stem already ends with it). */
@@ -76,6 +78,7 @@ struct ExportInput {
     point: Option<[f64; 3]>,
     control_nodes: Option<bool>,
     object: Option<String>,
+    bunny: Option<String>,
     name: Option<String>,
 }
 
@@ -162,6 +165,7 @@ impl MotionHandle {
                 "point",
                 "controlNodes",
                 "object",
+                "bunny",
                 "mesh",
                 "name",
             ],
@@ -185,9 +189,20 @@ impl MotionHandle {
         };
         let imported = mesh_input(&settings)?;
         let (doc, sub) = self.snapshot()?;
-        let named = match &input.object {
-            Some(name) => Some(Mesh::named(name).map_err(|e| e.within("object"))?),
-            None => None,
+        // `scene:<id>` is a preset's whole object (its morph, the bunny), not only its shape:
+        // the same object the command line draws for a document named after that preset.
+        let scene = input
+            .object
+            .as_deref()
+            .and_then(|name| name.strip_prefix("scene:"));
+        let named = match (&input.object, scene) {
+            (Some(name), None) => Some(Mesh::named(name).map_err(|e| e.within("object"))?),
+            (Some(name), Some(_)) => {
+                // Checked as a mesh name, so an unknown id fails as any unknown object does.
+                Mesh::named(name).map_err(|e| e.within("object"))?;
+                None
+            }
+            (None, _) => None,
         };
         if imported.is_some() && input.object.is_some() {
             return Err(Error::new(
@@ -200,9 +215,20 @@ impl MotionHandle {
             .into());
         }
         // The preset's object (and morph) unless another object or mesh is asked for.
-        let preset = match (&input.object, &imported) {
-            (None, None) => PresetObject::of(&doc),
-            _ => PresetObject::default(),
+        let preset_id = match (scene, &imported) {
+            (Some(id), None) => Some(id),
+            (None, None) if input.object.is_none() => doc.name.as_deref(),
+            _ => None,
+        };
+        let preset = match preset_id {
+            Some(id) => {
+                let object = PresetObject::of_preset(id, &doc);
+                match &input.bunny {
+                    Some(obj) => object.with_bunny_obj(id, obj)?,
+                    None => object,
+                }
+            }
+            None => PresetObject::default(),
         };
         // File names say what the file holds (a glTF motion, sampled poses, a path).
         let stem = input

@@ -6,7 +6,7 @@
 // (Motion.exportFile, importMotionFile), so a file written here equals the CLI's. Every import
 // is one undoable edit, and a failed one changes nothing. The functions take the app; the
 // default export is the app's part (see app.js for the part contract).
-import { IMPORT_SIZE } from '../view/drawing.js';
+import { IMPORT_SIZE, BUNNY_PRESET, fetchBunny } from '../view/drawing.js';
 import { SLOT } from '../view/slots.js';
 import { SESSION_VERSION, MAX_SAVED_MESH } from './session.js';
 import { askReduction, MANY_POSES } from './reduce-dialog.js';
@@ -32,8 +32,19 @@ function fromBase64(text) {
   return Uint8Array.from(bin, (c) => c.charCodeAt(0));
 }
 
-/** The export settings of the current view: the object as drawn (the motion carries its timing). */
-export function exportSettings(app, format, extra = {}) {
+/** True when the view draws the Stanford bunny (preset bunny6 with its own object). */
+const showsBunny = (app) => app.view.object === 'scene' && app.view.scene === BUNNY_PRESET;
+
+/**
+ * The export settings of the current view: the object as drawn (the motion carries its timing).
+ * A preset's own object is `scene:<id>`, which the core turns into what the command line draws
+ * for that preset (its morph, or the bunny from `bunny`, the OBJ text the view draws it from).
+ * @param {any} app
+ * @param {string} format
+ * @param {Record<string, any>} [extra]
+ * @param {string | null} [bunny]
+ */
+export function exportSettings(app, format, extra = {}, bunny = null) {
   /** @type {Record<string, any>} */
   const s = { format, ...extra };
   if (format !== 'csv') {
@@ -42,6 +53,7 @@ export function exportSettings(app, format, extra = {}) {
       const m = app.imported;
       s.mesh = { kind: m.kind, data: m.kind === 'gltf' ? fromBase64(m.data) : m.data, size: IMPORT_SIZE };
     } else s.object = v.object === 'scene' ? `scene:${v.scene}` : v.object;
+    if (bunny && showsBunny(app)) s.bunny = bunny;
   }
   // The key times and velocities come with the motion's document (motion.times, .velocities).
   s.name = app.motion.name ?? app.view.scene ?? 'motion';
@@ -60,7 +72,10 @@ export async function exportMotion(app, format, extra = {}, { save = true } = {}
       app.ui?.toast('Loading the file writer…');
       await app.analysis();
     }
-    file = app.motion.exportFile(exportSettings(app, format, extra));
+    // The bunny's file is in the HTTP cache once the view drew it; where it cannot be read,
+    // the view shows the wedge, and so does the file.
+    const bunny = format !== 'csv' && showsBunny(app) ? await fetchBunny().catch(() => null) : null;
+    file = app.motion.exportFile(exportSettings(app, format, extra, bunny));
   } catch (e) {
     app.showError(`Export failed: ${e.message}`);
     return null;

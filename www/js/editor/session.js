@@ -233,8 +233,10 @@ export default {
       autosave,
 
       /**
-       * Share link > autosave: applies the first that works and returns true; false when
-       * neither is there (or both failed, with a message each), so the caller loads a preset.
+       * Share link > autosave: applies the first that works and says which ('link' or
+       * 'saved'); '' when neither is there (or both failed, with a message each), so the
+       * caller loads a preset.
+       * @returns {'link' | 'saved' | ''}
        */
       restoreInitial() {
         const hash = location.hash.match(/^#s=(.+)$/);
@@ -243,7 +245,7 @@ export default {
             applySession(decodeHash(hash[1]));
             history.replaceState(null, '', location.pathname + location.search);
             autosave();
-            return true;
+            return 'link';
           } catch (e) {
             app.showError(`The shared link could not be opened: ${e.message}`);
           }
@@ -252,12 +254,12 @@ export default {
         if (saved) {
           try {
             applySession(saved);
-            return true;
+            return 'saved';
           } catch (e) {
             app.showError(`The autosaved session could not be restored: ${e.message}`);
           }
         }
-        return false;
+        return '';
       },
 
       /** Records the current state before an edit. */

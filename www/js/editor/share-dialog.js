@@ -41,8 +41,9 @@ const short = (x, digits = 2) => String(Number(x.toFixed(digits)));
 
 /**
  * The <screw-bender> options that show the playground's figure as it is now: subdivision
- * options, strobe, layers, camera (yaw, pitch, distance in degrees and scene units), speed,
- * loop, theme. Returns [name, value] pairs in a stable order; defaults are left out.
+ * options, strobe, layers, camera (yaw, pitch, distance and the point looked at, in degrees and
+ * scene units), speed, loop, theme. Returns [name, value] pairs in a stable order; defaults are
+ * left out.
  */
 export function figureOptions(app) {
   const o = app.motion.options();
@@ -57,7 +58,10 @@ export function figureOptions(app) {
   const deg = (r) => (r * 180) / Math.PI;
   // The attribute has no straight-down view: a top view is given as the steepest it takes.
   const pitch = Math.max(-MAX_PITCH_DEG, Math.min(MAX_PITCH_DEG, deg(c.pitch)));
-  out.push(['camera', `${short(deg(c.yaw))} ${short(pitch)} ${short(c.distance, 3)}`]);
+  // To 10 decimals (trailing zeros dropped), target included: the figure, whatever its size,
+  // is framed as the playground is, not merely turned alike.
+  const exact = (x) => short(x, 10);
+  out.push(['camera', [deg(c.yaw), pitch, c.distance, ...c.target].map(exact).join(' ')]);
   if (app.anim.speed !== 1) out.push(['speed', short(app.anim.speed)]);
   if (!app.anim.loop) out.push(['loop', 'false']);
   const theme = document.documentElement.dataset.theme === 'dark' ? 'dark' : 'light';

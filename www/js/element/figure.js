@@ -263,6 +263,7 @@ export class Figure {
         this.viewer.camera.yaw = cam.yaw;
         this.viewer.camera.pitch = cam.pitch;
         if (cam.distance) this.viewer.camera.distance = cam.distance;
+        if (cam.target) this.viewer.camera.target = [...cam.target];
         this.viewer.cameraMoved();
       }
       this.viewer.rebuild();

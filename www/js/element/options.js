@@ -76,15 +76,21 @@ export function oneOf(name, value, list) {
   return value;
 }
 
-/** Camera option → {yaw, pitch, distance?} in radians. */
+/**
+ * Camera option → {yaw, pitch, distance?, target?}, angles in radians: a named view, or
+ * "yaw pitch [distance [tx ty tz]]" (degrees, scene units). With the target the figure is framed
+ * exactly as given (the playground's Share & embed writes all six); without it the figure is
+ * framed around the motion and then turned.
+ */
 export function cameraView(value) {
   const v = String(value).trim();
   if (VIEWS[v]) return { yaw: (VIEWS[v][0] * Math.PI) / 180, pitch: (VIEWS[v][1] * Math.PI) / 180 };
   const parts = v.split(/[\s,]+/).map(Number);
-  if ((parts.length === 2 || parts.length === 3) && parts.every(Number.isFinite) && Math.abs(parts[1]) <= 89.9 && !(parts[2] <= 0)) {
-    return { yaw: (parts[0] * Math.PI) / 180, pitch: (parts[1] * Math.PI) / 180, distance: parts[2] };
+  if ([2, 3, 6].includes(parts.length) && parts.every(Number.isFinite) && Math.abs(parts[1]) <= 89.9 && !(parts[2] <= 0)) {
+    const out = { yaw: (parts[0] * Math.PI) / 180, pitch: (parts[1] * Math.PI) / 180, distance: parts[2] };
+    return parts.length === 6 ? { ...out, target: parts.slice(3) } : out;
   }
-  throw new OptionError('camera', value, `expected ${Object.keys(VIEWS).join(', ')} or "yaw pitch [distance]" (degrees; |pitch| < 90)`);
+  throw new OptionError('camera', value, `expected ${Object.keys(VIEWS).join(', ')}, "yaw pitch [distance]" or "yaw pitch distance tx ty tz" (degrees, scene units; |pitch| < 90, distance > 0)`);
 }
 
 /** The subdivision options among `o` (checked), for Motion.setOptions. */

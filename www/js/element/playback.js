@@ -168,7 +168,8 @@ export class Playback {
 
   /**
    * Sets the fields given (checked first: a bad one changes nothing); fires camera-change 'api'.
-   * A string is the `camera` attribute's value (a named view or "yaw pitch [distance]").
+   * A string is the `camera` attribute's value (a named view, "yaw pitch [distance]" or
+   * "yaw pitch distance tx ty tz").
    */
   setCamera(s) {
     if (typeof s === 'string') {

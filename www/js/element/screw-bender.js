@@ -10,8 +10,8 @@
 // payload, the part after `#s=`), an inline <script type="application/json"> child (a motion
 // document), `preset` (a preset id; `scene`, its former name, still works). Options: scheme, levels, s, rules, strobe, show (layers:
 // strobe control trajectories polyscrew polygon triads grid), autoplay, loop, speed, editable,
-// controls (none | minimal | full), camera (iso | front | side | top, or "yaw pitch [distance]"
-// in degrees and scene units), theme (light | dark), persist (a localStorage key; without it the
+// controls (none | minimal | full), camera (iso | front | side | top, "yaw pitch [distance]", or
+// "yaw pitch distance tx ty tz" with the point looked at, in degrees and scene units), theme (light | dark), persist (a localStorage key; without it the
 // figure never touches storage), alt (the accessible name), loading (lazy | eager), poster (an
 // image URL shown until the first frame), touch-action (pan-y | pan-x | none: what a touch on
 // the unfocused figure leaves to the page). Children with slot="pose-3" (or slot="pose" and

@@ -24,10 +24,29 @@ function trajectoryLine(dpr, colors = COLORS) {
 /** Size of the cube an imported mesh is scaled to fit (scene units; exports use it as well). */
 export const IMPORT_SIZE = 1.6;
 /** The preset of the paper's bunny example, its mesh (vendored by scripts/serve.d/30-bunny.sh) and
- * the size it is scaled to (the wedge's longest side). */
-const BUNNY_SCENE = 'scene:bunny6';
+ * the size it is scaled to (the wedge's longest side; the core's BUNNY_SIZE). */
+export const BUNNY_PRESET = 'bunny6';
+const BUNNY_SCENE = `scene:${BUNNY_PRESET}`;
 const BUNNY_URL = new URL('../../vendor/bunny.obj', import.meta.url);
 const BUNNY_SIZE = 1.2;
+/** @type {Promise<string> | null} */
+let bunnyText = null;
+
+/**
+ * The Stanford bunny's OBJ text, fetched once for every user (the drawing, the file export,
+ * which hands it to the core so that the file carries the mesh drawn); a failed fetch is
+ * forgotten, so that the next call tries again.
+ * @returns {Promise<string>}
+ */
+export function fetchBunny() {
+  bunnyText ??= fetch(BUNNY_URL)
+    .then((res) => (res.ok ? res.text() : Promise.reject(new Error(`${res.status} ${res.statusText}`))))
+    .catch((e) => {
+      bunnyText = null;
+      throw e;
+    });
+  return bunnyText;
+}
 /** Scale of the control-pose and animated objects relative to the strobe (avoids z-fighting). */
 const CONTROL_SCALE = 1.01;
 
@@ -109,8 +128,7 @@ export class Drawing {
    */
   loadBunny() {
     if (this.bunnyLoad) return;
-    this.bunnyLoad = fetch(BUNNY_URL)
-      .then((res) => (res.ok ? res.text() : Promise.reject(new Error(`${res.status} ${res.statusText}`))))
+    this.bunnyLoad = fetchBunny()
       .then((text) => {
         this.bunny = text;
         this.meshesChanged();

@@ -18,7 +18,7 @@ use crate::formats::gltf::glb::is_glb;
 use crate::formats::gltf::import::{import_glb, import_gltf, NodeSelection, MAX_GLTF_BYTES};
 use crate::formats::sampling::Deviation;
 use crate::formats::tracks::{sample_document, DocumentSamples, SamplingMode};
-use crate::presets::mesh::Mesh;
+use crate::presets::mesh::{Mesh, BUNNY_PRESET};
 use crate::presets::morph::PipMorph;
 use crate::subdivision::Subdivision;
 
@@ -113,13 +113,32 @@ pub struct PresetObject {
 impl PresetObject {
     /// The preset object of `doc` (both parts `None` when its name is no preset's).
     pub fn of(doc: &MotionDocument) -> PresetObject {
-        let Some(name) = doc.name.as_deref() else {
-            return PresetObject::default();
-        };
-        PresetObject {
-            mesh: crate::presets::preset(name).map(|scene| Mesh::for_preset(&scene)),
-            morph: PipMorph::for_preset(name, doc.poses.len(), doc.closed),
+        match doc.name.as_deref() {
+            Some(name) => PresetObject::of_preset(name, doc),
+            None => PresetObject::default(),
         }
+    }
+
+    /// The object of preset `id` moved by `doc`'s poses, whatever the document is named: what
+    /// a figure that draws preset `id`'s object shows (both parts `None` for an unknown id; the
+    /// morph only while `doc` has one pose per shape).
+    pub fn of_preset(id: &str, doc: &MotionDocument) -> PresetObject {
+        PresetObject {
+            mesh: crate::presets::preset(id).map(|scene| Mesh::for_preset(&scene)),
+            morph: PipMorph::for_preset(id, doc.poses.len(), doc.closed),
+        }
+    }
+
+    /// For preset [`BUNNY_PRESET`], the Stanford bunny read from `obj`, the text of the crate's
+    /// `assets/bunny.obj` ([`Mesh::bunny_from_obj`]); other presets' objects are kept. A build
+    /// without the `bunny` feature draws a wedge in the bunny's place; one that gets the file
+    /// by other means (the page fetches it) writes the same bytes as the command line this way.
+    /// Errors: those of [`Mesh::from_obj`], at `bunny`.
+    pub fn with_bunny_obj(mut self, id: &str, obj: &str) -> Result<PresetObject, Error> {
+        if id == BUNNY_PRESET && self.mesh.is_some() {
+            self.mesh = Some(Mesh::bunny_from_obj(obj).map_err(|e| e.within("bunny"))?);
+        }
+        Ok(self)
     }
 }
 

@@ -203,11 +203,14 @@ pub fn extreme_hull(points: &[DVec3]) -> Option<Vec<[u32; 3]>> {
     if planes.values().all(|l| l.len() >= 3) {
         return Some(tris);
     }
-    let kept: Vec<u32> = planes
+    let mut kept: Vec<u32> = planes
         .iter()
         .filter(|(_, l)| l.len() >= 3)
         .map(|(v, _)| *v)
         .collect();
+    // In the points' order: a HashMap's order changes from one map to the next, and so would
+    // the hull made again from it (its triangles' order and the exported meshes' bytes).
+    kept.sort_unstable();
     let sub: Vec<DVec3> = kept.iter().map(|&v| points[v as usize]).collect();
     let again = convex_hull(&sub)?;
     Some(again.iter().map(|t| t.map(|i| kept[i as usize])).collect())
@@ -262,6 +265,19 @@ mod tests {
             [q.x, q.y, q.z].iter().all(|x| *x == 0.0 || *x == 1.0)
         }));
         assert!((volume(&p, &tris) - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn the_extreme_hull_is_the_same_every_time() {
+        let mut p = Vec::new();
+        for i in 0..64 {
+            let c = |k: u32| f64::from((i >> (2 * k)) % 4) / 3.0;
+            p.push(DVec3::new(c(0), c(1), c(2)));
+        }
+        let first = extreme_hull(&p).unwrap();
+        for _ in 0..8 {
+            assert_eq!(extreme_hull(&p).unwrap(), first);
+        }
     }
 
     #[test]

@@ -373,9 +373,16 @@ impl Mesh {
     /// [`BUNNY_SIZE`].
     #[cfg(feature = "bunny")]
     pub fn bunny() -> Mesh {
-        Mesh::from_obj(include_str!("../../assets/bunny.obj"))
+        Mesh::bunny_from_obj(include_str!("../../assets/bunny.obj"))
             .expect("the bundled bunny parses")
-            .normalized(BUNNY_SIZE)
+    }
+
+    /// The Stanford bunny from the OBJ text of `assets/bunny.obj`, scaled as [`Mesh::bunny`]
+    /// scales the compiled-in copy: builds without the `bunny` feature (the page's wasm, which
+    /// fetches the file instead of carrying it) make the very same mesh from the same text.
+    /// Errors: those of [`Mesh::from_obj`].
+    pub fn bunny_from_obj(text: &str) -> Result<Mesh, Error> {
+        Ok(Mesh::from_obj(text)?.normalized(BUNNY_SIZE))
     }
 
     /// The object of a preset: its [`Shape`]'s mesh, or for [`BUNNY_PRESET`] the Stanford bunny

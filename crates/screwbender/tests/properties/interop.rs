@@ -372,3 +372,39 @@ fn preset_object_follows_the_document() {
     let none = PresetObject::of(&unnamed);
     assert!(none.mesh.is_none() && none.morph.is_none());
 }
+
+/// A build without the compiled-in bunny (the page's wasm) draws and exports the bunny from the
+/// OBJ text it fetches (`www/vendor/bunny.obj`): that file is the crate's asset, and the mesh made
+/// from it is the command line's, so both exports of `bunny6` carry the same bytes.
+#[cfg(all(feature = "bunny", not(target_arch = "wasm32")))]
+#[test]
+fn the_fetched_bunny_is_the_compiled_in_bunny() {
+    use screwbender::{MotionDocument, PresetObject};
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let asset = std::fs::read_to_string(root.join("assets/bunny.obj")).unwrap();
+    let page = std::fs::read_to_string(root.join("../../www/vendor/bunny.obj")).unwrap();
+    assert!(
+        asset == page,
+        "www/vendor/bunny.obj differs from the crate's assets/bunny.obj"
+    );
+    let s = presets::preset("bunny6").unwrap();
+    let mut doc = MotionDocument::new(s.poses.clone(), s.closed);
+    doc.name = Some("bunny6".into());
+    let compiled = PresetObject::of(&doc).mesh.unwrap();
+    assert_eq!(compiled, Mesh::bunny());
+    let fetched = PresetObject::of_preset("bunny6", &doc)
+        .with_bunny_obj("bunny6", &page)
+        .unwrap();
+    assert_eq!(fetched.mesh.as_ref(), Some(&compiled));
+    assert!(fetched.morph.is_none());
+    // Other presets keep their objects; a bad file is an error at `bunny`.
+    let pendulum = PresetObject::of_preset("pendulum", &doc)
+        .with_bunny_obj("pendulum", &page)
+        .unwrap();
+    assert_eq!(
+        pendulum.mesh,
+        PresetObject::of_preset("pendulum", &doc).mesh
+    );
+    let bad = PresetObject::of_preset("bunny6", &doc).with_bunny_obj("bunny6", "v 1 2\n");
+    assert!(bad.unwrap_err().path().starts_with("bunny"));
+}
