@@ -86,8 +86,9 @@ const DEFAULT_SCENE = 'l_cycle_rotated';
  * What the App announces to `app.on(topic, fn)`: 'motion' (the Motion, its options or the
  * display changed and the view has been rebuilt: `changed`),
  * 'view' (display settings: fn gets the names changed), 'playback' (playhead, speed, loop),
- * 'selection' (the selected pose or the gizmo mode).
- * @typedef {'motion' | 'view' | 'playback' | 'selection'} Topic
+ * 'selection' (the selected pose or the gizmo mode), 'layout' (the part of the window the 3-D
+ * view and the dock share: a lesson opened or closed).
+ * @typedef {'motion' | 'view' | 'playback' | 'selection' | 'layout'} Topic
  */
 
 /**
