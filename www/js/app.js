@@ -28,6 +28,7 @@ import labels from './editor/labels.js';
 import viewpoint from './editor/viewpoint.js';
 import theme, { THEMES } from './editor/theme.js';
 import media from './editor/media.js';
+import drafts from './editor/drafts.js';
 
 // A retry asks for the modules under another URL (see editor/modules.js).
 const loadDockModule = lazy('the analysis dock', (a) => import(a ? `./editor/dock.js?retry=${a}` : './editor/dock.js'));
@@ -35,7 +36,7 @@ const loadViewModules = lazy('the analysis views', (a) =>
   import(a ? `./views/index.js?retry=${a}` : './views/index.js').then((m) => m.loadViews(a)),
 );
 
-const PARTS = [notices, session, files, input, pose, presets, responsive, labels, viewpoint, theme, media];
+const PARTS = [notices, drafts, session, files, input, pose, presets, responsive, labels, viewpoint, theme, media];
 
 /** Strobe count when a preset loads: fewer copies where the object is bulky (readable, as in the paper). */
 const PRESET_STROBE = {
@@ -316,6 +317,7 @@ export class App {
     this.parts.viewpoint.bind();
     this.parts.theme.bind();
     this.parts.media.bind();
+    this.parts.drafts.bind();
     window.addEventListener('beforeunload', () => this.autosave());
     this.ready = true;
   }
@@ -512,8 +514,8 @@ export class App {
 
   // ---------------------------------------------------------------- notices (editor/notices.js)
 
-  showError(message, level) {
-    this.parts.notices.show(message, level);
+  showError(message, level, key) {
+    this.parts.notices.show(message, level, key);
   }
 
   /**

@@ -1,12 +1,11 @@
 // The session: everything the page restores — the motion document and options, the display
 // settings, the selection, the playback and the camera. Undo/redo keeps snapshots of it, the
-// autosave writes it to localStorage, share links carry it in the URL hash.
+// autosave keeps it as this tab's draft (editor/drafts.js), share links carry it in the URL hash.
 //
 // The pure helpers (History, hash coding, storage) come first; the part (default export, see
 // app.js for the part contract) applies sessions to the app and records its edits.
 import { SLOT } from '../view/slots.js';
 
-export const STORAGE_KEY = 'screwbender.playground.v1';
 /** Session format version written in saves and share links. */
 export const SESSION_VERSION = 1;
 /** Undo steps kept. */
@@ -103,25 +102,6 @@ export function decodeHash(text) {
     throw new Error(`the link's session has version ${JSON.stringify(obj.version)}; this page reads version ${SESSION_VERSION}`);
   }
   return obj;
-}
-
-export function loadSaved() {
-  try {
-    const text = localStorage.getItem(STORAGE_KEY);
-    return text ? JSON.parse(text) : null;
-  } catch {
-    return null;
-  }
-}
-
-/** Saves; returns an error message when storage is full or unavailable. */
-export function save(session) {
-  try {
-    localStorage.setItem(STORAGE_KEY, JSON.stringify(session));
-    return null;
-  } catch (e) {
-    return `autosave failed: ${e.message}`;
-  }
 }
 
 /** The largest strobe count (instances of the object along the motion) a session may ask for. */
@@ -221,9 +201,7 @@ export default {
     }
 
     function autosave() {
-      if (!app.motion) return;
-      const err = save(session());
-      if (err) app.showError(err, 'warn');
+      if (app.motion) app.parts.drafts.save(session());
     }
 
     return {
@@ -233,7 +211,7 @@ export default {
       autosave,
 
       /**
-       * Share link > autosave: applies the first that works and returns true; false when
+       * Share link > autosave (this tab's draft, else the latest of any tab): applies the first that works and returns true; false when
        * neither is there (or both failed, with a message each), so the caller loads a preset.
        */
       restoreInitial() {
@@ -248,7 +226,7 @@ export default {
             app.showError(`The shared link could not be opened: ${e.message}`);
           }
         }
-        const saved = loadSaved();
+        const saved = app.parts.drafts.latest();
         if (saved) {
           try {
             applySession(saved);

@@ -73,11 +73,17 @@ export function startLessons(app) {
     openMenu: menu.open,
   };
 
+  /**
+   * Shows a lesson's error in the banner (above the Lessons menu); the next lesson or step that
+   * opens without one takes it away.
+   */
+  const lessonError = (message) => app.showError(message, 'error', 'lesson');
+
   /** Opens lesson `name`: an id of lessons/index.json or a file (see lessonUrl); false (and a banner) if it cannot. */
   async function open(name, { resume = true } = {}) {
     const url = lessonUrl(await resolveLessonName(name));
     if (!url) {
-      app.showError(`Lesson "${name}": only files under lessons/ on this site can be opened by name. Nothing was changed.`);
+      lessonError(`Lesson "${name}": only files under lessons/ on this site can be opened by name. Nothing was changed.`);
       return false;
     }
     let text;
@@ -86,7 +92,7 @@ export function startLessons(app) {
       if (!r.ok) throw new Error(`HTTP ${r.status}`);
       text = await r.text();
     } catch (e) {
-      app.showError(`Lesson ${url.pathname.split('/').pop()}: could not load it (${e.message}). Nothing was changed.`);
+      lessonError(`Lesson ${url.pathname.split('/').pop()}: could not load it (${e.message}). Nothing was changed.`);
       return false;
     }
     if (!openText(text, url.pathname.split('/').pop(), { resume })) return false;
@@ -106,9 +112,10 @@ export function startLessons(app) {
     try {
       parsed = parseLesson(text, ctx);
     } catch (e) {
-      app.showError(`Lesson ${source}: ${e.message}. Nothing was changed.`);
+      lessonError(`Lesson ${source}: ${e.message}. Nothing was changed.`);
       return false;
     }
+    app.parts.notices.clear('lesson');
     menu.hide();
     st.lesson = parsed;
     st.progress = readProgress(st.lesson.id);
@@ -164,8 +171,9 @@ export function startLessons(app) {
     const s = st.lesson.steps[i];
     try {
       applyStep(app, s, highlight.set);
+      app.parts.notices.clear('lesson');
     } catch (e) {
-      app.showError(`Lesson step ${i + 1}: ${e.message}`);
+      lessonError(`Lesson step ${i + 1}: ${e.message}`);
     }
     card.render(st, exercise.render);
     card.card.dataset.step = String(i);
