@@ -29,6 +29,8 @@ import viewpoint from './editor/viewpoint.js';
 import theme, { THEMES } from './editor/theme.js';
 import media from './editor/media.js';
 import drafts from './editor/drafts.js';
+import undoMenu from './editor/undo-menu.js';
+import { runCommand, COMMANDS } from './editor/commands.js';
 
 // A retry asks for the modules under another URL (see editor/modules.js).
 const loadDockModule = lazy('the analysis dock', (a) => import(a ? `./editor/dock.js?retry=${a}` : './editor/dock.js'));
@@ -36,16 +38,8 @@ const loadViewModules = lazy('the analysis views', (a) =>
   import(a ? `./views/index.js?retry=${a}` : './views/index.js').then((m) => m.loadViews(a)),
 );
 
-const PARTS = [notices, drafts, session, files, input, pose, presets, responsive, labels, viewpoint, theme, media];
+const PARTS = [notices, drafts, session, files, input, pose, presets, responsive, labels, viewpoint, theme, media, undoMenu];
 
-/** Strobe count when a preset loads: fewer copies where the object is bulky (readable, as in the paper). */
-const PRESET_STROBE = {
-  spinning_block: 14, pendulum: 18, cylinder5: 36, pip_morph5: 36, circle4: 40,
-  triangle7: 40, rb_sphere7: 20, rb_ibeam7: 30, rb_molecule4: 24,
-};
-const DEFAULT_STROBE = 64;
-/** Pose selected when a preset loads (scenes.md A3: "drag or rotate the top-left pose"). */
-const PRESELECT = { l_cycle_edit: 4 };
 /** Default preset on a first visit. */
 const DEFAULT_SCENE = 'l_cycle_rotated';
 
@@ -318,6 +312,7 @@ export class App {
     this.parts.theme.bind();
     this.parts.media.bind();
     this.parts.drafts.bind();
+    this.parts.undoMenu.bind();
     window.addEventListener('beforeunload', () => this.autosave());
     this.ready = true;
   }
@@ -470,8 +465,13 @@ export class App {
     this.parts.session.beginEdit();
   }
 
-  edit(f, coalesce) {
-    return this.parts.session.edit(f, coalesce);
+  edit(f, coalesce, label) {
+    return this.parts.session.edit(f, coalesce, label);
+  }
+
+  /** Runs command `name` of editor/commands.js as one labelled undo step. */
+  run(name, ...args) {
+    return runCommand(this, name, ...args);
   }
 
   undo() {
@@ -623,22 +623,15 @@ export class App {
     return inst;
   }
 
+  /** Loads preset `id` (an undoable command; the first scene of a visit is no edit). */
   loadPreset(id, undoable = true) {
-    const info = this.scenes.find((s) => s.id === id);
-    if (!info) return this.showError(`unknown preset ${id}`);
-    const apply = () => {
-      // The editing scene (A3) starts with its top-left pose selected, ready to drag.
-      this.setMotion(this.wasm.Motion.fromPreset(id), PRESELECT[id] ?? -1);
-      this.updateView({ scene: id, object: 'scene', strobe: PRESET_STROBE[id] ?? DEFAULT_STROBE });
-      this.setPlayback({ u: 0, t: undefined });
-      this.meshesChanged();
-      this.frameAll();
-    };
-    if (undoable) this.edit(apply);
-    else {
-      apply();
-      this.changed();
+    if (undoable) return this.run('loadPreset', id);
+    try {
+      COMMANDS.loadPreset.run(this, id);
+    } catch (e) {
+      return this.showError(e.message);
     }
+    this.changed();
   }
 
   /**
@@ -679,23 +672,23 @@ export class App {
    * and the event's time stamp) folds a run of edits into one undo step (session.record).
    */
   setTimes(times, merge = null) {
-    return this.retimeEdit(() => this.motion.setTimes(times), merge);
+    return this.retimeEdit(() => this.motion.setTimes(times), merge, times ? 'Retime the keys' : 'Uniform timing');
   }
 
   /** Sets the key velocities (null: all free) as one undoable edit; see setTimes. */
   setVelocities(velocities) {
-    return this.retimeEdit(() => this.motion.setVelocities(velocities));
+    return this.retimeEdit(() => this.motion.setVelocities(velocities), null, velocities ? 'Set the key velocities' : 'Free the key velocities');
   }
 
-  /** Runs a Motion timing change as one undoable edit: null when done, else the error's message. */
-  retimeEdit(f, merge = null) {
+  /** Runs a Motion timing change as one undoable edit `label`: null when done, else the error's message. */
+  retimeEdit(f, merge = null, label = undefined) {
     const before = this.snapshot();
     try {
       f();
     } catch (e) {
       return e.message;
     }
-    this.parts.session.record(before, merge?.key ?? null, merge?.at);
+    this.parts.session.record(before, merge?.key ?? null, merge?.at, label);
     this.changed();
     return null;
   }
@@ -719,49 +712,33 @@ export class App {
     this.ui?.refresh();
   }
 
+  /** Inserts a pose after the selected one (after the last where none is). */
   insertAfterSelected() {
-    const i = this.selected >= 0 ? this.selected : this.motion.poseCount - 1;
-    this.edit(() => {
-      const closed = this.motion.closed;
-      if (!closed && i === this.motion.poseCount - 1) {
-        // Open motion: extrapolate one span past the end.
-        const [, b] = this.motion.domain();
-        const p = this.motion.poseAt(b + 0.5);
-        this.select(this.motion.insertPose(i, p), false);
-      } else this.select(this.motion.insertPose(i), false);
-    });
+    this.run('insertPose');
   }
 
+  /** Deletes the selected pose. */
   deleteSelected() {
-    if (this.selected < 0) return;
-    this.edit(() => {
-      if (this.motion.poseCount <= 2) throw new Error('a motion keeps at least 2 poses');
-      this.motion.removePose(this.selected);
-      this.select(Math.min(this.selected, this.motion.poseCount - 1), false);
-    });
+    if (this.selected >= 0) this.run('deletePose');
   }
 
   setOption(key, value) {
-    this.edit(() => this.motion.setOptions({ [key]: value }), `option:${key}`);
+    this.run('setOption', key, value);
   }
 
   setScheme(name) {
-    this.edit(() => this.motion.setOptions({ scheme: name }));
+    this.run('setScheme', name);
   }
 
   setS(s) {
-    const named = { 1: 'bspline', 0: 'fourpoint', 0.5: 'jarek' }[s];
-    this.edit(() => this.motion.setOptions(named ? { scheme: named } : { scheme: 'j', s }), 'option:s');
+    this.run('setS', s);
   }
 
   setClosed(closed) {
-    this.edit(() => this.motion.setClosed(closed));
+    this.run('setClosed', closed);
   }
 
   setView(key, value) {
-    this.edit(() => {
-      this.updateView({ [key]: value });
-      if (key === 'object') this.meshesChanged();
-    }, `view:${key}`);
+    this.run('setView', key, value);
   }
 }

@@ -182,7 +182,7 @@ export default {
         what.textContent = describe(d);
         const open = button('Open', () => {
           // One undoable edit: what the page showed stays in Undo.
-          app.edit(() => app.applySession({ ...d.session, camera: undefined }));
+          app.run('openSession', d.session, `the work of another tab (${describe(d)})`);
           store.removeItem(d.key);
           app.autosave();
           li.remove();
