@@ -1,6 +1,7 @@
 // The playground editor. The App is the one owner of the editing state (a wasm Motion, the
 // display settings, playback, the selection, the imported mesh): the rest of the page reads it
-// and changes it only through the App's commands (undoable edits through `edit`) and setters,
+// and changes it only through the App's commands (editor/commands.js, each one labelled undo
+// step: `app.run(name, …)`) and setters,
 // and follows it through `app.on(topic, fn)`. It runs the 3-D view (view/viewer.js) with that
 // state as the view's model, and puts the editor around it: panel, toolbar and timeline
 // (editor/ui.js), the analysis dock (editor/dock.js) and the parts below.
@@ -12,11 +13,10 @@
 // the viewer are the API that ui.js, the analysis views, main.js and the tests use.
 //
 // The first frame needs only the renderer's wasm module (editor/modules.js): the dock, its views
-// and the analysis module are fetched when a view is first opened, with "loading…" in the dock
-// meanwhile; a failed fetch is a message, and the editor goes on without the dock.
+// and the analysis module are fetched when a view is first opened (editor/dock-host.js).
 import { Viewer } from './view/viewer.js';
 import { buildUi } from './editor/ui.js';
-import { renderModule, glModule, analysisModule, lazy } from './editor/modules.js';
+import { renderModule, glModule, analysisModule } from './editor/modules.js';
 import notices from './editor/notices.js';
 import session, { History } from './editor/session.js';
 import files from './editor/files.js';
@@ -30,15 +30,10 @@ import theme, { THEMES } from './editor/theme.js';
 import media from './editor/media.js';
 import drafts from './editor/drafts.js';
 import undoMenu from './editor/undo-menu.js';
+import dockHost from './editor/dock-host.js';
 import { runCommand, COMMANDS } from './editor/commands.js';
 
-// A retry asks for the modules under another URL (see editor/modules.js).
-const loadDockModule = lazy('the analysis dock', (a) => import(a ? `./editor/dock.js?retry=${a}` : './editor/dock.js'));
-const loadViewModules = lazy('the analysis views', (a) =>
-  import(a ? `./views/index.js?retry=${a}` : './views/index.js').then((m) => m.loadViews(a)),
-);
-
-const PARTS = [notices, drafts, session, files, input, pose, presets, responsive, labels, viewpoint, theme, media, undoMenu];
+const PARTS = [notices, drafts, session, files, input, pose, presets, responsive, labels, viewpoint, theme, media, undoMenu, dockHost];
 
 /** Default preset on a first visit. */
 const DEFAULT_SCENE = 'l_cycle_rotated';
@@ -155,6 +150,8 @@ export class App {
     // Unknown until the pointer first moves (that first move then sets the cursor).
     this.hoverPose = undefined;
     this.drag = null;
+    /** @type {import('./editor/dock.js').Dock | null} the analysis dock once fetched (editor/dock-host.js) */
+    this.dock = null;
     /** @type {string | undefined} the analysis view last open (the toolbar's dock button reopens it) */
     this.lastView = undefined;
     this.parts = {};
@@ -547,80 +544,16 @@ export class App {
   }
 
   /**
-   * Up to 1700 px wide, the settings panel would cover the right part of the 3-D view that the
-   * open dock leaves: fold it while the dock is open, and unfold it again when it closes (if it
-   * was open).
-   */
-  foldPanelForDock(open) {
-    const gui = this.ui?.gui;
-    if (!gui || window.innerWidth >= 1700) return;
-    if (open) {
-      this.panelWasOpen = !gui._closed;
-      gui.close();
-    } else if (this.panelWasOpen) gui.open();
-  }
-
-  /**
    * Opens analysis view `id` in the dock ('' or null closes it); resolves to its instance. The
-   * first view opened fetches the dock (with the analysis module): "loading…" in the dock until
-   * then, and where the fetch fails a message, the dock closed and the editor as it was.
+   * first view opened fetches the dock (editor/dock-host.js).
    */
-  async openView(id) {
-    if (!this.dock) {
-      this.wantView = id || '';
-      if (!id) return null;
-      this.loadingDock ??= this.loadDock();
-      await this.loadingDock;
-      // Meanwhile another view may have been asked for, or the dock closed.
-      if (!this.dock || this.wantView !== id) return this.dock?.current ?? null;
-    }
-    return this.openViewNow(id);
+  openView(id) {
+    return this.parts.dockHost.open(id);
   }
 
-  /** Fetches the dock, its views and the analysis module, showing "loading…" in the dock. */
-  async loadDock() {
-    const root = document.getElementById('dock');
-    const body = root.querySelector('.body');
-    const note = document.createElement('p');
-    note.className = 'note loading';
-    note.setAttribute('role', 'status');
-    note.textContent = 'Loading the analysis views…';
-    body.append(note);
-    root.classList.add('open');
-    try {
-      const [{ Dock }, views, analysis] = await Promise.all([loadDockModule(), loadViewModules(), this.analysis()]);
-      this.dock = new Dock(this, views, analysis);
-    } catch (e) {
-      this.showError(`${e.message}. The editor works on without the analysis views.`);
-      this.updateView({ dock: '' });
-      this.wantView = '';
-      this.ui?.refresh();
-    } finally {
-      note.remove();
-      if (!this.dock) root.classList.remove('open');
-      this.loadingDock = null;
-    }
-  }
-
-  openViewNow(id) {
-    let inst = null;
-    const wasOpen = !!this.dock.active;
-    try {
-      inst = this.dock.open(id || null);
-      // The 3-D view changes size when the dock opens or closes (wide screens): re-frame.
-      if (wasOpen !== !!this.dock.active) {
-        this.foldPanelForDock(!!this.dock.active);
-        this.viewer.invalidateSize();
-        this.frameAll();
-      }
-      this.updateView({ dock: id || '' });
-    } catch (e) {
-      this.updateView({ dock: '' });
-      this.showError(e.message);
-    }
-    this.autosave();
-    this.ui?.refresh();
-    return inst;
+  /** Whether the dock and its modules are being fetched (a promise until they are there). */
+  get loadingDock() {
+    return this.parts.dockHost.loading;
   }
 
   /** Loads preset `id` (an undoable command; the first scene of a visit is no edit). */
