@@ -87,7 +87,7 @@ export default {
       try {
         sessionStorage.setItem(TAB_KEY, tab);
       } catch {
-        // No session storage: a reload starts from the latest session instead.
+        // No sessionStorage: a reload starts from the newest draft instead.
       }
       return tab;
     }
