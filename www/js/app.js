@@ -75,8 +75,10 @@ const DEFAULT_SCENE = 'l_cycle_rotated';
 /**
  * What the App announces to `app.on(topic, fn)`: 'motion' (the Motion, its options or the
  * display changed and the view has been rebuilt: `changed`),
- * 'view' (display settings: fn gets the names changed), 'playback' (playhead, speed, loop),
- * 'selection' (the selected pose or the gizmo mode), 'layout' (the part of the window the 3-D
+ * 'view' (display settings: fn gets the names changed), 'playback' (playhead, speed, loop; from
+ * the view's frame loop with {u, a, b, playhead} as the playhead moves, {play: true} as playback
+ * starts or stops), 'selection' (the selected pose or the gizmo mode: {what: 'pose' | 'mode',
+ * redraw}, redraw false while a session is applied, which redraws everything), 'layout' (the part of the window the 3-D
  * view and the dock share: a lesson opened or closed).
  * @typedef {'motion' | 'view' | 'playback' | 'selection' | 'layout'} Topic
  */
@@ -240,7 +242,7 @@ export class App {
     this.#motion?.free();
     this.#motion = motion;
     this.#selected = selected;
-    this.emit('selection');
+    this.emit('selection', { what: 'pose', redraw: false });
   }
 
   /** Sets the imported mesh ({kind, data}, or null). */
@@ -291,6 +293,14 @@ export class App {
   async start() {
     const params = new URLSearchParams(location.search);
     await this.startViewer(params.get('backend') === 'webgl2');
+    // The view follows the selection (the chrome subscribes in editor/ui.js).
+    this.on('selection', (d) => {
+      if (!d?.redraw) return;
+      if (d.what === 'mode') {
+        this.viewer.rebuildGizmo();
+        this.requestDraw();
+      } else this.viewer.rebuildControls();
+    });
     this.limits = this.wasm.limits();
     this.scenes = this.viewer.scenes;
     const { backend, renderer } = this.viewer;
@@ -327,14 +337,8 @@ export class App {
         webgl2,
         // WebGPU without an adapter is no fault of the page or the browser: neutral information.
         warn: (message) => this.showError(message, /no usable adapter/.test(message) ? 'info' : 'warn'),
-        onTime: (u, a, b, playhead) => {
-          this.ui?.setTime(u, a, b, playhead);
-          this.emit('playback');
-        },
-        onPlay: () => {
-          this.ui?.refresh();
-          this.emit('playback');
-        },
+        onTime: (u, a, b, playhead) => this.emit('playback', { u, a, b, playhead }),
+        onPlay: () => this.emit('playback', { play: true }),
       });
     this.wasm = wasm;
     this.viewer = viewer(wasm);
@@ -629,20 +633,13 @@ export class App {
   /** Selects pose k (-1: none); `redraw` false only records it (a session being applied redraws all). */
   select(k, redraw = true) {
     this.#selected = k;
-    this.emit('selection');
-    if (!redraw) return;
-    this.viewer.rebuildControls();
-    this.ui?.refresh();
+    this.emit('selection', { what: 'pose', redraw });
   }
 
   /** Sets the gizmo's mode ('translate' or 'rotate'); `redraw` as for `select`. */
   setMode(mode, redraw = true) {
     this.#mode = mode === 'rotate' ? 'rotate' : 'translate';
-    this.emit('selection');
-    if (!redraw) return;
-    this.viewer.rebuildGizmo();
-    this.requestDraw();
-    this.ui?.refresh();
+    this.emit('selection', { what: 'mode', redraw });
   }
 
   /** Inserts a pose after the selected one (after the last where none is). */
