@@ -2,11 +2,13 @@
 // End-to-end: a first visit. A short hint says how to start and stays dismissed; the preset
 // chooser lists every preset by a human name with the paper's figure as a subtitle and its
 // one-line description, none cut off; WebGPU without an adapter is told as neutral information.
+// Nothing written is lost: two tabs each keep their work, offered again after both closed; in a
+// sandboxed frame without storage the page says once, in words, that work is not kept.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { startPlayground, openPage, waitFrames, ROOT, BACKEND } from './lib.mjs';
+import { startPlayground, openPage, waitFrames, shotPath, ROOT, BACKEND } from './lib.mjs';
 
 const ARTIFACTS = path.join(ROOT, 'artifacts', `e2e-${BACKEND}`);
 let play;
@@ -118,4 +120,72 @@ test(`${BACKEND}: the strobe slider is logarithmic; the count field takes exact 
   assert.equal(await page.evaluate(() => window.screwbender.app.view.strobe), 37);
   assert.deepEqual(problems, []);
   await page.close();
+});
+
+/** The control poses of `page`, rounded (as JSON, to compare). */
+const posesOf = (page) => page.evaluate(() => JSON.stringify(Array.from(window.screwbender.poses(), (v) => Math.round(v * 1e6) / 1e6)));
+
+test(`${BACKEND}: two tabs: the work of each is kept, and offered again after both are closed`, async () => {
+  const context = await play.browser.newContext({ viewport: { width: 1280, height: 800 } });
+  try {
+    const a = await openPage(context, play.url, BACKEND);
+    await a.page.evaluate(() => window.screwbender.app.loadPreset('pendulum'));
+    const b = await openPage(context, play.url, BACKEND);
+    await b.page.evaluate(() => window.screwbender.app.loadPreset('circle4'));
+    const [workA, workB] = [await posesOf(a.page), await posesOf(b.page)];
+    assert.notEqual(workA, workB);
+    // Tab A closes first, tab B last: B's work is the latest, A's must not be lost.
+    // As a browser closes a tab: its unload handlers run (page.close does not wait for them).
+    const close = (p) => Promise.all([p.waitForEvent('close'), p.close({ runBeforeUnload: true })]);
+    await close(a.page);
+    await close(b.page);
+    const c = await openPage(context, play.url, BACKEND);
+    assert.equal(await posesOf(c.page), workB, 'a new tab starts from the latest work');
+    const offer = c.page.locator('#drafts li');
+    assert.equal(await offer.count(), 1, 'the other tab\'s work is offered');
+    assert.match(await offer.textContent(), /pendulum|poses/i);
+    await c.page.screenshot({ path: shotPath('kept-work-offer.png') });
+    await offer.locator('button', { hasText: 'Open' }).click();
+    assert.equal(await posesOf(c.page), workA, 'the offered draft holds tab A\'s work');
+    // Opening it is an edit: the work shown before is one Undo away.
+    await c.page.evaluate(() => window.screwbender.app.undo());
+    assert.equal(await posesOf(c.page), workB);
+    assert.ok(!(await c.page.locator('#drafts').isVisible()), 'the list closes once its drafts are taken');
+    assert.deepEqual([...a.problems, ...b.problems, ...c.problems], []);
+  } finally {
+    await context.close();
+  }
+});
+
+test(`${BACKEND}: a sandboxed frame without storage says once, in words, that work is not kept`, async () => {
+  const context = await play.browser.newContext({ viewport: { width: 1280, height: 800 } });
+  try {
+    const page = await context.newPage();
+    await page.setContent(`<iframe sandbox="allow-scripts" src="${play.url}" style="width:1000px;height:700px;border:0"></iframe>`);
+    const frame = await (await page.waitForSelector('iframe')).contentFrame();
+    await frame.waitForFunction(() => window.screwbender?.ready);
+    await frame.evaluate(() => window.screwbender.ready);
+    // Edits autosave: each would have failed before.
+    await frame.evaluate(() => {
+      const { app } = window.screwbender;
+      app.loadPreset('pendulum');
+      app.setOption('levels', 3);
+      app.setOption('levels', 4);
+    });
+    const seen = await frame.evaluate(() => ({
+      text: document.body.innerText,
+      notices: [...document.querySelectorAll('#drafts:not([hidden])')].map((e) => e.textContent),
+      errors: window.screwbender.errors(),
+    }));
+    await page.screenshot({ path: shotPath('kept-work-no-storage.png') });
+    assert.equal(seen.notices.length, 1, 'one notice');
+    assert.match(seen.notices[0], /cannot keep your work/);
+    assert.match(seen.notices[0], /Share link/);
+    assert.match(seen.notices[0], /Export/);
+    assert.doesNotMatch(seen.text, /Failed to read|localStorage|SecurityError/);
+    assert.deepEqual(seen.errors.filter((e) => /Failed to read|localStorage|autosave/i.test(e)), []);
+    assert.equal(seen.errors.filter((e) => /cannot keep your work/.test(e)).length, 1, 'said once');
+  } finally {
+    await context.close();
+  }
 });

@@ -2,7 +2,8 @@
 // End-to-end: the playground with the keyboard alone. Tab reaches every control (toolbar, panel,
 // dock, timeline) and the 3-D view; the page's shortcuts act only while the view (or the page
 // itself) has the focus; with the view focused a pose is selected, moved and rotated in steps,
-// and undo takes the key edits back.
+// and undo takes the key edits back. Every named command (www/js/editor/commands.js) is done,
+// undone and redone through the Undo menu, which names it.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { playgroundPage, waitFrames, BACKEND } from './lib.mjs';
@@ -175,5 +176,70 @@ test(`${BACKEND}: with the view focused, keys select, move and rotate a pose; un
   assert.equal(await sb(() => window.screwbender.app.anim.playing), true);
   await page.keyboard.press(' ');
   assert.equal(await sb(() => window.screwbender.app.anim.playing), false);
+  assert.deepEqual(problems, []);
+});
+
+// Every command of editor/commands.js, as a page would run it: [name, args, the Undo menu's label].
+// `prepare` runs first (no command of its own: a selection).
+const COMMAND_CASES = [
+  ['loadPreset', ['pendulum'], 'Load the preset Pendulum'],
+  ['setOption', ['levels', 3], 'Set levels to 3'],
+  ['setScheme', ['bspline'], 'Scheme: cubic B-spline'],
+  ['setS', [0.3], 'Set s to 0.3'],
+  ['setClosed', [false], 'Open the cycle'],
+  ['setView', ['showGrid', false], 'Hide grid'],
+  ['insertPose', [], 'Insert a pose after pose 0', 0],
+  ['deletePose', [], 'Delete pose 1', 1],
+  ['setPose', [0, { origin: [0.5, 0.25, 0], rotation: [1, 0, 0, 0] }], 'Move pose 0'],
+  ['lessonStep', [{ title: 'Fewer copies', display: { strobe: 7 } }], 'Lesson: Fewer copies'],
+  ['openSession', ['circle4'], 'Open kept work'],
+];
+
+test(`${BACKEND}: every command is done, undone and redone through the Undo menu, which names it`, async () => {
+  const names = await sb(async () => Object.keys((await import('./js/editor/commands.js')).COMMANDS));
+  assert.deepEqual(COMMAND_CASES.map((c) => c[0]).sort(), [...names].sort(), 'a case for every command');
+  await sb(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  /** The edited state: motion, options and display (undo keeps the camera and the playhead). */
+  const state = () => sb(() => {
+    const s = JSON.parse(window.screwbender.app.snapshot());
+    return JSON.stringify([s.document, s.options, s.view]);
+  });
+  /** Opens the Undo menu with a right click on `button`; returns the labels listed under `side`. */
+  const menu = async (button, side) => {
+    await page.click(button, { button: 'right' });
+    await page.locator('#undo-menu').waitFor({ state: 'visible' });
+    return sb((which) => {
+      const items = [...document.querySelectorAll('#undo-menu > *')];
+      const at = items.findIndex((e) => e.textContent === which);
+      const out = [];
+      for (let k = at + 1; k < items.length && items[k].tagName === 'BUTTON'; k++) out.push(items[k].textContent);
+      return out;
+    }, side);
+  };
+  for (const [name, args, label, select] of COMMAND_CASES) {
+    if (select !== undefined) await sb((k) => window.screwbender.app.select(k), select);
+    const before = await state();
+    await sb(async ([n, a]) => {
+      const { app } = window.screwbender;
+      // openSession takes a whole session: another preset's, as a draft of another tab holds.
+      if (n === 'openSession') {
+        const keep = app.snapshot();
+        app.loadPreset(a[0], false);
+        const other = app.session(false);
+        app.applySession(JSON.parse(keep));
+        a = [other];
+      }
+      app.run(n, ...a);
+    }, [name, args]);
+    const after = await state();
+    assert.notEqual(after, before, `${name} changed nothing`);
+    assert.deepEqual((await menu('#t-undo', 'Undo')).slice(0, 1), [label], `${name}: the Undo menu's first entry`);
+    await page.click('#undo-menu button[data-side=undo][data-steps="1"]');
+    assert.equal(await state(), before, `${name}: undone through the menu`);
+    assert.deepEqual((await menu('#t-redo', 'Redo')).slice(0, 1), [label], `${name}: the Redo entry`);
+    await page.click('#undo-menu button[data-side=redo][data-steps="1"]');
+    assert.equal(await state(), after, `${name}: redone through the menu`);
+  }
+  assert.match(await page.locator('#t-undo').getAttribute('title'), /^Undo: Open kept work/);
   assert.deepEqual(problems, []);
 });

@@ -272,9 +272,24 @@ test('a pasted lesson opens; URLs outside lessons/ are refused; L and Esc open a
   await page.locator('#lessons-menu').waitFor({ state: 'visible' });
   assert.equal(await page.locator('#lessons-menu .lesson-item').count(), LESSONS.length + 1);
   const mine = { id: 'teacher-1', title: 'My lesson', steps: [{ title: 'Hello', text: 'A screw turns by $\\theta$.', scene: 'pendulum', dock: '' }] };
+  // A broken lesson first: its error shows above the menu (a real hit test reaches it) ...
+  await page.locator('#lessons-menu textarea').fill(JSON.stringify({ ...mine, steps: [{ ...mine.steps[0], scene: 'nowhere' }] }));
+  await page.locator('#lessons-menu button.primary').click();
+  const above = await page.evaluate(() => {
+    const b = document.getElementById('banner');
+    const r = b.getBoundingClientRect();
+    const hit = document.elementFromPoint(r.left + r.width / 2, r.top + r.height / 2);
+    return { shown: !b.hidden, text: b.textContent, onTop: !!hit && b.contains(hit), menu: !document.getElementById('lessons-menu').hidden };
+  });
+  assert.ok(above.shown && above.menu, JSON.stringify(above));
+  assert.match(above.text, /nowhere/);
+  assert.ok(above.onTop, 'the lesson error lies under the Lessons menu');
+  // ... and goes once the lesson is fixed.
   await page.locator('#lessons-menu textarea').fill(JSON.stringify(mine));
   await page.locator('#lessons-menu button.primary').click();
   await page.locator('#lesson').waitFor({ state: 'visible' });
+  const after = await page.evaluate(() => ({ hidden: document.getElementById('banner').hidden, text: document.getElementById('banner').textContent }));
+  assert.ok(after.hidden || !/nowhere/.test(after.text), `the fixed lesson's error still shows: ${after.text}`);
   assert.equal(await inPage((L) => L.lesson.id), 'teacher-1');
   assert.equal(await page.evaluate(() => window.screwbender.app.view.scene), 'pendulum');
   assert.equal(await page.locator('#lesson .text math').count(), 1);

@@ -1,6 +1,7 @@
 // The playground editor. The App is the one owner of the editing state (a wasm Motion, the
 // display settings, playback, the selection, the imported mesh): the rest of the page reads it
-// and changes it only through the App's commands (undoable edits through `edit`) and setters,
+// and changes it only through the App's commands (editor/commands.js, each one labelled undo
+// step: `app.run(name, …)`) and setters,
 // and follows it through `app.on(topic, fn)`. It runs the 3-D view (view/viewer.js) with that
 // state as the view's model, and puts the editor around it: panel, toolbar and timeline
 // (editor/ui.js), the analysis dock (editor/dock.js) and the parts below.
@@ -12,11 +13,10 @@
 // the viewer are the API that ui.js, the analysis views, main.js and the tests use.
 //
 // The first frame needs only the renderer's wasm module (editor/modules.js): the dock, its views
-// and the analysis module are fetched when a view is first opened, with "loading…" in the dock
-// meanwhile; a failed fetch is a message, and the editor goes on without the dock.
+// and the analysis module are fetched when a view is first opened (editor/dock-host.js).
 import { Viewer } from './view/viewer.js';
 import { buildUi } from './editor/ui.js';
-import { renderModule, glModule, analysisModule, lazy } from './editor/modules.js';
+import { renderModule, glModule, analysisModule } from './editor/modules.js';
 import notices from './editor/notices.js';
 import session, { History } from './editor/session.js';
 import files from './editor/files.js';
@@ -28,14 +28,12 @@ import labels from './editor/labels.js';
 import viewpoint from './editor/viewpoint.js';
 import theme, { THEMES } from './editor/theme.js';
 import media from './editor/media.js';
+import drafts from './editor/drafts.js';
+import undoMenu from './editor/undo-menu.js';
+import dockHost from './editor/dock-host.js';
+import { runCommand, COMMANDS } from './editor/commands.js';
 
-// A retry asks for the modules under another URL (see editor/modules.js).
-const loadDockModule = lazy('the analysis dock', (a) => import(a ? `./editor/dock.js?retry=${a}` : './editor/dock.js'));
-const loadViewModules = lazy('the analysis views', (a) =>
-  import(a ? `./views/index.js?retry=${a}` : './views/index.js').then((m) => m.loadViews(a)),
-);
-
-const PARTS = [notices, session, files, input, pose, presets, responsive, labels, viewpoint, theme, media];
+const PARTS = [notices, drafts, session, files, input, pose, presets, responsive, labels, viewpoint, theme, media, undoMenu, dockHost];
 
 /** Default preset on a first visit. */
 const DEFAULT_SCENE = 'l_cycle_rotated';
@@ -77,9 +75,12 @@ const DEFAULT_SCENE = 'l_cycle_rotated';
 /**
  * What the App announces to `app.on(topic, fn)`: 'motion' (the Motion, its options or the
  * display changed and the view has been rebuilt: `changed`),
- * 'view' (display settings: fn gets the names changed), 'playback' (playhead, speed, loop),
- * 'selection' (the selected pose or the gizmo mode).
- * @typedef {'motion' | 'view' | 'playback' | 'selection'} Topic
+ * 'view' (display settings: fn gets the names changed), 'playback' (playhead, speed, loop; from
+ * the view's frame loop with {u, a, b, playhead} as the playhead moves, {play: true} as playback
+ * starts or stops), 'selection' (the selected pose or the gizmo mode: {what: 'pose' | 'mode',
+ * redraw}, redraw false while a session is applied, which redraws everything), 'layout' (the part of the window the 3-D
+ * view and the dock share: a lesson opened or closed).
+ * @typedef {'motion' | 'view' | 'playback' | 'selection' | 'layout'} Topic
  */
 
 /**
@@ -151,6 +152,8 @@ export class App {
     // Unknown until the pointer first moves (that first move then sets the cursor).
     this.hoverPose = undefined;
     this.drag = null;
+    /** @type {import('./editor/dock.js').Dock | null} the analysis dock once fetched (editor/dock-host.js) */
+    this.dock = null;
     /** @type {string | undefined} the analysis view last open (the toolbar's dock button reopens it) */
     this.lastView = undefined;
     this.parts = {};
@@ -239,7 +242,7 @@ export class App {
     this.#motion?.free();
     this.#motion = motion;
     this.#selected = selected;
-    this.emit('selection');
+    this.emit('selection', { what: 'pose', redraw: false });
   }
 
   /** Sets the imported mesh ({kind, data}, or null). */
@@ -290,6 +293,14 @@ export class App {
   async start() {
     const params = new URLSearchParams(location.search);
     await this.startViewer(params.get('backend') === 'webgl2');
+    // The view follows the selection (the chrome subscribes in editor/ui.js).
+    this.on('selection', (d) => {
+      if (!d?.redraw) return;
+      if (d.what === 'mode') {
+        this.viewer.rebuildGizmo();
+        this.requestDraw();
+      } else this.viewer.rebuildControls();
+    });
     this.limits = this.wasm.limits();
     this.scenes = this.viewer.scenes;
     const { backend, renderer } = this.viewer;
@@ -306,6 +317,8 @@ export class App {
     this.parts.viewpoint.bind();
     this.parts.theme.bind();
     this.parts.media.bind();
+    this.parts.drafts.bind();
+    this.parts.undoMenu.bind();
     window.addEventListener('beforeunload', () => this.autosave());
     this.ready = true;
   }
@@ -348,14 +361,8 @@ export class App {
         webgl2,
         // WebGPU without an adapter is no fault of the page or the browser: neutral information.
         warn: (message) => this.showError(message, /no usable adapter/.test(message) ? 'info' : 'warn'),
-        onTime: (u, a, b, playhead) => {
-          this.ui?.setTime(u, a, b, playhead);
-          this.emit('playback');
-        },
-        onPlay: () => {
-          this.ui?.refresh();
-          this.emit('playback');
-        },
+        onTime: (u, a, b, playhead) => this.emit('playback', { u, a, b, playhead }),
+        onPlay: () => this.emit('playback', { play: true }),
       });
     this.wasm = wasm;
     this.viewer = viewer(wasm);
@@ -483,8 +490,13 @@ export class App {
     this.parts.session.beginEdit();
   }
 
-  edit(f, coalesce) {
-    return this.parts.session.edit(f, coalesce);
+  edit(f, coalesce, label) {
+    return this.parts.session.edit(f, coalesce, label);
+  }
+
+  /** Runs command `name` of editor/commands.js as one labelled undo step. */
+  run(name, ...args) {
+    return runCommand(this, name, ...args);
   }
 
   undo() {
@@ -527,8 +539,8 @@ export class App {
 
   // ---------------------------------------------------------------- notices (editor/notices.js)
 
-  showError(message, level) {
-    this.parts.notices.show(message, level);
+  showError(message, level, key) {
+    this.parts.notices.show(message, level, key);
   }
 
   /**
@@ -560,99 +572,27 @@ export class App {
   }
 
   /**
-   * Up to 1700 px wide, the settings panel would cover the right part of the 3-D view that the
-   * open dock leaves: fold it while the dock is open, and unfold it again when it closes (if it
-   * was open).
-   */
-  foldPanelForDock(open) {
-    const gui = this.ui?.gui;
-    if (!gui || window.innerWidth >= 1700) return;
-    if (open) {
-      this.panelWasOpen = !gui._closed;
-      gui.close();
-    } else if (this.panelWasOpen) gui.open();
-  }
-
-  /**
    * Opens analysis view `id` in the dock ('' or null closes it); resolves to its instance. The
-   * first view opened fetches the dock (with the analysis module): "loading…" in the dock until
-   * then, and where the fetch fails a message, the dock closed and the editor as it was.
+   * first view opened fetches the dock (editor/dock-host.js).
    */
-  async openView(id) {
-    if (!this.dock) {
-      this.wantView = id || '';
-      if (!id) return null;
-      this.loadingDock ??= this.loadDock();
-      await this.loadingDock;
-      // Meanwhile another view may have been asked for, or the dock closed.
-      if (!this.dock || this.wantView !== id) return this.dock?.current ?? null;
-    }
-    return this.openViewNow(id);
+  openView(id) {
+    return this.parts.dockHost.open(id);
   }
 
-  /** Fetches the dock, its views and the analysis module, showing "loading…" in the dock. */
-  async loadDock() {
-    const root = document.getElementById('dock');
-    const body = root.querySelector('.body');
-    const note = document.createElement('p');
-    note.className = 'note loading';
-    note.setAttribute('role', 'status');
-    note.textContent = 'Loading the analysis views…';
-    body.append(note);
-    root.classList.add('open');
-    try {
-      const [{ Dock }, views, analysis] = await Promise.all([loadDockModule(), loadViewModules(), this.analysis()]);
-      this.dock = new Dock(this, views, analysis);
-    } catch (e) {
-      this.showError(`${e.message}. The editor works on without the analysis views.`);
-      this.updateView({ dock: '' });
-      this.wantView = '';
-      this.ui?.refresh();
-    } finally {
-      note.remove();
-      if (!this.dock) root.classList.remove('open');
-      this.loadingDock = null;
-    }
+  /** Whether the dock and its modules are being fetched (a promise until they are there). */
+  get loadingDock() {
+    return this.parts.dockHost.loading;
   }
 
-  openViewNow(id) {
-    let inst = null;
-    const wasOpen = !!this.dock.active;
-    try {
-      inst = this.dock.open(id || null);
-      // The 3-D view changes size when the dock opens or closes (wide screens): re-frame.
-      if (wasOpen !== !!this.dock.active) {
-        this.foldPanelForDock(!!this.dock.active);
-        this.viewer.invalidateSize();
-        this.frameAll();
-      }
-      this.updateView({ dock: id || '' });
-    } catch (e) {
-      this.updateView({ dock: '' });
-      this.showError(e.message);
-    }
-    this.autosave();
-    this.ui?.refresh();
-    return inst;
-  }
-
+  /** Loads preset `id` (an undoable command; the first scene of a visit is no edit). */
   loadPreset(id, undoable = true) {
-    const info = this.scenes.find((s) => s.id === id);
-    if (!info) return this.showError(`unknown preset ${id}`);
-    const apply = () => {
-      // How the preset is shown (its strobe count, the pose selected on load: the editing
-      // scene's top-left pose, ready to drag) is the core's, as in every front end.
-      this.setMotion(this.wasm.Motion.fromPreset(id), info.selected ?? -1);
-      this.updateView({ scene: id, object: 'scene', strobe: info.strobe });
-      this.setPlayback({ u: 0, t: undefined });
-      this.meshesChanged();
-      this.frameAll();
-    };
-    if (undoable) this.edit(apply);
-    else {
-      apply();
-      this.changed();
+    if (undoable) return this.run('loadPreset', id);
+    try {
+      COMMANDS.loadPreset.run(this, id);
+    } catch (e) {
+      return this.showError(e.message);
     }
+    this.changed();
   }
 
   /**
@@ -693,23 +633,23 @@ export class App {
    * and the event's time stamp) folds a run of edits into one undo step (session.record).
    */
   setTimes(times, merge = null) {
-    return this.retimeEdit(() => this.motion.setTimes(times), merge);
+    return this.retimeEdit(() => this.motion.setTimes(times), merge, times ? 'Retime the keys' : 'Uniform timing');
   }
 
   /** Sets the key velocities (null: all free) as one undoable edit; see setTimes. */
   setVelocities(velocities) {
-    return this.retimeEdit(() => this.motion.setVelocities(velocities));
+    return this.retimeEdit(() => this.motion.setVelocities(velocities), null, velocities ? 'Set the key velocities' : 'Free the key velocities');
   }
 
-  /** Runs a Motion timing change as one undoable edit: null when done, else the error's message. */
-  retimeEdit(f, merge = null) {
+  /** Runs a Motion timing change as one undoable edit `label`: null when done, else the error's message. */
+  retimeEdit(f, merge = null, label = undefined) {
     const before = this.snapshot();
     try {
       f();
     } catch (e) {
       return e.message;
     }
-    this.parts.session.record(before, merge?.key ?? null, merge?.at);
+    this.parts.session.record(before, merge?.key ?? null, merge?.at, label);
     this.changed();
     return null;
   }
@@ -717,65 +657,42 @@ export class App {
   /** Selects pose k (-1: none); `redraw` false only records it (a session being applied redraws all). */
   select(k, redraw = true) {
     this.#selected = k;
-    this.emit('selection');
-    if (!redraw) return;
-    this.viewer.rebuildControls();
-    this.ui?.refresh();
+    this.emit('selection', { what: 'pose', redraw });
   }
 
   /** Sets the gizmo's mode ('translate' or 'rotate'); `redraw` as for `select`. */
   setMode(mode, redraw = true) {
     this.#mode = mode === 'rotate' ? 'rotate' : 'translate';
-    this.emit('selection');
-    if (!redraw) return;
-    this.viewer.rebuildGizmo();
-    this.requestDraw();
-    this.ui?.refresh();
+    this.emit('selection', { what: 'mode', redraw });
   }
 
+  /** Inserts a pose after the selected one (after the last where none is). */
   insertAfterSelected() {
-    const i = this.selected >= 0 ? this.selected : this.motion.poseCount - 1;
-    this.edit(() => {
-      const closed = this.motion.closed;
-      if (!closed && i === this.motion.poseCount - 1) {
-        // Open motion: extrapolate one span past the end.
-        const [, b] = this.motion.domain();
-        const p = this.motion.poseAt(b + 0.5);
-        this.select(this.motion.insertPose(i, p), false);
-      } else this.select(this.motion.insertPose(i), false);
-    });
+    this.run('insertPose');
   }
 
+  /** Deletes the selected pose. */
   deleteSelected() {
-    if (this.selected < 0) return;
-    this.edit(() => {
-      if (this.motion.poseCount <= 2) throw new Error('a motion keeps at least 2 poses');
-      this.motion.removePose(this.selected);
-      this.select(Math.min(this.selected, this.motion.poseCount - 1), false);
-    });
+    if (this.selected >= 0) this.run('deletePose');
   }
 
   setOption(key, value) {
-    this.edit(() => this.motion.setOptions({ [key]: value }), `option:${key}`);
+    this.run('setOption', key, value);
   }
 
   setScheme(name) {
-    this.edit(() => this.motion.setOptions({ scheme: name }));
+    this.run('setScheme', name);
   }
 
   setS(s) {
-    const named = { 1: 'bspline', 0: 'fourpoint', 0.5: 'jarek' }[s];
-    this.edit(() => this.motion.setOptions(named ? { scheme: named } : { scheme: 'j', s }), 'option:s');
+    this.run('setS', s);
   }
 
   setClosed(closed) {
-    this.edit(() => this.motion.setClosed(closed));
+    this.run('setClosed', closed);
   }
 
   setView(key, value) {
-    this.edit(() => {
-      this.updateView({ [key]: value });
-      if (key === 'object') this.meshesChanged();
-    }, `view:${key}`);
+    this.run('setView', key, value);
   }
 }

@@ -41,10 +41,10 @@
  */
 
 import { setPlayheadSource } from '../views/plot.js';
-import { without } from './rects.js';
+import { without, stage } from './rects.js';
 
 /** The smallest free part of the window (CSS px) the 3-D view moves into beside the dock. */
-const MIN_FREE = { width: 240, height: 200 };
+const MIN_FREE = { width: 200, height: 100 };
 
 export class Dock {
   /** `views`: the view descriptors in tab order (views/index.js loadViews); `wasm`: the analysis module. */
@@ -94,14 +94,17 @@ export class Dock {
     }).observe(this.body, { childList: true, subtree: true });
     // A new window size: the tabs and the free part of the window change.
     let relayout = 0;
-    window.addEventListener('resize', () => {
+    const again = () => {
       cancelAnimationFrame(relayout);
       relayout = requestAnimationFrame(() => {
         if (!this.active) return;
         this.layoutTabs();
         this.fitView();
       });
-    });
+    };
+    window.addEventListener('resize', again);
+    // A lesson opened or closed: the window's free part changed as well.
+    app.on('layout', again);
     this.saved = null;
     setPlayheadSource(() => this.playhead());
   }
@@ -235,13 +238,15 @@ export class Dock {
     if (this.active) {
       const d = this.root.getBoundingClientRect();
       const toolbar = document.getElementById('toolbar')?.getBoundingClientRect() ?? null;
-      const W = window.innerWidth;
-      const H = window.innerHeight;
+      // The window less an open lesson's card (editor/rects.js stage).
+      const S = stage();
+      const right = S.left + S.width;
+      const bottom = S.top + S.height;
       const parts = [
-        { left: 0, top: 0, width: d.left, height: H },
-        { left: d.right, top: 0, width: W - d.right, height: H },
-        { left: 0, top: 0, width: W, height: d.top },
-        { left: 0, top: d.bottom, width: W, height: H - d.bottom },
+        { left: S.left, top: S.top, width: d.left - S.left, height: S.height },
+        { left: d.right, top: S.top, width: right - d.right, height: S.height },
+        { left: S.left, top: S.top, width: S.width, height: d.top - S.top },
+        { left: S.left, top: d.bottom, width: S.width, height: bottom - d.bottom },
       ]
         .map((p) => (toolbar ? without(p, toolbar) : p))
         .filter((p) => p.width >= MIN_FREE.width && p.height >= MIN_FREE.height);

@@ -47,7 +47,7 @@ export default {
       d.pose = pose;
       if (!d.moved) {
         // The undo step is recorded by the first move, so a click on a handle is no edit.
-        app.history.push(d.before);
+        app.history.push(d.before, `Drag pose ${d.index}`);
         d.moved = true;
       }
       if (fast) d.pending = true;
@@ -162,7 +162,7 @@ export default {
         const step = sign * f * SNAP_TRANSLATE;
         next = { origin: pose.origin.map((x, k) => x + step * a[k]), rotation: [...pose.rotation] };
       }
-      app.edit(() => app.motion.setPose(i, next), `key:${rotate ? 'rotate' : 'move'}:${i}`);
+      app.run('setPose', i, next, `key:${rotate ? 'rotate' : 'move'}`);
     }
 
     /** Arrow keys and PageUp / PageDown: [gizmo axis, direction]. */

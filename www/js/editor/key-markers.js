@@ -170,7 +170,7 @@ export function buildKeyMarkers(app, root) {
       m.removeEventListener('pointerup', up);
       m.removeEventListener('pointercancel', up);
       if (d.moved && !d.refused) {
-        app.history.push(d.before);
+        app.history.push(d.before, `Retime key ${d.i}`);
         app.changed();
       } else place();
     };

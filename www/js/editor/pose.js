@@ -187,7 +187,7 @@ export default {
         return;
       }
       const before = app.errors.length;
-      app.edit(() => app.motion.setPose(i, { origin, rotation }));
+      app.run('setPose', i, { origin, rotation });
       // The typed values are now the pose's (or, refused, replaced by them again).
       refresh(true);
       // The Motion refused the pose (a value out of its range): say so here as well.

@@ -19,3 +19,15 @@ export function without(p, o) {
   for (const c of cuts) if (c.width > 0 && c.height > 0 && (!best || c.width * c.height > best.width * best.height)) best = c;
   return best ?? { left: p.left, top: p.top, width: 0, height: 0 };
 }
+
+/**
+ * The part of the window the page's chrome and the 3-D view share: the whole window, less the
+ * lesson card while a lesson is open (css/lessons.css gives it a column or a sheet of its own).
+ * @returns {{left: number, top: number, width: number, height: number}}
+ */
+export function stage() {
+  const all = { left: 0, top: 0, width: window.innerWidth, height: window.innerHeight };
+  const card = document.getElementById('lesson');
+  if (!card || card.hidden || !document.body.classList.contains('lesson-open')) return all;
+  return without(all, card.getBoundingClientRect());
+}

@@ -1,29 +1,44 @@
 // The session: everything the page restores — the motion document and options, the display
 // settings, the selection, the playback and the camera. Undo/redo keeps snapshots of it, the
-// autosave writes it to localStorage, share links carry it in the URL hash.
+// autosave keeps it as this tab's draft (editor/drafts.js), share links carry it in the URL hash.
 //
 // The pure helpers (History, hash coding, storage) come first; the part (default export, see
 // app.js for the part contract) applies sessions to the app and records its edits.
 import { SLOT } from '../view/slots.js';
 
-export const STORAGE_KEY = 'screwbender.playground.v1';
 /** Session format version written in saves and share links. */
 export const SESSION_VERSION = 1;
 /** Undo steps kept. */
 export const MAX_UNDO = 200;
 
-/** Undo/redo over serialized snapshots (strings). */
+/**
+ * One undo or redo step: the state to go back to and the words naming the edit (the Undo menu,
+ * editor/undo-menu.js).
+ * @typedef {{snapshot: string, label: string}} Step
+ */
+
+/** What an edit without a name of its own is called in the Undo menu. */
+export const UNNAMED_EDIT = 'Edit';
+
+/** Undo/redo over serialized snapshots (strings), each step labelled. */
 export class History {
   constructor() {
+    /** @type {Step[]} */
     this.undoStack = [];
+    /** @type {Step[]} */
     this.redoStack = [];
     /** Counts the changes of the stacks (push, undo, redo): an edit merges into the last step only if none came between. */
     this.version = 0;
   }
-  /** Records `snapshot` (the state *before* an edit). */
-  push(snapshot) {
-    if (this.undoStack[this.undoStack.length - 1] === snapshot) return;
-    this.undoStack.push(snapshot);
+  /** Records `snapshot` (the state *before* an edit) as the step that undoes the edit `label`. */
+  push(snapshot, label = UNNAMED_EDIT) {
+    const top = this.undoStack[this.undoStack.length - 1];
+    // The edit before changed nothing: its step now undoes this one (and takes its name).
+    if (top?.snapshot === snapshot) {
+      top.label = label;
+      return;
+    }
+    this.undoStack.push({ snapshot, label });
     if (this.undoStack.length > MAX_UNDO) this.undoStack.shift();
     this.redoStack.length = 0;
     this.version++;
@@ -32,22 +47,30 @@ export class History {
   undo(current) {
     const s = this.undoStack.pop();
     if (s === undefined) return null;
-    this.redoStack.push(current);
+    this.redoStack.push({ snapshot: current, label: s.label });
     this.version++;
-    return s;
+    return s.snapshot;
   }
   redo(current) {
     const s = this.redoStack.pop();
     if (s === undefined) return null;
-    this.undoStack.push(current);
+    this.undoStack.push({ snapshot: current, label: s.label });
     this.version++;
-    return s;
+    return s.snapshot;
   }
   get canUndo() {
     return this.undoStack.length > 0;
   }
   get canRedo() {
     return this.redoStack.length > 0;
+  }
+  /** The labels of the edits Undo takes back, the next first. */
+  get undoLabels() {
+    return this.undoStack.map((s) => s.label).reverse();
+  }
+  /** The labels of the edits Redo makes again, the next first. */
+  get redoLabels() {
+    return this.redoStack.map((s) => s.label).reverse();
   }
 }
 
@@ -105,25 +128,6 @@ export function decodeHash(text) {
   return obj;
 }
 
-export function loadSaved() {
-  try {
-    const text = localStorage.getItem(STORAGE_KEY);
-    return text ? JSON.parse(text) : null;
-  } catch {
-    return null;
-  }
-}
-
-/** Saves; returns an error message when storage is full or unavailable. */
-export function save(session) {
-  try {
-    localStorage.setItem(STORAGE_KEY, JSON.stringify(session));
-    return null;
-  } catch (e) {
-    return `autosave failed: ${e.message}`;
-  }
-}
-
 /** The largest strobe count (instances of the object along the motion) a session may ask for. */
 export const MAX_STROBE = 20000;
 /** Imported meshes up to this size are kept in the autosave and share links. */
@@ -140,11 +144,12 @@ export default {
      * continues the last one: the same `coalesce` key, less than MERGE_IDLE_MS after it (at
      * `now`, ms on performance.now()'s clock, e.g. an event's timeStamp), and no other step, undo
      * or redo in between; the step recorded then already holds the state before the whole run.
+     * `label` names the edit in the Undo menu.
      */
-    function record(before, coalesce = null, now = performance.now()) {
+    function record(before, coalesce = null, now = performance.now(), label = UNNAMED_EDIT) {
       const merge =
         coalesce !== null && coalesce === lastEdit?.key && now - lastEdit.time < MERGE_IDLE_MS && lastEdit.version === app.history.version;
-      if (!merge) app.history.push(before);
+      if (!merge) app.history.push(before, label);
       lastEdit = { key: coalesce, time: now, version: app.history.version };
     }
 
@@ -221,9 +226,7 @@ export default {
     }
 
     function autosave() {
-      if (!app.motion) return;
-      const err = save(session());
-      if (err) app.showError(err, 'warn');
+      if (app.motion) app.parts.drafts.save(session());
     }
 
     return {
@@ -233,9 +236,9 @@ export default {
       autosave,
 
       /**
-       * Share link > autosave: applies the first that works and says which ('link' or
-       * 'saved'); '' when neither is there (or both failed, with a message each), so the
-       * caller loads a preset.
+       * Share link > autosave (this tab's draft, else the latest of any tab): applies the first
+       * that works and says which ('link' or 'saved'); '' when neither is there (or both failed,
+       * with a message each), so the caller loads a preset.
        * @returns {'link' | 'saved' | ''}
        */
       restoreInitial() {
@@ -250,7 +253,7 @@ export default {
             app.showError(`The shared link could not be opened: ${e.message}`);
           }
         }
-        const saved = loadSaved();
+        const saved = app.parts.drafts.latest();
         if (saved) {
           try {
             applySession(saved);
@@ -262,9 +265,9 @@ export default {
         return '';
       },
 
-      /** Records the current state before an edit. */
-      beginEdit() {
-        app.history.push(snapshot());
+      /** Records the current state before an edit named `label`. */
+      beginEdit(label = UNNAMED_EDIT) {
+        app.history.push(snapshot(), label);
       },
 
       record,
@@ -272,13 +275,14 @@ export default {
       /**
        * Runs `f` as one undoable edit; errors go to the banner and leave the state unchanged.
        * Edits with the same `coalesce` key less than a second apart (a slider being dragged)
-       * make one undo step (see record).
+       * make one undo step (see record); `label` names it in the Undo menu (editor/commands.js
+       * runs every named edit through here).
        */
-      edit(f, coalesce = null) {
+      edit(f, coalesce = null, label = UNNAMED_EDIT) {
         const before = snapshot();
         try {
           const r = f();
-          record(before, coalesce);
+          record(before, coalesce, performance.now(), label);
           app.changed();
           return r;
         } catch (e) {

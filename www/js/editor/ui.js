@@ -49,6 +49,12 @@ export function buildUi(app) {
   // Every change of the motion, its options or the view settings shows (before the dock's
   // update, which subscribes later).
   app.on('motion', refresh);
+  // A new selection or gizmo mode, playback started or stopped, the playhead moved.
+  app.on('selection', (d) => d?.redraw && refresh());
+  app.on('playback', (d) => {
+    if (d?.play) refresh();
+    else if (d?.u !== undefined) timeline.setTime(d.u, d.a, d.b, d.playhead);
+  });
   refresh();
   return { gui: panel.gui, refresh, setTime: timeline.setTime, toggleHelp: help.toggle, toast: status.toast };
 }

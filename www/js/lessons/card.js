@@ -1,12 +1,14 @@
 // The lesson card (#lesson): its head (lesson title, step counter, close), the bar of step
-// dots, the step's title and text with math, the exercise box (filled by exercise.js) and the
-// Back / Next buttons.
+// dots, the step's title and text with math, the stand-in for an unreachable highlighted control
+// (highlight.js), the exercise box (filled by exercise.js) and the Back / Next buttons. Where it
+// stands is the page's layout while a lesson is open (css/lessons.css): a column beside the
+// 3-D view, or on phones upright a sheet below it.
 import { renderText } from './format.js';
 import { el } from './dom.js';
 
 /**
- * Creates the (hidden) lesson card. Returns its parts {card, lessonTitle, bar, exercise,
- * closeBtn, prevBtn, nextBtn} and render(st, renderExercise), which shows step `st.step` of
+ * Creates the (hidden) lesson card. Returns its parts {card, scroll, proxy, lessonTitle, bar,
+ * exercise, closeBtn, prevBtn, nextBtn}, fit() (compact or not, after a change of its content) and render(st, renderExercise), which shows step `st.step` of
  * `st.lesson` with `st.progress` and hands its exercise to `renderExercise`.
  */
 export function createCard() {
@@ -29,16 +31,40 @@ export function createCard() {
   const prevBtn = el('button', 'prev', '◀ Back');
   const nextBtn = el('button', 'next primary', 'Next ▶');
   nav.append(prevBtn, nextBtn);
-  // Head, step title and buttons stay put; the text and the exercise scroll between them, so
-  // Back / Next are on screen however short the card is placed (highlight.js).
+  // Head, step title, the exercise's task, Check, Hint, feedback and Back / Next stay put; the
+  // text scrolls between them (and, where the card is very short, the choices scroll inside the
+  // exercise), so a student never scrolls to find the button the step asks for.
   const scroll = el('div', 'scroll');
   // Keyboard users scroll it too (a scrollable region must take the focus).
   scroll.tabIndex = 0;
   scroll.setAttribute('role', 'region');
   scroll.setAttribute('aria-label', 'Step text');
-  scroll.append(body, exercise);
-  card.append(head, bar, stepTitle, scroll, nav);
+  scroll.append(body);
+  // Where a step's highlighted control cannot be reached where it is (highlight.js), a button
+  // standing in for it.
+  const proxy = el('div', 'proxy');
+  proxy.hidden = true;
+  card.append(head, bar, stepTitle, scroll, proxy, exercise, nav);
   document.body.append(card);
+
+  /**
+   * Where the card's column or sheet is too short for all of it (a phone, a message above it),
+   * it goes compact: the step dots and title fold away and the text keeps two lines, so that
+   * the exercise's task, buttons and feedback stay whole.
+   */
+  function fit() {
+    if (card.hidden) return;
+    card.classList.remove('compact');
+    const over = (e) => e.scrollHeight > e.clientHeight + 1;
+    if (over(card) || (!exercise.hidden && over(exercise))) card.classList.add('compact');
+  }
+  // The card's size follows the window and the banner above it (css/lessons.css); fitted in
+  // the next frame, after the layout that changed it.
+  let pending = 0;
+  new ResizeObserver(() => {
+    cancelAnimationFrame(pending);
+    pending = requestAnimationFrame(fit);
+  }).observe(card, { box: 'border-box' });
 
   function render({ lesson, step, progress }, renderExercise) {
     const s = lesson.steps[step];
@@ -58,6 +84,7 @@ export function createCard() {
     nextBtn.textContent = step === n - 1 ? 'Finish ✓' : 'Next ▶';
     card.classList.remove('summary');
     scroll.scrollTop = 0;
+    fit();
   }
 
   /**
@@ -103,8 +130,9 @@ export function createCard() {
     nextBtn.textContent = 'Close ✓';
     card.classList.add('summary');
     scroll.scrollTop = 0;
+    fit();
     return { solved: solved.length, total: exercises.length };
   }
 
-  return { card, scroll, lessonTitle, bar, exercise, closeBtn, prevBtn, nextBtn, render, renderSummary };
+  return { card, scroll, proxy, lessonTitle, bar, exercise, closeBtn, prevBtn, nextBtn, render, renderSummary, fit };
 }

@@ -8,18 +8,23 @@ import { el } from './dom.js';
 /**
  * Creates the exercise part of the lesson card in `box`; `bar` is the card's step bar (its dot
  * of a solved step is marked). `st` is the player's state {lesson, step, answer, hintShown,
- * progress}, read and updated here. Returns {render(x), choose(k), check()}.
+ * progress}, read and updated here; `fit` fits the card again when the box grows. Returns
+ * {render(x), choose(k), check()}.
  */
-export function createExercise(app, box, bar, st) {
+export function createExercise(app, box, bar, st, fit = () => {}) {
   /** Shows exercise `x` of the open step. */
   function render(x) {
     const solved = st.progress.solved.includes(st.step);
     const task = el('div', 'task');
     task.append(el('b', 'label', solved ? 'Exercise ✓ solved' : 'Exercise'), renderText(x.task));
     box.append(task);
+    // The choices and the hints shown scroll where the card is short; task, buttons and
+    // feedback stay in view.
+    const more = el('div', 'ex-scroll');
     if (x.choices) {
       const fs = el('div', 'choices');
       fs.setAttribute('role', 'radiogroup');
+      fs.setAttribute('aria-label', 'Answers');
       x.choices.forEach((c, k) => {
         const label = el('label');
         const r = el('input');
@@ -33,8 +38,9 @@ export function createExercise(app, box, bar, st) {
         label.append(r, span);
         fs.append(label);
       });
-      box.append(fs);
+      more.append(fs);
     }
+    more.append(el('div', 'hints'));
     const row = el('div', 'row');
     const checkBtn = el('button', 'check primary', 'Check');
     checkBtn.addEventListener('click', () => check());
@@ -44,7 +50,11 @@ export function createExercise(app, box, bar, st) {
       hintBtn.addEventListener('click', () => showHint(x));
       row.append(hintBtn);
     }
-    box.append(row, el('div', 'hints'), Object.assign(el('p', 'feedback'), { role: 'status' }));
+    // A live region: the result of each Check is read out as well as shown.
+    const fb = Object.assign(el('div', 'feedback'), { role: 'status' });
+    fb.setAttribute('aria-live', 'polite');
+    fb.setAttribute('aria-atomic', 'true');
+    box.append(more, row, fb);
     if (solved) setFeedback(true, [x.success ?? 'Solved earlier; check again any time.']);
   }
 
@@ -55,6 +65,8 @@ export function createExercise(app, box, bar, st) {
     h.append(el('b', '', `Hint ${st.hintShown + 1}: `), renderText(x.hints[st.hintShown]));
     hints.append(h);
     st.hintShown++;
+    fit();
+    h.scrollIntoView({ block: 'nearest' });
   }
 
   function setFeedback(ok, lines, math = true) {
@@ -68,6 +80,13 @@ export function createExercise(app, box, bar, st) {
       else d.textContent = line;
       fb.append(d);
     }
+    // A new result each time, even when it reads as the last one did.
+    fb.classList.remove('again');
+    void fb.offsetWidth;
+    fb.classList.add('again');
+    fb.scrollTop = 0;
+    fit();
+    fb.scrollIntoView({ block: 'nearest' });
   }
 
   /** Picks answer `k` of the step's multiple choice. */

@@ -79,7 +79,7 @@ export function createMenu(app, { open, openText }) {
   }
 
   async function openFile(file) {
-    if (file.size > MAX_LESSON_BYTES) return app.showError(`${file.name} is too large for a lesson (${file.size} bytes). Nothing was changed.`);
+    if (file.size > MAX_LESSON_BYTES) return app.showError(`${file.name} is too large for a lesson (${file.size} bytes). Nothing was changed.`, 'error', 'lesson');
     openText(await file.text(), file.name);
   }
 

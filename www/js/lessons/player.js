@@ -43,8 +43,8 @@ export function startLessons(app) {
   // The open lesson, its step, the step's chosen answer and hints shown, and its saved progress.
   const st = { lesson: null, step: -1, answer: null, hintShown: 0, progress: null };
   const card = createCard();
-  const exercise = createExercise(app, card.exercise, card.bar, st);
-  const highlight = createHighlight(app, card.card);
+  const exercise = createExercise(app, card.exercise, card.bar, st, card.fit);
+  const highlight = createHighlight(app, card);
   const menu = createMenu(app, { open, openText });
 
   const player = {
@@ -73,11 +73,17 @@ export function startLessons(app) {
     openMenu: menu.open,
   };
 
+  /**
+   * Shows a lesson's error in the banner (above the Lessons menu); the next lesson or step that
+   * opens without one takes it away.
+   */
+  const lessonError = (message) => app.showError(message, 'error', 'lesson');
+
   /** Opens lesson `name`: an id of lessons/index.json or a file (see lessonUrl); false (and a banner) if it cannot. */
   async function open(name, { resume = true } = {}) {
     const url = lessonUrl(await resolveLessonName(name));
     if (!url) {
-      app.showError(`Lesson "${name}": only files under lessons/ on this site can be opened by name. Nothing was changed.`);
+      lessonError(`Lesson "${name}": only files under lessons/ on this site can be opened by name. Nothing was changed.`);
       return false;
     }
     let text;
@@ -86,7 +92,7 @@ export function startLessons(app) {
       if (!r.ok) throw new Error(`HTTP ${r.status}`);
       text = await r.text();
     } catch (e) {
-      app.showError(`Lesson ${url.pathname.split('/').pop()}: could not load it (${e.message}). Nothing was changed.`);
+      lessonError(`Lesson ${url.pathname.split('/').pop()}: could not load it (${e.message}). Nothing was changed.`);
       return false;
     }
     if (!openText(text, url.pathname.split('/').pop(), { resume })) return false;
@@ -106,14 +112,17 @@ export function startLessons(app) {
     try {
       parsed = parseLesson(text, ctx);
     } catch (e) {
-      app.showError(`Lesson ${source}: ${e.message}. Nothing was changed.`);
+      lessonError(`Lesson ${source}: ${e.message}. Nothing was changed.`);
       return false;
     }
+    app.parts.notices.clear('lesson');
     menu.hide();
     st.lesson = parsed;
     st.progress = readProgress(st.lesson.id);
+    const opening = card.card.hidden;
     card.card.hidden = false;
     document.body.classList.add('lesson-open');
+    if (opening) relayout();
     card.card.classList.toggle('tour', !!st.lesson.tour);
     card.lessonTitle.textContent = st.lesson.title;
     go(resume ? Math.min(st.progress.step, st.lesson.steps.length - 1) : 0);
@@ -162,8 +171,9 @@ export function startLessons(app) {
     const s = st.lesson.steps[i];
     try {
       applyStep(app, s, highlight.set);
+      app.parts.notices.clear('lesson');
     } catch (e) {
-      app.showError(`Lesson step ${i + 1}: ${e.message}`);
+      lessonError(`Lesson step ${i + 1}: ${e.message}`);
     }
     card.render(st, exercise.render);
     card.card.dataset.step = String(i);
@@ -179,9 +189,39 @@ export function startLessons(app) {
     }
     st.lesson = null;
     st.step = -1;
+    const closing = !card.card.hidden;
     card.card.hidden = true;
     document.body.classList.remove('lesson-open');
     highlight.set(null);
+    if (closing) relayout();
+  }
+
+  /**
+   * The card took its place in the page's layout, or gave it back (css/lessons.css): the 3-D
+   * view and the dock resize (app 'layout'), and the scene is framed in what they leave.
+   */
+  function relayout() {
+    app.viewer.invalidateSize();
+    app.emit('layout');
+    requestAnimationFrame(() => {
+      app.viewer.invalidateSize();
+      app.frameAll();
+      highlight.place();
+    });
+  }
+
+  // While a lesson is open the banner shows at the top of the card's column (css/lessons.css),
+  // which makes room for it: its height, kept in --banner-h.
+  const banner = document.getElementById('banner');
+  if (banner) {
+    new ResizeObserver(() => {
+      const h = banner.hidden ? 0 : Math.ceil(banner.getBoundingClientRect().height);
+      // In the next frame: the card's size changes with it, and the card fits itself then.
+      requestAnimationFrame(() => {
+        document.body.style.setProperty('--banner-h', `${h}px`);
+        card.fit();
+      });
+    }).observe(banner);
   }
 
   card.closeBtn.addEventListener('click', close);
