@@ -35,7 +35,12 @@ const text = async (path) => new TextDecoder().decode(await bytes(path));
  */
 export async function buildPackage(files, format, mastery) {
   const list = JSON.parse(await text(FILE_LIST));
-  const lessons = await Promise.all(files.map(async (file) => ({ file, text: await text(`lessons/${file}`) })));
+  // Lessons fresh each time (one may be being written); the playground's files from the cache.
+  const lessons = await Promise.all(files.map(async (file) => {
+    const r = await fetch(new URL(`lessons/${file}`, WWW), { cache: 'no-store' });
+    if (!r.ok) throw new Error(`lessons/${file}: HTTP ${r.status}`);
+    return { file, text: await r.text() };
+  }));
   const plan = planPackage({ lessons, format, mastery, list, template: await text(list.template) });
   const enc = new TextEncoder();
   const data = await Promise.all(plan.files.map(async (f) => ({ path: f.path, data: f.text !== undefined ? enc.encode(f.text) : await bytes(f.www) })));
@@ -98,6 +103,8 @@ export function createPackageDialog(app, current) {
   }
 
   let run = 0;
+  /** The last package made: {key, p} (the choices as JSON, and the package). */
+  let last = null;
   /** Makes the package for the dialog's choices and shows its size; resolves to it (or null). */
   async function measure() {
     const c = choices();
@@ -107,10 +114,16 @@ export function createPackageDialog(app, current) {
       size.textContent = c;
       return null;
     }
+    const key = JSON.stringify(c);
+    if (last?.key === key) {
+      download.disabled = false;
+      return last.p;
+    }
     size.textContent = 'Size: measuring…';
     try {
       const p = await buildPackage(c.files, c.format, c.mastery);
       if (mine !== run) return null;
+      last = { key, p };
       size.textContent = `Size: ${(p.zip.length / 1e6).toFixed(2)} MB (${p.count} files), ${FORMATS[c.format]}${c.files.length > 1 ? `, a course of ${c.files.length} lessons` : ''}.`;
       download.disabled = false;
       return p;
@@ -143,6 +156,8 @@ export function createPackageDialog(app, current) {
     });
     modal.hidden = false;
     download.focus();
+    // The lessons' files may have changed since the last package (a lesson being written).
+    last = null;
     measure();
   }
 
