@@ -12,7 +12,8 @@
 //   the lesson's Finish was reached, else empty; the solved steps as a bit set (bit i: step i,
 //   base 32); the chosen answers as `step:answer` pairs joined by `,` (base 36).
 // A 200-step lesson (the format's largest) with every step a solved multiple choice takes
-// under 1,000 characters, the interaction order under 4 per exercise.
+// under 1,800 characters (tests/js/lesson-package.test.mjs); the six lessons of www/lessons as
+// one course, all solved, under 100.
 //
 // Variants of randomised steps need no room here: their seed is derived from the learner's id
 // (lms.js, variantSeed), which the LMS gives again at every launch.
