@@ -4,7 +4,7 @@
 // `API_1484_11`) and opens the package's launch page in a frame, as an LMS does. For both
 // versions, packages made by scripts/lesson-package.mjs: the manifest has the elements the
 // SCORM schemas require and lists exactly the zip's files; a learner answers an exercise wrong,
-// then right, with real clicks; the LMS reads back the status, score, interactions, session time
+// then right, with real clicks; the LMS reads back the status, score, interactions, time spent
 // and suspend data; a second launch from the stored data resumes at the same step with the
 // exercise solved, and Finish completes it with pass or fail against the mastery score; a
 // three-lesson course starts at its menu; outside an LMS the package runs as a plain lesson; no

@@ -70,7 +70,7 @@ describe('suspend data', () => {
   });
 });
 
-describe('session time', () => {
+describe('time spent (session_time)', () => {
   it('is written in each version\'s format', () => {
     assert.equal(timespan12(3723450), '0001:02:03.45');
     assert.equal(duration2004(3723450), 'PT1H2M3.45S');

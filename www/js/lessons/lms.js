@@ -2,7 +2,7 @@
 // `window.API`, SCORM 2004 `window.API_1484_11`) and speaks one vocabulary to both versions.
 // Written here rather than taken from npm: the runtime libraries there (scorm-again, pipwerks)
 // are the LMS side or wrap only the calls; what the page needs is the mapping of its few facts
-// (score, status, interactions, suspend data, session time) onto each version's data model,
+// (score, status, interactions, suspend data, time spent) onto each version's data model,
 // which is this file.
 //
 // The API search follows the standard's algorithm (ADL's "API discovery"): the window's parent
@@ -18,7 +18,7 @@
 //   masteryScore              the LMS's own mastery (0…1) from the manifest, or null
 //   save({suspendData, raw, max, scaled, completed, passed})   writes status and score
 //   interaction(n, record)    writes interaction record n (see record below)
-//   commit()                  LMSCommit / Commit, with the session time so far
+//   commit()                  LMSCommit / Commit, with the time spent so far (session_time)
 //   terminate()               LMSFinish / Terminate (once; later calls do nothing)
 //   errors                    the LMS calls that failed, as "call: code message" lines
 
@@ -197,7 +197,7 @@ function open(api, version) {
       }
     },
 
-    /** Commits what was written, with the session time so far. */
+    /** Commits what was written, with the time spent so far (session_time). */
     commit() {
       if (!live) return;
       const ms = Date.now() - started;

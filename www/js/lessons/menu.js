@@ -38,7 +38,6 @@ export function createMenu(app, { open, openText, current }) {
   const pasteBtn = el('button', 'primary', 'Open pasted lesson');
   const mclose = el('button', '', 'Close');
   const lmsBtn = el('button', 'lms', 'Download for an LMS (SCORM)…');
-  lmsBtn.hidden = document.documentElement.dataset.lessonPackage === '1';
   let packageDialog = null;
   lmsBtn.addEventListener('click', async () => {
     try {
@@ -50,10 +49,14 @@ export function createMenu(app, { open, openText, current }) {
       app.showError(`Could not load the package dialog (${e.message}).`);
     }
   });
-  mrow.append(lmsBtn, chooseBtn, pasteBtn, mclose);
+  mrow.append(chooseBtn, pasteBtn, mclose);
+  // Under the list it packages, on a row of its own.
+  const lmsRow = el('div', 'row lms-row');
+  lmsRow.hidden = document.documentElement.dataset.lessonPackage === '1';
+  lmsRow.append(lmsBtn);
   const mnote = el('p', 'small');
   mnote.append('A lesson is a JSON file (format: ', Object.assign(el('a', '', 'lessons/README.md'), { href: new URL('README.md', BASE).href, target: '_blank' }), '); a link with ', el('code', '', '?lesson=name'), ' opens lessons/name.json.');
-  mcard.append(el('h2', '', 'Lessons'), list, paste, mrow, mnote, fileInput);
+  mcard.append(el('h2', '', 'Lessons'), list, lmsRow, paste, mrow, mnote, fileInput);
   menu.append(mcard);
   document.body.append(menu);
 

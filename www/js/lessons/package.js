@@ -25,8 +25,12 @@ export const LAUNCH = 'lesson.html';
 /** The preset whose object is the Stanford bunny (view/drawing.js loads its mesh). */
 const BUNNY_PRESET = 'bunny6';
 
-/** Every file of the zip gets this time, so the same lessons make the same bytes. */
-const ZIP_MTIME = new Date('2020-01-01T00:00:00Z');
+/**
+ * Every file of the zip gets this time, so the same lessons make the same bytes: the earliest a
+ * zip entry can hold (its DOS time starts in 1980), in local time because the zip stores local
+ * time, so every machine writes the same fields.
+ */
+const ZIP_MTIME = new Date(1980, 0, 1);
 
 /**
  * The build's file list (www/pkg-lesson/files.json): the playground's version, the page
