@@ -16,7 +16,7 @@
 //   resumed                   the LMS says this launch resumes an earlier one (entry = resume)
 //   suspendData               the suspend data kept from the last launch ('' when none)
 //   masteryScore              the LMS's own mastery (0…1) from the manifest, or null
-//   save({suspendData, raw, max, scaled, completed, passed})   writes status and score
+//   save({suspendData, scaled, completed, passed})   writes status and score
 //   interaction(n, record)    writes interaction record n (see record below)
 //   commit()                  LMSCommit / Commit, with the time spent so far (session_time)
 //   terminate()               LMSFinish / Terminate (once; later calls do nothing)
@@ -154,18 +154,21 @@ function open(api, version) {
     errors,
 
     /**
-     * Writes the learner's state: suspend data, score (raw of max, scaled 0…1), completion and,
-     * once completed, pass or fail (`passed` null: no mastery score, so no pass/fail).
+     * Writes the learner's state: suspend data, the score `scaled` (0…1, the share of the
+     * exercises solved), completion and, once completed, pass or fail (`passed` null: no mastery
+     * score, so no pass/fail). The raw score is that share in percent (min 0, max 100): SCORM
+     * 1.2 LMSs compare the raw score with the mastery score, a percentage, and most gradebooks
+     * read the raw score as points out of 100.
      */
-    save({ suspendData, raw, max, scaled, completed, passed }) {
+    save({ suspendData, scaled, completed, passed }) {
       set('cmi.suspend_data', suspendData);
       // Exit "suspend": the next launch resumes with this data (also after completion, so a
       // learner who comes back sees their answers and the summary).
       set(v12 ? 'cmi.core.exit' : 'cmi.exit', 'suspend');
       const score = v12 ? 'cmi.core.score' : 'cmi.score';
       set(`${score}.min`, 0);
-      set(`${score}.max`, max);
-      set(`${score}.raw`, raw);
+      set(`${score}.max`, 100);
+      set(`${score}.raw`, Math.round(scaled * 10000) / 100);
       if (!v12) set('cmi.score.scaled', scaled.toFixed(4));
       if (v12) {
         // 1.2 has one status: passed / failed say completed too.
