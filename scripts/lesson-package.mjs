@@ -79,6 +79,10 @@ try {
 const enc = new TextEncoder();
 const files = plan.files.map((f) => ({ path: f.path, data: f.text !== undefined ? enc.encode(f.text) : fs.readFileSync(path.join(WWW, f.www)) }));
 const zip = packageZip(files, zipSync);
-fs.mkdirSync(path.dirname(path.resolve(opt.output)), { recursive: true });
-fs.writeFileSync(opt.output, zip);
+try {
+  fs.mkdirSync(path.dirname(path.resolve(opt.output)), { recursive: true });
+  fs.writeFileSync(opt.output, zip);
+} catch (e) {
+  fail(`${opt.output}: cannot write it (${e.code ?? e.message})`);
+}
 console.log(`${opt.output}: ${FORMATS[opt.format]} package "${plan.title}", ${files.length} files, ${(zip.length / 1e6).toFixed(2)} MB`);
