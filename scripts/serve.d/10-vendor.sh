@@ -9,3 +9,7 @@ cp node_modules/lil-gui/LICENSE* www/vendor/ 2>/dev/null || true
 cp node_modules/uplot/dist/uPlot.esm.js www/vendor/uPlot.esm.js
 cp node_modules/uplot/dist/uPlot.min.css www/vendor/uPlot.min.css
 cp node_modules/uplot/LICENSE www/vendor/uPlot.LICENSE 2>/dev/null || true
+# fflate (MIT): the zip of a lesson package for an LMS (www/js/lessons/package-dialog.js).
+node_modules/.bin/esbuild node_modules/fflate/esm/browser.js --minify --format=esm --log-level=warning \
+  --outfile=www/vendor/fflate.min.mjs
+cp node_modules/fflate/LICENSE www/vendor/fflate.LICENSE

@@ -21,6 +21,8 @@
 //                                   is read-only: change it through its setters (js/app.js)
 //   lessons: Promise<player>        the lesson player once fetched and started, after the first
 //                                   frame (js/lessons/player.js documents it; null if it failed)
+//   lms                             only in a lesson package's page: its LMS connection, the
+//                                   learner's id and the course's place (js/lessons/launch.js)
 import { App } from './app.js';
 import { lazy } from './editor/modules.js';
 

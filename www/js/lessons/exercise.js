@@ -8,8 +8,8 @@ import { el } from './dom.js';
 /**
  * Creates the exercise part of the lesson card in `box`; `bar` is the card's step bar (its dot
  * of a solved step is marked). `st` is the player's state {lesson, step, answer, hintShown,
- * progress}, read and updated here; `fit` fits the card again when the box grows. Returns
- * {render(x), choose(k), check()}.
+ * progress, emit}, read and updated here (a check is told to emit('check', …), player.js);
+ * `fit` fits the card again when the box grows. Returns {render(x), choose(k), check()}.
  */
 export function createExercise(app, box, bar, st, fit = () => {}) {
   /** Shows exercise `x` of the open step. */
@@ -105,6 +105,7 @@ export function createExercise(app, box, bar, st, fit = () => {}) {
     if (st.answer !== null) progress.answers[step] = st.answer;
     if (r.ok && !progress.solved.includes(step)) progress.solved.push(step);
     writeProgress(lesson.id, progress);
+    st.emit?.('check', { step, ok: r.ok, answer: st.answer, results: r.results });
     if (r.ok) setFeedback(true, [x.success ?? 'Correct.']);
     else {
       // A wrong choice: why that answer is wrong (the lesson's explanation, with math), else

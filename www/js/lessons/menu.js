@@ -1,16 +1,18 @@
 // The Lessons button of the toolbar and its menu: the lessons of lessons/index.json with each
-// one's saved progress, the tour, opening a lesson file by chooser, drop or paste; the L and Esc
-// keys.
+// one's saved progress, the tour, opening a lesson file by chooser, drop or paste, the
+// "Download for an LMS (SCORM)" dialog (package-dialog.js, fetched when first used; not inside
+// a lesson package, whose page has nothing to package from); the L and Esc keys.
 import { MAX_LESSON_BYTES } from './format.js';
 import { readProgress } from './progress.js';
 import { BASE } from './urls.js';
 import { el } from './dom.js';
 
 /**
- * Creates the Lessons button and menu (#lessons-menu) of `app`; `open(name, {resume})` and
- * `openText(text, source)` are the player's. Returns {open(), hide(), hidden}.
+ * Creates the Lessons button and menu (#lessons-menu) of `app`; `open(name, {resume})`,
+ * `openText(text, source)` and `current()` (the open lesson's id or null) are the player's.
+ * Returns {open(), hide(), hidden}.
  */
-export function createMenu(app, { open, openText }) {
+export function createMenu(app, { open, openText, current }) {
   const $ = (id) => document.getElementById(id);
   const button = el('button');
   button.id = 't-lessons';
@@ -35,10 +37,26 @@ export function createMenu(app, { open, openText }) {
   const chooseBtn = el('button', '', 'Open a lesson file…');
   const pasteBtn = el('button', 'primary', 'Open pasted lesson');
   const mclose = el('button', '', 'Close');
+  const lmsBtn = el('button', 'lms', 'Download for an LMS (SCORM)…');
+  let packageDialog = null;
+  lmsBtn.addEventListener('click', async () => {
+    try {
+      packageDialog ??= import('./package-dialog.js').then((m) => m.createPackageDialog(app, current));
+      menu.hidden = true;
+      (await packageDialog).open();
+    } catch (e) {
+      packageDialog = null;
+      app.showError(`Could not load the package dialog (${e.message}).`);
+    }
+  });
   mrow.append(chooseBtn, pasteBtn, mclose);
+  // Under the list it packages, on a row of its own.
+  const lmsRow = el('div', 'row lms-row');
+  lmsRow.hidden = document.documentElement.dataset.lessonPackage === '1';
+  lmsRow.append(lmsBtn);
   const mnote = el('p', 'small');
   mnote.append('A lesson is a JSON file (format: ', Object.assign(el('a', '', 'lessons/README.md'), { href: new URL('README.md', BASE).href, target: '_blank' }), '); a link with ', el('code', '', '?lesson=name'), ' opens lessons/name.json.');
-  mcard.append(el('h2', '', 'Lessons'), list, paste, mrow, mnote, fileInput);
+  mcard.append(el('h2', '', 'Lessons'), list, lmsRow, paste, mrow, mnote, fileInput);
   menu.append(mcard);
   document.body.append(menu);
 

@@ -6,9 +6,10 @@
 //
 // startLessons(app) returns the player; main.js exposes it as window.screwbender.lessons:
 //   ready: Promise               settles once ?lesson= or the first-visit tour has been handled
-//   open(name, {resume}): Promise<boolean>   loads lesson <name>: an id of lessons/index.json (`screw`),
+//   open(name, {resume, progress}): Promise<boolean>   loads lesson <name>: an id of lessons/index.json (`screw`),
 //                                a file name (`01-screw`, `01-screw.json`); false: a banner says why
-//   openText(text, source, {resume}): boolean   the same from a file's text (pasted, dropped)
+//   openText(text, source, {resume, progress}): boolean   the same from a file's text (pasted,
+//                                dropped); `progress` (progress.js) replaces the saved progress
 //   openMenu()                   shows the Lessons menu
 //   lesson, step                 the open lesson object and step index (null / -1 when closed)
 //   go(i), next(), prev(), close()  (next() after the last step shows the summary; once more closes)
@@ -17,6 +18,14 @@
 //   check(): {ok, results}       runs the step's checks as the Check button does
 //   progress(id)                 the saved progress of lesson `id`
 //   spot(): {x, y, w, h} | null  where the highlight ring is (page px)
+//   events: EventTarget          what the learner does, for a host that records it (lms.js via
+//                                launch.js); each a CustomEvent whose detail has the lesson's `id`
+//                                and its `progress` ({step, solved, answers}, progress.js):
+//     'open'    a lesson was opened
+//     'step'    step `step` is shown
+//     'check'   the exercise of step `step` was checked: `ok`, `answer` (the chosen answer or
+//               null), `results` (checks.js)
+//     'finish'  the summary after the last step is shown: `solved`, `total`
 import { VIEW_IDS } from '../views/index.js';
 import { parseLesson } from './format.js';
 import { readProgress, writeProgress, markTourSeen, tourSeen } from './progress.js';
@@ -41,11 +50,16 @@ export function startLessons(app) {
   };
 
   // The open lesson, its step, the step's chosen answer and hints shown, and its saved progress.
-  const st = { lesson: null, step: -1, answer: null, hintShown: 0, progress: null };
+  const st = { lesson: null, step: -1, answer: null, hintShown: 0, progress: null, emit };
+  const events = new EventTarget();
+  /** Tells listeners of player.events about `type` (see the file's head). */
+  function emit(type, detail = {}) {
+    events.dispatchEvent(new CustomEvent(type, { detail: { id: st.lesson?.id, progress: st.progress, ...detail } }));
+  }
   const card = createCard();
   const exercise = createExercise(app, card.exercise, card.bar, st, card.fit);
   const highlight = createHighlight(app, card);
-  const menu = createMenu(app, { open, openText });
+  const menu = createMenu(app, { open, openText, current: () => st.lesson?.id ?? null });
 
   const player = {
     get lesson() {
@@ -71,6 +85,7 @@ export function startLessons(app) {
     /** Where the card is placed: {x, y, w, h} (page px) or null. */
     box: highlight.box,
     openMenu: menu.open,
+    events,
   };
 
   /**
@@ -80,7 +95,7 @@ export function startLessons(app) {
   const lessonError = (message) => app.showError(message, 'error', 'lesson');
 
   /** Opens lesson `name`: an id of lessons/index.json or a file (see lessonUrl); false (and a banner) if it cannot. */
-  async function open(name, { resume = true } = {}) {
+  async function open(name, { resume = true, progress = null } = {}) {
     const url = lessonUrl(await resolveLessonName(name));
     if (!url) {
       lessonError(`Lesson "${name}": only files under lessons/ on this site can be opened by name. Nothing was changed.`);
@@ -95,7 +110,7 @@ export function startLessons(app) {
       lessonError(`Lesson ${url.pathname.split('/').pop()}: could not load it (${e.message}). Nothing was changed.`);
       return false;
     }
-    if (!openText(text, url.pathname.split('/').pop(), { resume })) return false;
+    if (!openText(text, url.pathname.split('/').pop(), { resume, progress })) return false;
     // A `metric` check measures in the analysis module: fetched now, before the first Check.
     if (measures(st.lesson)) await app.analysis().catch((e) => app.showError(`${e.message}: this lesson's checks cannot measure the motion.`));
     return true;
@@ -107,7 +122,7 @@ export function startLessons(app) {
   }
 
   /** Opens a lesson from its text; `source` names it in messages. */
-  function openText(text, source = 'lesson', { resume = true } = {}) {
+  function openText(text, source = 'lesson', { resume = true, progress = null } = {}) {
     let parsed;
     try {
       parsed = parseLesson(text, ctx);
@@ -118,13 +133,14 @@ export function startLessons(app) {
     app.parts.notices.clear('lesson');
     menu.hide();
     st.lesson = parsed;
-    st.progress = readProgress(st.lesson.id);
+    st.progress = progress ?? readProgress(st.lesson.id);
     const opening = card.card.hidden;
     card.card.hidden = false;
     document.body.classList.add('lesson-open');
     if (opening) relayout();
     card.card.classList.toggle('tour', !!st.lesson.tour);
     card.lessonTitle.textContent = st.lesson.title;
+    emit('open');
     go(resume ? Math.min(st.progress.step, st.lesson.steps.length - 1) : 0);
     if (measures(st.lesson)) app.analysis().catch(() => {});
     return true;
@@ -152,6 +168,7 @@ export function startLessons(app) {
     const next = await nextLesson();
     if (st.lesson !== lesson) return;
     st.summary = card.renderSummary(st, { next, goTo: go });
+    emit('finish', { ...st.summary });
     card.card.dataset.step = 'summary';
     highlight.place();
   }
@@ -177,6 +194,7 @@ export function startLessons(app) {
     }
     card.render(st, exercise.render);
     card.card.dataset.step = String(i);
+    emit('step', { step: i });
     // The card's size is the new step's now: place it (and the ring) again.
     highlight.place();
   }
