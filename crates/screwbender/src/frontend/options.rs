@@ -75,9 +75,12 @@ pub fn rules_display(rules: &Rules) -> &'static str {
     }
 }
 
-/// A number as a message shows it (no `1e300` written out in full).
+/// A number as a message shows it: as JavaScript writes it for the values a user types
+/// (`Infinity`, not Rust's `inf`), and no `1e300` written out in full.
 fn shown(v: f64) -> String {
-    if v.is_finite() && v.abs() < 1e21 {
+    if v.is_infinite() {
+        if v > 0.0 { "Infinity" } else { "-Infinity" }.into()
+    } else if v.is_nan() || v.abs() < 1e21 {
         v.to_string()
     } else {
         format!("{v:e}")
