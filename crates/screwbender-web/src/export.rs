@@ -14,8 +14,7 @@ use super::files::set;
 use super::MotionHandle;
 use screwbender::mesh::Mesh;
 use screwbender::{
-    export_motion, Error, ErrorKind, ExportFormat, ExportSettings, PresetObject, SamplingMode,
-    DEFAULT_TOLERANCE, MAX_GLTF_BYTES,
+    export_motion, Error, ErrorKind, ExportFormat, ExportSettings, PresetObject, MAX_GLTF_BYTES,
 };
 
 #[wasm_bindgen(typescript_custom_section)]
@@ -174,19 +173,7 @@ impl MotionHandle {
         )?;
         let input: ExportInput = from_js(&settings, "settings", "export settings")?;
         let format = ExportFormat::parse(&input.format, "format")?;
-        let sampling = match (input.tolerance, input.fps) {
-            (Some(_), Some(_)) => return Err(Error::new(
-                "fps",
-                ErrorKind::Unsupported {
-                    reason:
-                        "give either tolerance (adaptive sampling) or fps (fixed rate), not both"
-                            .into(),
-                },
-            )
-            .into()),
-            (_, Some(fps)) => SamplingMode::FixedRate(fps),
-            (t, None) => SamplingMode::Adaptive(t.unwrap_or(DEFAULT_TOLERANCE)),
-        };
+        let sampling = screwbender::frontend::export::sampling(input.tolerance, input.fps)?;
         let imported = mesh_input(&settings)?;
         let (doc, sub) = self.snapshot()?;
         // `scene:<id>` is a preset's whole object (its morph, the bunny), not only its shape:
