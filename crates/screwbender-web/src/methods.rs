@@ -14,10 +14,9 @@ use super::motion::sample_parameters;
 use super::MotionHandle;
 use screwbender::frontend::compare::MAX_BODY_POINTS;
 use screwbender::methods::{
-    compare_methods, fit_barr, fit_quaternion_spline, interpolation_error, kinematics_at,
-    single_step_metrics, triangle_samples, BarrOptions, Continuity, Derivatives, EndCondition,
-    Method, MetricsOptions, RationalMotion, RbOptions, ReferenceTriangle, Side, SingleStepMetrics,
-    TRIANGLE_STRIDE,
+    fit_barr, fit_quaternion_spline, interpolation_error, kinematics_at, single_step_metrics,
+    triangle_samples, BarrOptions, Continuity, Derivatives, EndCondition, Method, MetricsOptions,
+    RationalMotion, RbOptions, ReferenceTriangle, Side, SingleStepMetrics, TRIANGLE_STRIDE,
 };
 use screwbender::{
     Error, ErrorKind, Motion, MotionDocument, Pose, Scheme, ScrewBender, Subdivision,
