@@ -377,7 +377,7 @@ impl Mesh {
             .expect("the bundled bunny parses")
     }
 
-    /// The Stanford bunny from the OBJ text of `assets/bunny.obj`, scaled as [`Mesh::bunny`]
+    /// The Stanford bunny from the OBJ text of `assets/bunny.obj`, scaled as `Mesh::bunny`
     /// scales the compiled-in copy: builds without the `bunny` feature (the page's wasm, which
     /// fetches the file instead of carrying it) make the very same mesh from the same text.
     /// Errors: those of [`Mesh::from_obj`].
