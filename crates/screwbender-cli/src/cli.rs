@@ -419,9 +419,9 @@ pub struct ImportArgs {
     /// The pose count kept on standard error
     #[arg(long, short)]
     pub verbose: bool,
-    /// every:K keeps every K-th pose (for dense keyframes, e.g. a sampled CSV); fit:TOL[:RADIUS]
-    /// keeps the fewest poses whose polyscrew stays within TOL of the given poses (at points up
-    /// to RADIUS from the origin; default 0: the origin)
+    /// every:K keeps every K-th pose (for dense keyframes, e.g. a sampled CSV); fit:TOL (or
+    /// fit:TOL:RADIUS) keeps the fewest poses whose polyscrew stays within TOL of the given poses
+    /// (at points up to RADIUS from the origin; default 0: the origin)
     #[arg(
         long,
         value_name = "every:K|fit:TOL[:RADIUS]",
