@@ -247,7 +247,7 @@ fn bad_input_exits_2_with_one_line() {
         (
             &["subdivide", "--levels", "99"],
             TWO_POSES,
-            "levels: the result would have",
+            "levels: 99 is out of range (expected a whole number from 0 to 19",
         ),
         (
             &["subdivide", "--levels"],
