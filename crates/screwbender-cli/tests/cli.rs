@@ -260,9 +260,9 @@ fn bad_input_exits_2_with_one_line() {
             "--s: 'nan' is not a finite number",
         ),
         (
-            &["subdivide", "--s", "0.5", "--scheme", "jarek"],
+            &["subdivide", "--s", "0.3", "--scheme", "jarek"],
             TWO_POSES,
-            "either --scheme or --s",
+            "s: s = 0.3 contradicts scheme 'jarek'",
         ),
         (
             &["subdivide", "--s", "0.5", "--rules", "split"],
