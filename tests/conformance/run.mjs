@@ -1,7 +1,7 @@
 // The conformance suite: one table of cases (cases.json) through every front end — the npm
 // package's wasm API in Node, the playground page in Chromium, the command line and Python —
 // whose results must agree: errors word for word, files byte for byte, numbers to 1e-12
-// (relative to the number's size where it is above 1).
+// (relative to the number's size where it is above 1; comparison tables to 1e-7, see TOLERANCE).
 //
 //   node tests/conformance/run.mjs                  # all four front ends
 //   CONFORMANCE_FRONTENDS=node,cli node tests/conformance/run.mjs
@@ -16,12 +16,19 @@ import { runPage } from './frontends/page.mjs';
 import { runPython } from './frontends/python.mjs';
 
 const RUNNERS = { node: runNode, cli: runCli, python: runPython, page: runPage };
-const TOLERANCE = 1e-12;
+/**
+ * Numbers agree to 1e-12 (relative above 1), but in the comparison tables to 1e-7: their metrics
+ * are differences of poses divided by the step squared (2^-18), so a last-bit difference of a
+ * pose — the wasm build's `sin`, `acos`, … are not the platform's — becomes ~1e-11 of an
+ * acceleration, and Ramamoorthi–Barr's optimiser takes its own path from there.
+ */
+const TOLERANCE = { options: 1e-12, compare: 1e-7, export: 0 };
+let tolerance = TOLERANCE.options;
 
-/** Differences between `a` and `b` (paths where they disagree), numbers to TOLERANCE. */
+/** Differences between `a` and `b` (paths where they disagree), numbers to `tolerance`. */
 function differences(a, b, at = '', out = []) {
   if (typeof a === 'number' && typeof b === 'number') {
-    if (!(Math.abs(a - b) <= TOLERANCE * Math.max(1, Math.abs(a), Math.abs(b)) || (a === b))) out.push(`${at}: ${a} vs ${b}`);
+    if (!(Math.abs(a - b) <= tolerance * Math.max(1, Math.abs(a), Math.abs(b)) || (a === b))) out.push(`${at}: ${a} vs ${b}`);
   } else if (Array.isArray(a) && Array.isArray(b)) {
     if (a.length !== b.length) out.push(`${at}: length ${a.length} vs ${b.length}`);
     else a.forEach((v, i) => differences(v, b[i], `${at}[${i}]`, out));
@@ -59,6 +66,7 @@ for (const name of names) {
 }
 const [first, ...others] = names.filter((n) => results[n]);
 for (const kind of ['options', 'compare', 'export']) {
+  tolerance = TOLERANCE[kind];
   for (const c of CASES[kind]) {
     const want = c.expect;
     const problems = [];
