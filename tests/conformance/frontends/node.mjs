@@ -18,16 +18,16 @@ export async function runNode() {
   };
   for (const c of CASES.options) {
     out.options[c.id] = attempt(() => {
-      const m = Motion.fromJson(presetDocument(c.preset), c.options);
+      const m = new Motion(JSON.parse(presetDocument(c.preset)), c.options);
       return { ...m.options(), ...poseSummary(m.subdivide()) };
     });
   }
   for (const c of CASES.compare) {
-    out.compare[c.id] = attempt(() => Motion.fromJson(presetDocument(c.preset)).compareMethods(c.methods ?? undefined));
+    out.compare[c.id] = attempt(() => new Motion(JSON.parse(presetDocument(c.preset))).compareMethods(c.methods ?? undefined));
   }
   for (const c of CASES.export) {
     out.export[c.id] = attempt(() => {
-      const f = Motion.fromJson(presetDocument(c.preset)).exportFile({ format: c.format });
+      const f = new Motion(JSON.parse(presetDocument(c.preset))).exportFile({ format: c.format });
       return { sha256: createHash('sha256').update(f.data).digest('hex'), bytes: f.data.length };
     });
   }

@@ -33,15 +33,15 @@ export async function runPage() {
         const out = { options: {}, compare: {}, export: {} };
         for (const c of cases.options) {
           out.options[c.id] = attempt(() => {
-            const m = Motion.fromJson(documents[c.preset], c.options);
+            const m = new Motion(JSON.parse(documents[c.preset]), c.options);
             return { ...m.options(), ...summary(m.subdivide()) };
           });
         }
         for (const c of cases.compare) {
-          out.compare[c.id] = attempt(() => Motion.fromJson(documents[c.preset]).compareMethods(c.methods ?? undefined));
+          out.compare[c.id] = attempt(() => new Motion(JSON.parse(documents[c.preset])).compareMethods(c.methods ?? undefined));
         }
         for (const c of cases.export) {
-          const f = attempt(() => Motion.fromJson(documents[c.preset]).exportFile({ format: c.format }));
+          const f = attempt(() => new Motion(JSON.parse(documents[c.preset])).exportFile({ format: c.format }));
           out.export[c.id] = f.error ? f : { sha256: await hex(f.data), bytes: f.data.length };
         }
         return out;

@@ -82,7 +82,9 @@ function copyOf(motion, Motion) {
   const options = motion.options();
   const key = `${json}\n${JSON.stringify(options)}`;
   if (copy?.source !== motion || copy.key !== key) {
-    const made = Motion.fromJson(json, options);
+    // Through JSON.parse (exact), not fromJson: the wasm module reads JSON numbers by a fast
+    // path that can land one unit in the last place off, and the copy must be the motion itself.
+    const made = new Motion(JSON.parse(json), options);
     copy?.motion.free();
     copy = { source: motion, key, motion: made };
   }
