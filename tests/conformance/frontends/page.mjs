@@ -10,11 +10,10 @@ export async function runPage() {
   const browser = await launch('webgpu');
   try {
     const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
-    const page = await openPage(context, url, 'webgpu');
-    await page.evaluate(() => window.screwbender.ready);
+    const { page, problems } = await openPage(context, url, 'webgpu');
     const presets = new Set([...CASES.options, ...CASES.compare, ...CASES.export].map((c) => c.preset));
     const documents = Object.fromEntries([...presets].map((id) => [id, presetDocument(id)]));
-    return await page.evaluate(
+    const out = await page.evaluate(
       async ({ cases, documents }) => {
         const { app, openView } = window.screwbender;
         const Motion = app.motion.constructor;
@@ -48,6 +47,8 @@ export async function runPage() {
       },
       { cases: CASES, documents },
     );
+    if (problems.length) throw new Error(`the page reported: ${problems.join('; ')}`);
+    return out;
   } finally {
     await browser.close();
     stop();
