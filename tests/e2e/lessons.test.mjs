@@ -183,7 +183,8 @@ test('the multiple-choice answers agree with what the wasm API measures', async 
   // Lesson 4: Jarek is s = 1/2.
   assert.equal(r.jarekS, 0.5);
   // Lesson 6 Q1: only SLERP jumps (by orders of magnitude); Q2: only ScrewBender is frame-independent.
-  assert.ok(r.vj.slerp > 1e3 * Math.max(r.vj.decoupled, r.vj.rb, r.vj.cc1), JSON.stringify(r.vj));
+  // Converged: SLERP's velocity jump is a value, the C¹ methods' tend to zero.
+  assert.ok(r.vj.slerp.limit === 'value' && r.vj.slerp.value > 1 && ['decoupled', 'rb', 'cc1'].every((m) => r.vj[m].limit === 'zero'), JSON.stringify(r.vj));
   assert.ok(r.fd.jarek < 1e-12 && r.fd.slerp > 1e-2 && r.fd.decoupled > 1e-2 && r.fd.rb > 1e-2, JSON.stringify(r.fd));
   // Lesson 6 text: Jarek's interpolation error "about 0.17".
   assert.ok(Math.abs(r.jarekInterp - 0.17) < 0.01, String(r.jarekInterp));

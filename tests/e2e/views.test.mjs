@@ -198,7 +198,7 @@ test(`${BACKEND}: Methods overlays three methods with metrics; the papers' claim
   assert.ok(rb.after < rb.before / 3, `EL ${rb.before} → ${rb.after}`);
   for (let k = 1; k < rb.stages.length; k++) assert.ok(rb.stages[k] <= rb.stages[k - 1] * (1 + 1e-12), 'objective never increases');
   assert.ok(rb.dev < 0.01, `| |q| − 1 | = ${rb.dev}`);
-  assert.ok(t.rows[0].angular_acceleration_energy < t.rows[2].angular_acceleration_energy * 3);
+  assert.ok(t.rows[0].angular_acceleration_energy.value < t.rows[2].angular_acceleration_energy.value * 3);
   // Choosing another method redraws; a method that does not apply to a cycle is disabled.
   await page.locator('#dock section[data-view=methods] select').nth(1).selectOption('kks');
   await sb(() => window.screwbender.flushViews());
