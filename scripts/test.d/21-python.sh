@@ -104,11 +104,11 @@ mkdir -p artifacts/python
 # maturin reads python/pyproject.toml (which names the crate's Cargo.toml) from its directory. It
 # runs zig as `python3 -m ziglang`: the venv's bin first on PATH. MATURIN_ARGS: also the sdist
 # test's (as MATURIN_PEP517_ARGS), so that its build reuses this one's compiled dependencies.
-MATURIN_ARGS="--release --zig --compatibility manylinux_2_28"
+MATURIN_ARGS="--zig --compatibility manylinux_2_28"
 timed "maturin build (abi3, manylinux_2_28, zig)" bash -c 'cd python && PATH="$1:$PATH" \
-  "$1/maturin" build $2 --quiet -o ../artifacts/python --interpreter "$1/python"' \
+  "$1/maturin" build --release $2 --quiet -o ../artifacts/python --interpreter "$1/python"' \
   _ "$venv/bin" "$MATURIN_ARGS"
-timed "maturin sdist" bash -c 'cd python && "$1" sdist --quiet -o ../artifacts/python' _ "$venv/bin/maturin"
+timed "maturin sdist" bash -c 'cd python && "$1" sdist         -o ../artifacts/python' _ "$venv/bin/maturin"
 wheel=$(ls artifacts/python/screwbender-*.whl)
 sdist=$(ls artifacts/python/screwbender-*.tar.gz)
 check_wheel_tag "$wheel"
