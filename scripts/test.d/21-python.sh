@@ -52,7 +52,8 @@ check_wheel_tag() {
   log "wheel tag: $name (the newest glibc symbol it needs: $newest_glibc)"
 }
 
-# test_wheel_on PYTHON: the wheel, requirements-compat.txt, tests in a clean venv.                                           
+# test_wheel_on PYTHON: the wheel and requirements-compat.txt in a clean venv of PYTHON;
+# then the tests, not notebook ones.
 test_wheel_on() {
   local py=$1 label dir
   label=$("$py" -c 'import platform; print(platform.python_version())')
