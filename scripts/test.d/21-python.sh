@@ -106,6 +106,10 @@ mkdir -p artifacts/python
 # runs zig as `python3 -m ziglang`: the venv's bin first on PATH. MATURIN_ARGS: also the sdist
 # test's (as MATURIN_PEP517_ARGS), so that its build reuses this one's compiled dependencies.
 MATURIN_ARGS="--zig --compatibility manylinux_2_28"
+# zig's linker drops the whole symbol table for the strip-debug flag that cargo's release profile
+# passes by default (`strip = "debuginfo"`), and the lanes check below reads the symbols: no
+# strip for these builds (the sdist test's included, so that it reuses this build).
+export CARGO_PROFILE_RELEASE_STRIP=none
 timed "maturin build (abi3, manylinux_2_28, zig)" bash -c 'cd python && PATH="$1:$PATH" \
   "$1/maturin" build --release $2 --quiet -o ../artifacts/python --interpreter "$1/python"' \
   _ "$venv/bin" "$MATURIN_ARGS"
