@@ -82,3 +82,32 @@ www_unlock() {
 as_root() {
   if ((EUID == 0)); then "$@"; else sudo "$@"; fi
 }
+
+# python_at X.Y: the path of CPython X.Y: pyenv's (`pyenv root`, default ~/.pyenv), else
+# pythonX.Y on PATH; fails when there is none.
+python_at() {
+  local root=${PYENV_ROOT:-$HOME/.pyenv} p
+  for p in "$root"/versions/"$1".*/bin/python"$1" "$(command -v "python$1" || true)"; do
+    [[ -n $p && -x $p ]] && { echo "$p"; return 0; }
+  done
+  return 1
+}
+
+# newest_python_version: the newest X.Y of CPython 3 that python_at finds (empty if none).
+newest_python_version() {
+  local root=${PYENV_ROOT:-$HOME/.pyenv} v
+  {
+    for v in "$root"/versions/3.*; do
+      [[ -d $v ]] && basename "$v" | grep -oE '^3\.[0-9]+'
+    done
+    compgen -c python3. | grep -oE '^python3\.[0-9]+$' | sed 's/^python//'
+  } | sort -uV | tail -n1
+}
+
+# missing_python WHAT: no interpreter for WHAT: fails on CI, a loud warning elsewhere.
+missing_python() {
+  if [[ ${CI:-} == true ]]; then
+    die "no CPython $1 on this machine (pyenv's versions are part of the machine image)"
+  fi
+  log "WARNING: no CPython $1 here: what needs it is NOT tested (CI fails on this)"
+}

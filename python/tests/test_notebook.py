@@ -31,6 +31,9 @@ def test_the_course_notebook_runs(executed):
     assert not [o for o in outputs if o.output_type == "error"]
     text = "".join(o.get("text", "") for o in outputs if o.output_type == "stream")
     assert "largest difference from ScrewTrajectory" in text
+    # A former name (e.g. `kinematics` for `kinematics_at`) warns on the cell's line, which a
+    # kernel prints to the cell's stderr: the course teaches the current names only.
+    assert "DeprecationWarning" not in text
     assert any("image/png" in o.get("data", {}) for o in outputs), "the speed plot"
     assert any("application/vnd.jupyter.widget-view+json" in o.get("data", {}) for o in outputs), "the figure"
 

@@ -2,15 +2,23 @@
 # Stage: the Python package `screwbender` (python/, the PyO3 crate crates/screwbender-py).
 #
 # Installs a virtual environment in .venv/ (ignored) with the pinned python/requirements-dev.txt
-# (maturin, numpy, pytest, modern_robotics, pytransform3d, the notebook stack), builds the wheel
-# with maturin (release) into artifacts/python/, installs that wheel into the venv, checks that
-# its SIMD lanes are inlined (scripts/check-lanes-inlined.sh), and runs
-# pytest on python/tests: the CLI's poses bit for bit (the CLI as the native test stage built
-# it: scripts/lib.sh `test_cli`), the reference libraries, bad input, files,
-# the notebook figure, the course notebook and, when a figure bundle exists, JupyterLab in
-# headless Chromium.
+# (maturin, zig, numpy, pytest, modern_robotics, pytransform3d, the notebook stack), builds into
+# artifacts/python/ the one wheel (release, stable ABI: tag cp39-abi3, linked by zig against
+# glibc 2.28: tag manylinux_2_28, both checked) and the sdist, installs that wheel into the venv,
+# checks that its SIMD lanes are inlined (scripts/check-lanes-inlined.sh), and runs pytest on
+# python/tests: the CLI's poses bit for bit (the CLI as the native test stage built it:
+# scripts/lib.sh `test_cli`), the reference libraries, bad input, files, the notebook figure,
+# the course notebook and, when a figure bundle exists, JupyterLab in headless Chromium.
 #
-#   PYTHON=python3.12 scripts/test.d/21-python.sh    # another interpreter (default python3)
+# Then the same wheel in clean virtual environments of the oldest CPython the package supports
+# (3.9) and the newest one on the machine (pyenv's, part of the machine image, or pythonX.Y on
+# PATH), with python/requirements-compat.txt: the package's tests on each but the notebook and
+# browser ones (they test the Jupyter stack and the JS bundle, the same on every CPython). Last,
+# the sdist builds a wheel in the newest one (cargo offline, its dependencies from this build's
+# target directory) and that wheel is imported and used. With CI=true a missing interpreter fails
+# the stage; elsewhere it is a warning and that interpreter is left out.
+#
+#   PYTHON=python3.12 scripts/test.d/21-python.sh    # another interpreter for .venv (default python3)
 #
 # It runs beside the next stages (scripts/test.sh): its install, JupyterLab's start and the
 # browser's waits leave a core idle much of the time. It needs www/'s modules: it starts before
@@ -23,6 +31,66 @@ source "$(dirname "${BASH_SOURCE[0]}")/../lib.sh"
 cd "$REPO_ROOT"
 
 venv=$REPO_ROOT/.venv
+
+# check_wheel_tag WHEEL: the tag is cp39-abi3 and manylinux_2_28 for this machine's
+# architecture, and the extension module asks for no glibc symbol version newer than 2.28 (the
+# tag's promise, which pip takes on trust).
+check_wheel_tag() {
+  local name newest_glibc
+  name=$(basename "$1")
+  [[ $name == screwbender-*-cp39-abi3-manylinux_2_28_$(uname -m).whl ]] ||
+    die "the wheel is $name: wanted the tag cp39-abi3-manylinux_2_28_$(uname -m)"
+  command -v objdump >/dev/null || die "objdump is missing (Debian: binutils)"
+  mkdir -p "$REPO_ROOT/artifacts/python/unpacked"
+  "$venv/bin/python" -m zipfile -e "$1" "$REPO_ROOT/artifacts/python/unpacked"
+  newest_glibc=$(objdump -T "$REPO_ROOT"/artifacts/python/unpacked/screwbender/_screwbender*.so |
+    grep -o 'GLIBC_[0-9.]*' | sort -uV | tail -n1)
+  rm -rf "$REPO_ROOT/artifacts/python/unpacked"
+  [[ -n $newest_glibc ]] || die "no GLIBC_ symbol versions in the extension module of $name"
+  [[ $(printf '%s\n' "$newest_glibc" GLIBC_2.28 | sort -V | tail -n1) == GLIBC_2.28 ]] ||
+    die "$name needs $newest_glibc, newer than its tag's glibc 2.28"
+  log "wheel tag: $name (the newest glibc symbol it needs: $newest_glibc)"
+}
+
+# test_wheel_on PYTHON: the wheel and requirements-compat.txt in a clean venv of PYTHON;
+# then the tests, not notebook ones.
+test_wheel_on() {
+  local py=$1 label dir
+  label=$("$py" -c 'import platform; print(platform.python_version())')
+  dir=$compat/$label
+  timed "venv of CPython $label" "$py" -m venv "$dir"
+  timed "pip install the wheel (CPython $label)" "$dir/bin/pip" install --quiet \
+    --disable-pip-version-check "$wheel" -r python/requirements-compat.txt
+  (
+    cd python/tests
+    timed "pytest (CPython $label)" "$dir/bin/python" -m pytest -q -p no:cacheprovider \
+      --rootdir=. . --ignore=test_jupyterlab.py --ignore=test_notebook.py \
+      --ignore=test_marimo.py \
+      -k "not static_page and not static_copies"
+  )
+}
+
+# test_sdist_on PYTHON: `pip wheel` of the sdist in PYTHON's venv (made by test_wheel_on):
+# maturin from PyPI in pip's build isolation, cargo offline with this build's target directory
+# (only the project's two crates compile again); the wheel it makes is installed and used.
+test_sdist_on() {
+  local label dir built
+  label=$("$1" -c 'import platform; print(platform.python_version())')
+  dir=$compat/$label
+  timed "pip wheel the sdist (CPython $label)" env CARGO_NET_OFFLINE=true \
+    CARGO_TARGET_DIR="$(cargo_target_dir)" MATURIN_PEP517_ARGS="$MATURIN_ARGS" \
+    PATH="$venv/bin:$PATH" "$dir/bin/pip" wheel --quiet --disable-pip-version-check --no-deps \
+    -w "$compat/from-sdist" "$sdist"
+  built=$(ls "$compat"/from-sdist/screwbender-*.whl)
+  "$dir/bin/pip" install --quiet --disable-pip-version-check --force-reinstall --no-deps "$built"
+  (cd / && "$dir/bin/python" -c '
+import screwbender as sb
+m = sb.Motion.from_preset("l_cycle_rotated", levels=3)
+rows = m.subdivide()
+assert rows.shape == (len(m) * 8, 7), rows.shape
+print("from the sdist:", sb.__file__, rows.shape)')
+  log "sdist: $(basename "$built") built from $(basename "$sdist") and imported"
+}
 ./scripts/python-env.sh
 
 SCREWBENDER_CLI=$(timed "the CLI (the reference)" test_cli)
@@ -34,10 +102,21 @@ fi
 
 rm -rf artifacts/python
 mkdir -p artifacts/python
-# maturin reads python/pyproject.toml (which names the crate's Cargo.toml) from its directory.
-timed "maturin build --release" bash -c 'cd python && "$1" build --release --quiet \
-  -o ../artifacts/python --interpreter "$2"' _ "$venv/bin/maturin" "$venv/bin/python"
+# maturin reads python/pyproject.toml (which names the crate's Cargo.toml) from its directory. It
+# runs zig as `python3 -m ziglang`: the venv's bin first on PATH. MATURIN_ARGS: also the sdist
+# test's (as MATURIN_PEP517_ARGS), so that its build reuses this one's compiled dependencies.
+MATURIN_ARGS="--zig --compatibility manylinux_2_28"
+# zig's linker drops the whole symbol table for the strip-debug flag that cargo's release profile
+# passes by default (`strip = "debuginfo"`), and the lanes check below reads the symbols: no
+# strip for these builds (the sdist test's included, so that it reuses this build).
+export CARGO_PROFILE_RELEASE_STRIP=none
+timed "maturin build (abi3, manylinux_2_28, zig)" bash -c 'cd python && PATH="$1:$PATH" \
+  "$1/maturin" build --release $2 --quiet -o ../artifacts/python --interpreter "$1/python"' \
+  _ "$venv/bin" "$MATURIN_ARGS"
+timed "maturin sdist" bash -c 'cd python && "$1" sdist         -o ../artifacts/python' _ "$venv/bin/maturin"
 wheel=$(ls artifacts/python/screwbender-*.whl)
+sdist=$(ls artifacts/python/screwbender-*.tar.gz)
+check_wheel_tag "$wheel"
 timed "pip install the wheel" "$venv/bin/pip" install --quiet --disable-pip-version-check \
   --force-reinstall --no-deps "$wheel"
 
@@ -52,4 +131,22 @@ header "pytest python/tests"
 cd "$REPO_ROOT/python/tests"
 timed "pytest" "$venv/bin/python" -m pytest -q -p no:cacheprovider \
   --rootdir="$REPO_ROOT/python/tests" .
-log "python: $(basename "$wheel") built and tested"
+cd "$REPO_ROOT"
+
+header "the wheel on the oldest and the newest CPython, and the sdist"
+compat=$(mktemp -d)
+trap 'rm -rf "$compat"' EXIT
+oldest=$(python_at 3.9) || missing_python "3.9 (the oldest that python/pyproject.toml allows)"
+newest_version=$(newest_python_version)
+newest=
+if [[ -n $newest_version && $newest_version != 3.9 ]]; then
+  newest=$(python_at "$newest_version")
+else
+  missing_python "newer than 3.9"
+fi
+for py in $oldest $newest; do
+  test_wheel_on "$py"
+done
+[[ -n $newest ]] && test_sdist_on "$newest"
+log "python: $(basename "$wheel") and $(basename "$sdist") built and tested" \
+  "(wheel $(stat -c %s "$wheel") B, sdist $(stat -c %s "$sdist") B)"

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Stage: the Blender extension (blender/) in Blender 4.5 LTS, headless: `bpy` from PyPI in a
+# virtual environment of CPython 3.11 (.venv-blender/, ignored; pinned tests/blender/
+# requirements.txt), the extension zipped with the abi3 wheel that the Python stage built
+# (scripts/build-blender-extension.sh), then pytest on tests/blender: the extension installed
+# through Blender's own installer, its operators against the Python package, and the CLI's .glb
+# exports (the CLI as the native test stage built it) through Blender's glTF importer.
+#
+# It runs beside the next stages (scripts/test.sh), after the Python stage (whose wheel it
+# bundles): the bpy install is mostly waiting on the disk and the network. With CI=true a
+# missing CPython 3.11 fails the stage; elsewhere it is a warning and the stage does nothing.
+# test.sh: beside the next stages
+set -euo pipefail
+# shellcheck source=scripts/lib.sh
+source "$(dirname "${BASH_SOURCE[0]}")/../lib.sh"
+cd "$REPO_ROOT"
+
+if ! py=$(python_at 3.11); then
+  missing_python "3.11 (Blender 4.5's, for bpy)"
+  exit 0
+fi
+venv=$REPO_ROOT/.venv-blender
+if [[ ! -x $venv/bin/python ]]; then
+  timed "venv of CPython 3.11" "$py" -m venv "$venv"
+fi
+timed "pip install bpy (pinned)" "$venv/bin/pip" install --quiet --disable-pip-version-check \
+  -r tests/blender/requirements.txt
+
+SCREWBENDER_BLENDER_ZIP=$(timed "the extension zip" ./scripts/build-blender-extension.sh)
+SCREWBENDER_CLI=$(timed "the CLI (the reference)" test_cli)
+export SCREWBENDER_BLENDER_ZIP SCREWBENDER_CLI
+
+header "pytest tests/blender"
+timed "pytest (Blender $("$venv/bin/pip" show bpy 2>/dev/null | sed -n 's/^Version: //p'))" \
+  "$venv/bin/python" -m pytest -q -p no:cacheprovider --rootdir=tests/blender tests/blender
