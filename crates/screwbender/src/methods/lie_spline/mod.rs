@@ -176,8 +176,8 @@ impl<G: LieGroup> LieBSpline<G> {
                 reason: format!(
                     "the interpolating {} B-spline found no control poses through these poses \
                      ({MAX_INTERPOLATION_ITERATIONS} iterations left a distance of {worst:.3e}): \
-                     its control poses would have to turn half a turn or more from one to the \
-                     next; add poses between those that turn most",
+                     a solution needs neighbouring control poses half a turn or more apart; add \
+                     poses between those that turn most",
                     G::NAME
                 ),
             },
