@@ -6,7 +6,7 @@ use std::str::FromStr;
 
 use pyo3::prelude::*;
 use screwbender::methods::Method;
-use screwbender::{Error, Motion, Pose};
+use screwbender::{Error, Pose};
 
 use crate::convert::{detached, flag, parameters, poses_from, poses_to_array, text, value_error};
 
