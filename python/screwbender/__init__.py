@@ -5,7 +5,7 @@ Control poses (a cycle or an open sequence) are smoothed by Split&Tweak subdivis
 Motions*): cubic B-spline, 4-point and Jarek schemes, the revised paper's ``"direct"`` rules and
 the first version's split-then-tweak rules (id ``"split"``), and the J_s family (parameter
 ``s``). :func:`compare_methods` measures the other methods of the comparison on the same poses,
-as ``screwbender compare --json``.
+as ``screwbender compare --json``; :func:`method_poses` evaluates one of them.
 
 Poses are numpy arrays: ``(n, 7)`` rows ``x y z qw qx qy qz`` (quaternions scalar first) or
 ``(n, 4, 4)`` homogeneous matrices, accepted everywhere a pose array is (so ``modern_robotics``,
@@ -31,6 +31,7 @@ from ._screwbender import (
     Motion,
     __version__,
     compare_methods,
+    method_poses,
     preset_descriptions,
     presets,
     screw,
@@ -42,6 +43,7 @@ __all__ = [
     "Motion",
     "__version__",
     "compare_methods",
+    "method_poses",
     "preset_descriptions",
     "presets",
     "screw",

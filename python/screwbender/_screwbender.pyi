@@ -21,8 +21,8 @@ RulesId = Literal["direct", "split"]
 RulesName = Literal["direct", "split", "split-then-tweak"]
 #: A method of the comparison (``compare_methods``).
 MethodName = Literal[
-    "polyscrew", "bspline", "fourpoint", "jarek", "slerp", "decoupled", "kks", "rb", "cc0",
-    "cc1", "barr",
+    "polyscrew", "bspline", "fourpoint", "jarek", "slerp", "decoupled", "kks", "se3bspline",
+    "se3interp", "splitinterp", "rb", "cc0", "cc1", "barr",
 ]
 PathLike = Union[str, "os.PathLike[str]"]
 
@@ -219,8 +219,9 @@ def compare_methods(
 
     ``methods``: ``None`` (every method that applies; one that does not support these poses is
     listed in ``skipped``), a list of names (``"polyscrew"``, ``"bspline"``, ``"fourpoint"``,
-    ``"jarek"``, ``"slerp"``, ``"decoupled"``, ``"kks"``, ``"rb"``, ``"cc0"``, ``"cc1"``,
-    ``"barr"``; case-insensitive, a name given twice is measured once) or one string of names
+    ``"jarek"``, ``"slerp"``, ``"decoupled"``, ``"kks"``, ``"se3bspline"``, ``"se3interp"``,
+    ``"splitinterp"``, ``"rb"``, ``"cc0"``, ``"cc1"``, ``"barr"``; ``"se3interp"``,
+    ``"splitinterp"`` and ``"barr"`` only when named; case-insensitive, a name given twice is measured once) or one string of names
     separated by commas (as the CLI's ``--methods``). ``body_points``: the local points whose
     trajectories are measured, ``(k, 3)`` with ``k`` from 1 to 16 (default ``(0, 0, 0)`` and
     ``(2, 0, 0)``). The CLI's extra ``objectives`` (when ``barr`` is named) are not computed.
@@ -229,6 +230,20 @@ def compare_methods(
     polyscrew, …)``); a named method that rejects the poses (``cc1`` on a cycle) raises
     ``ValueError`` prefixed with its name. Computed without the GIL; it takes a while (every
     metric is measured at several steps).
+    """
+
+def method_poses(
+    method: MethodName,
+    poses: PoseArray,
+    u: Parameters,
+    closed: bool = True,
+) -> FloatArray:
+    """The poses of one comparison method's motion through the control poses ``poses`` (pose
+    ``i`` at ``u = i``; ``closed``: a cycle of period ``n``, else an open sequence over
+    ``[0, n - 1]``) at the parameters ``u`` (a number -> ``(7,)``, an array -> ``u.shape +
+    (7,)``), rows ``x y z qw qx qy qz``. The motion each row of ``compare_methods`` measures, for
+    checks against other implementations. An unknown name or a method that rejects the poses
+    raises ``ValueError`` naming it. Computed without the GIL.
     """
 
 def presets() -> list[str]:

@@ -67,7 +67,8 @@ USAGE:
   screwbender compare [--methods a,b,c] [--json] [--open] [FILE]
                                                  metrics of the comparison methods on the poses
                                                  (polyscrew bspline fourpoint jarek slerp
-                                                 decoupled kks rb cc0 cc1; default: all that apply)
+                                                 decoupled kks se3bspline rb cc0 cc1; default: all
+                                                 that apply; se3interp splitinterp barr if named)
   screwbender rational [--continuity c0|c1] [--end 18|19] [--triangles [--closing-time T]] [FILE]
                                                  the Chaudhry–Cameron motion's rational Bézier
                                                  control points (JSON), from the poses or from a
@@ -302,8 +303,9 @@ pub struct PresetArgs {
 #[derive(clap::Args)]
 pub struct CompareArgs {
     /// Methods to compare, comma-separated or repeated: polyscrew bspline fourpoint jarek slerp
-    /// decoupled kks rb cc0 cc1, and barr (the discrete baseline's objective beside rb's; open
-    /// poses only); default: all that apply
+    /// decoupled kks se3bspline rb cc0 cc1; only when named: se3interp splitinterp (the
+    /// interpolating Lie-group B-splines) and barr (the discrete baseline's objective beside
+    /// rb's; open poses only); default: all that apply
     #[arg(long, value_name = "A,B,...", allow_hyphen_values = true)]
     pub methods: Vec<String>,
     /// The metrics as JSON instead of a table

@@ -6,6 +6,7 @@
 //! * [`screw`]: `screw(a, t, b)` for one pair or batches.
 //! * [`compare`]: `compare_methods`, the metrics of the comparison methods (as `screwbender
 //!   compare --json`).
+//! * [`method_poses`]: `method_poses`, one comparison method's poses at chosen parameters.
 //! * [`files`]: `Motion.load` / `Motion.export` in the CLI's formats.
 //! * [`convert`]: numpy arrays ↔ poses, with errors naming the element.
 //!
@@ -17,6 +18,7 @@
 pub mod compare;
 pub mod convert;
 pub mod files;
+pub mod method_poses;
 pub mod motion;
 pub mod screw;
 
@@ -43,6 +45,7 @@ fn _screwbender(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<motion::PyMotion>()?;
     m.add_function(wrap_pyfunction!(screw::screw, m)?)?;
     m.add_function(wrap_pyfunction!(compare::compare_methods, m)?)?;
+    m.add_function(wrap_pyfunction!(method_poses::method_poses, m)?)?;
     m.add_function(wrap_pyfunction!(presets, m)?)?;
     m.add_function(wrap_pyfunction!(preset_descriptions, m)?)?;
     m.add("MAX_REFINED_POSES", screwbender::MAX_REFINED_POSES)?;

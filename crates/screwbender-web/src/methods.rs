@@ -27,7 +27,8 @@ use screwbender::{
 const TS_METHODS: &'static str = r#"
 /** Names of the motion methods (see `methods()`). */
 export type MethodId =
-  'polyscrew' | 'bspline' | 'fourpoint' | 'jarek' | 'slerp' | 'decoupled' | 'kks' | 'rb' | 'cc0' | 'cc1' | 'barr';
+  'polyscrew' | 'bspline' | 'fourpoint' | 'jarek' | 'slerp' | 'decoupled' | 'kks' | 'se3bspline'
+  | 'se3interp' | 'splitinterp' | 'rb' | 'cc0' | 'cc1' | 'barr';
 
 /** A motion method of the comparison. */
 export interface MethodInfo {
@@ -215,6 +216,9 @@ fn title(m: Method) -> &'static str {
         Method::Slerp => "SLERP + linear translation",
         Method::Decoupled => "Decoupled: Catmull–Rom + Squad",
         Method::Kks => "Kim–Kim–Shin B-spline quaternions",
+        Method::Se3BSpline => "SE(3) cumulative B-spline",
+        Method::Se3Interp => "SE(3) cumulative B-spline, interpolating",
+        Method::SplitInterp => "R³ × SO(3) cumulative B-spline, interpolating",
         Method::Rb => "Ramamoorthi–Barr quaternion spline",
         Method::Cc0 => "Chaudhry–Cameron rational C⁰",
         Method::Cc1 => "Chaudhry–Cameron rational C¹ (18)",

@@ -1,7 +1,8 @@
 //! Benchmarks of the comparison methods: the Ramamoorthi–Barr construction on scene C1
 //! `rb_sphere7` (7 keyframes, zero end velocities, α = 1000, S = 5) up to 4 variable frames, the
 //! Chaudhry–Cameron fits of scene B1 `triangle7`, evaluation of each peer, and the whole metrics
-//! table on scene A2 `l_cycle_rotated`.
+//! table on scene A2 `l_cycle_rotated`; and on that scene the SE(3) cumulative B-spline evaluated
+//! at as many parameters as ScrewBender's B-spline subdivision makes poses at 17 levels (786 432).
 //!
 //! Run: `cargo bench --bench methods`. Inputs are fixed (scene data); nothing is random.
 //! Native only: criterion is not a wasm32 dependency, so on wasm32 this is an empty program.
@@ -14,9 +15,9 @@ mod native {
     use glam::{DQuat, DVec3};
     use screwbender::methods::{
         compare_methods, fit_quaternion_spline, Continuity, EndCondition, Method, MetricsOptions,
-        RationalMotion, RbOptions, ReferenceTriangle, TriangleSample,
+        RationalMotion, RbOptions, ReferenceTriangle, Se3BSpline, TriangleSample,
     };
-    use screwbender::{Motion, Pose};
+    use screwbender::{Motion, Pose, Rules, Scheme, ScrewBender, Subdivision};
 
     /// Scene C1's keyframes (`presets.md`), pose `i` at `t = i`.
     fn sphere7() -> (Vec<f64>, Vec<DQuat>) {
@@ -125,7 +126,52 @@ mod native {
         g.finish();
     }
 
-    criterion_group!(benches, ramamoorthi_barr, chaudhry_cameron, peers);
+    /// The SE(3) cumulative B-spline against ScrewBender's B-spline subdivision, both producing
+    /// `6 · 2¹⁷` poses of the cycle `l_cycle_rotated` (the ratio of the two is the figure of
+    /// interest: the spline costs three screws and three compositions per pose, subdivision a few
+    /// screws per refined pose and level, shared across the levels).
+    fn lie_spline(c: &mut Criterion) {
+        const LEVELS: u32 = 17;
+        let poses = l_cycle_rotated();
+        let count = poses.len() << LEVELS;
+        let mut g = c.benchmark_group("786432 poses on l_cycle_rotated");
+        g.sample_size(10);
+        let spline = Se3BSpline::new(&poses, true).unwrap();
+        let step = poses.len() as f64 / count as f64;
+        g.bench_function("se3bspline pose_at", |b| {
+            b.iter(|| {
+                (0..count).fold(DVec3::ZERO, |acc, i| {
+                    acc + spline.pose_at(black_box(i as f64 * step)).origin
+                })
+            })
+        });
+        g.bench_function("se3bspline kinematics_at", |b| {
+            b.iter(|| {
+                (0..count).fold(DVec3::ZERO, |acc, i| {
+                    acc + spline
+                        .kinematics_at(black_box(i as f64 * step), DVec3::ZERO)
+                        .unwrap()
+                        .acceleration
+                })
+            })
+        });
+        g.bench_function("bspline subdivision, 17 levels", |b| {
+            b.iter(|| {
+                let s = Subdivision::new(Scheme::BSpline, Rules::Direct, LEVELS);
+                let sb = ScrewBender::new(black_box(poses.clone()), true, s).unwrap();
+                sb.refined().poses().len()
+            })
+        });
+        g.finish();
+    }
+
+    criterion_group!(
+        benches,
+        ramamoorthi_barr,
+        chaudhry_cameron,
+        peers,
+        lie_spline
+    );
 }
 
 #[cfg(not(target_arch = "wasm32"))]

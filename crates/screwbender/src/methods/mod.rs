@@ -8,12 +8,14 @@
 //! | [`SlerpPolyline`] | SLERP + linear origins | C⁰ | yes | classical |
 //! | [`DecoupledSmooth`] | Squad + Catmull–Rom origins | C¹ | yes | Shoemake |
 //! | [`KimKimShin`] | cumulative B-spline quaternions + B-spline origins | C² | no (ends only) | Kim, Kim & Shin 1995 |
+//! | [`Se3BSpline`] | cumulative cubic B-spline on SE(3), approximating or interpolating | C² | variant | Lovegrove et al. 2013; Sommer et al. 2020 |
+//! | [`SplitBSpline`] | cumulative cubic B-spline on R³ × SO(3) (approximating: the same motion as [`KimKimShin`]), or interpolating | C² | variant | the same, split |
 //! | [`RamamoorthiBarr`] | covariant-acceleration-optimal Hermite quaternion spline + Catmull–Rom origins | C¹ | yes | Ramamoorthi & Barr |
 //! | [`RationalMotion`] | rational quadratic / quartic rigid-triangle motion | C⁰ / C¹ | yes | Chaudhry & Cameron |
 //! | [`BarrBaseline`] | the same objective as Ramamoorthi–Barr on dense discrete frames (small inputs) | C⁰ (dense) | yes | Barr, Currin, Gabriel & Hughes |
 //!
 //! [`Method`] names them all (`polyscrew`, `bspline`, `fourpoint`, `jarek`, `slerp`, `decoupled`,
-//! `kks`, `rb`, `cc0`, `cc1`) and builds each from control poses with pose `i` at `u = i`; the
+//! `kks`, `se3bspline`, `se3interp`, `splitinterp`, `rb`, `cc0`, `cc1`) and builds each from control poses with pose `i` at `u = i`; the
 //! metrics ([`compare_methods`], [`MetricsTable`]) measure velocity/acceleration jumps at the
 //! knots, integrated squared accelerations, interpolation error, dependence on the local frame
 //! and exact reproduction of line, circle and helix motions.
@@ -50,6 +52,7 @@ mod convergence;
 mod gauss;
 mod kim_kim_shin;
 mod lbfgs;
+mod lie_spline;
 mod metrics;
 mod polynomial;
 mod positions;
@@ -65,6 +68,11 @@ use crate::motion::Motion;
 // Methods and their registry.
 pub use catmull_rom_squad::DecoupledSmooth;
 pub use kim_kim_shin::KimKimShin;
+pub use lie_spline::group::{LieGroup, Se3, SplitSe3, SplitSegment, Twist};
+pub use lie_spline::{
+    BodyDerivatives, LieBSpline, Se3BSpline, SplitBSpline, INTERPOLATION_TOLERANCE,
+    MAX_INTERPOLATION_ITERATIONS,
+};
 pub use registry::{Method, Smoothness, COMPARISON_LEVELS};
 pub use slerp_polyline::SlerpPolyline;
 

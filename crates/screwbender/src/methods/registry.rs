@@ -5,6 +5,7 @@ use std::str::FromStr;
 
 use super::catmull_rom_squad::DecoupledSmooth;
 use super::kim_kim_shin::KimKimShin;
+use super::lie_spline::{Se3BSpline, SplitBSpline};
 use super::ramamoorthi_barr::barr::{BarrBaseline, BarrOptions};
 use super::ramamoorthi_barr::optimizer::{RamamoorthiBarr, RbOptions};
 use super::rational::{Continuity, EndCondition, RationalMotion};
@@ -50,6 +51,16 @@ pub enum Method {
     Decoupled,
     /// Kim–Kim–Shin B-spline quaternion curve + B-spline origins ([`KimKimShin`]).
     Kks,
+    /// Cumulative cubic B-spline on SE(3) with the poses as control poses ([`Se3BSpline`],
+    /// approximating).
+    Se3BSpline,
+    /// Cumulative cubic B-spline on SE(3) through the poses ([`Se3BSpline::interpolating`]; only
+    /// when named).
+    Se3Interp,
+    /// Cumulative cubic B-spline on R³ × SO(3), origins and rotations apart, through the poses
+    /// ([`SplitBSpline::interpolating`]; only when named). (The approximating one is
+    /// [`Method::Kks`]: the same motion.)
+    SplitInterp,
     /// Ramamoorthi–Barr quaternion spline + Catmull–Rom origins ([`RamamoorthiBarr`], default
     /// options, free end velocities).
     Rb,
@@ -65,7 +76,7 @@ pub enum Method {
 
 impl Method {
     /// Every method, in table order.
-    pub const ALL: [Method; 11] = [
+    pub const ALL: [Method; 14] = [
         Method::Polyscrew,
         Method::BSpline,
         Method::FourPoint,
@@ -73,6 +84,9 @@ impl Method {
         Method::Slerp,
         Method::Decoupled,
         Method::Kks,
+        Method::Se3BSpline,
+        Method::Se3Interp,
+        Method::SplitInterp,
         Method::Rb,
         Method::Cc0,
         Method::Cc1,
@@ -80,8 +94,8 @@ impl Method {
     ];
 
     /// The accepted names, for messages.
-    pub const NAMES: &'static str =
-        "polyscrew, bspline, fourpoint, jarek, slerp, decoupled, kks, rb, cc0, cc1, barr";
+    pub const NAMES: &'static str = "polyscrew, bspline, fourpoint, jarek, slerp, decoupled, kks, \
+                                     se3bspline, se3interp, splitinterp, rb, cc0, cc1, barr";
 
     /// The short name (as accepted by [`Method::from_str`]).
     pub fn name(self) -> &'static str {
@@ -93,6 +107,9 @@ impl Method {
             Method::Slerp => "slerp",
             Method::Decoupled => "decoupled",
             Method::Kks => "kks",
+            Method::Se3BSpline => "se3bspline",
+            Method::Se3Interp => "se3interp",
+            Method::SplitInterp => "splitinterp",
             Method::Rb => "rb",
             Method::Cc0 => "cc0",
             Method::Cc1 => "cc1",
@@ -110,7 +127,11 @@ impl Method {
             Method::FourPoint | Method::Jarek | Method::Decoupled | Method::Rb | Method::Cc1 => {
                 Smoothness::C1
             }
-            Method::BSpline | Method::Kks => Smoothness::C2,
+            Method::BSpline
+            | Method::Kks
+            | Method::Se3BSpline
+            | Method::Se3Interp
+            | Method::SplitInterp => Smoothness::C2,
         }
     }
 
@@ -120,12 +141,20 @@ impl Method {
         !matches!(self, Method::Cc1 | Method::Barr)
     }
 
-    /// The methods that apply to a closed or open input, in table order; the discrete baseline of
-    /// Barr et al. (costly, for small inputs) only when named.
+    /// Whether the method is compared only when named, never among [`Method::applicable`]: the
+    /// discrete baseline of Barr et al. (costly, for small inputs) and the interpolating Lie-group
+    /// B-splines (which have no solution where poses turn far between neighbours, see
+    /// [`Se3BSpline::interpolating`]).
+    pub fn only_when_named(self) -> bool {
+        matches!(self, Method::Barr | Method::Se3Interp | Method::SplitInterp)
+    }
+
+    /// The methods that apply to a closed or open input, in table order, without those compared
+    /// [`Method::only_when_named`].
     pub fn applicable(closed: bool) -> Vec<Method> {
         Method::ALL
             .into_iter()
-            .filter(|m| *m != Method::Barr && (!closed || m.supports_closed()))
+            .filter(|m| !m.only_when_named() && (!closed || m.supports_closed()))
             .collect()
     }
 
@@ -199,6 +228,9 @@ impl Method {
             Method::Slerp => Ok(Box::new(SlerpPolyline::new(poses, closed)?)),
             Method::Decoupled => Ok(Box::new(DecoupledSmooth::new(poses, closed)?)),
             Method::Kks => Ok(Box::new(KimKimShin::new(poses, closed)?)),
+            Method::Se3BSpline => Ok(Box::new(Se3BSpline::new(poses, closed)?)),
+            Method::Se3Interp => Ok(Box::new(Se3BSpline::interpolating(poses, closed)?)),
+            Method::SplitInterp => Ok(Box::new(SplitBSpline::interpolating(poses, closed)?)),
             Method::Rb => {
                 super::slerp_polyline::validated_poses(poses, closed)?;
                 Ok(Box::new(RamamoorthiBarr::from_poses(

@@ -22,6 +22,7 @@ mod mesh;
 mod methods_barr;
 mod methods_continuity;
 mod methods_converged;
+mod methods_lie_spline;
 mod methods_metrics;
 mod methods_peers;
 mod methods_quaternion_spline;

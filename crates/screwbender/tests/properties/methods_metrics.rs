@@ -25,8 +25,8 @@ fn method_names_round_trip() {
         matches!(e.kind(), ErrorKind::UnknownValue { .. } if e.path() == "methods"),
         "{e}"
     );
-    assert_eq!(Method::applicable(true).len(), 9);
-    assert_eq!(Method::applicable(false).len(), 10);
+    assert_eq!(Method::applicable(true).len(), 10);
+    assert_eq!(Method::applicable(false).len(), 11);
     let e = Method::Cc1.build(&l_cycle_rotated(), true).err().unwrap();
     assert!(matches!(e.kind(), ErrorKind::Unsupported { .. }), "{e}");
 }
@@ -150,7 +150,9 @@ fn table_reproduces_the_papers_claims_on_scene_a2() {
     .unwrap();
     let row = |name: &str| t.rows.iter().find(|r| r.method == name).unwrap();
     // ScrewBender and the polyscrew: independent of the local frame and exact on screw motions.
-    for name in ["polyscrew", "bspline", "fourpoint", "jarek"] {
+    // So is the cumulative B-spline on SE(3) (each piece a screw; the poses of a screw motion
+    // have equal twists, which the cumulative basis sums back to the screw).
+    for name in ["polyscrew", "bspline", "fourpoint", "jarek", "se3bspline"] {
         let r = row(name);
         assert!(r.frame_dependence.unwrap() < 1e-12, "{name}: {r:?}");
         for e in [r.line_error, r.circle_error, r.helix_error] {
@@ -171,7 +173,7 @@ fn table_reproduces_the_papers_claims_on_scene_a2() {
     for name in ["polyscrew", "fourpoint", "slerp", "decoupled", "rb", "cc0"] {
         assert!(row(name).interpolation_error < 1e-12, "{name}");
     }
-    for name in ["bspline", "jarek", "kks"] {
+    for name in ["bspline", "jarek", "kks", "se3bspline"] {
         assert!(row(name).interpolation_error > 0.1, "{name}");
     }
     // Continuity classes: tests/properties/methods_continuity.rs. Smoothness ordering of the
@@ -205,7 +207,7 @@ fn table_reproduces_the_papers_claims_on_scene_a2() {
         "{text}"
     );
     let json: serde_json::Value = serde_json::from_str(&t.to_json()).unwrap();
-    assert_eq!(json["rows"].as_array().unwrap().len(), 9);
+    assert_eq!(json["rows"].as_array().unwrap().len(), 10);
     assert_eq!(json["closed"], true);
 }
 
@@ -232,12 +234,12 @@ fn applicable_table_skips_unsupported_methods() {
     assert!(e.to_string().contains("segment 3"), "{e}");
     let t = screwbender::methods::compare_applicable(&poses, false, &MetricsOptions::default())
         .unwrap();
-    assert_eq!(t.rows.len(), 9);
+    assert_eq!(t.rows.len(), 10);
     assert!(t.skipped[0].starts_with("cc1"), "{:?}", t.skipped);
     assert!(t.to_text().contains("skipped cc1"));
     let e = compare_methods(&poses, false, &[Method::Cc1], &MetricsOptions::default()).unwrap_err();
     assert!(e.path().starts_with("cc1"), "{e}");
     let closed =
         screwbender::methods::compare_applicable(&poses, true, &MetricsOptions::default()).unwrap();
-    assert_eq!((closed.rows.len(), closed.skipped.len()), (9, 0));
+    assert_eq!((closed.rows.len(), closed.skipped.len()), (10, 0));
 }
