@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The Blender extension (blender/) as the zip that Blender installs (Preferences > Get Extensions >
 # Install from Disk): the Python package's abi3 wheel from artifacts/python/ (made by
-# scripts/test.d/21-python.sh, or `maturin build` as python/README.md says) copied under
+# scripts/test.d/python.sh, or `maturin build` as python/README.md says) copied under
 # blender/wheels/ (ignored), then blender/ zipped into artifacts/blender/, tests and caches left
 # out. Prints the zip's path.
 #
@@ -12,7 +12,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 cd "$REPO_ROOT"
 
 wheel=${1:-$(ls artifacts/python/screwbender-*-cp39-abi3-*.whl 2>/dev/null | head -n1 || true)}
-[[ -f $wheel ]] || die "no abi3 wheel in artifacts/python/: run scripts/test.d/21-python.sh first"
+[[ -f $wheel ]] || die "no abi3 wheel in artifacts/python/: run scripts/test.d/python.sh first"
 name=$(basename "$wheel")
 grep -qF "\"./wheels/$name\"" blender/blender_manifest.toml ||
   die "blender/blender_manifest.toml does not list ./wheels/$name (update its wheels list)"

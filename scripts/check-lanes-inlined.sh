@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The SIMD lanes are compiled in place: in FILE, a release build holding the core (x86-64), no
 # function calls an x86 intrinsic (`core::arch`'s `_mm512_mul_pd`, `_mm256_add_pd`, …) out of
-# line. The Python stage (scripts/test.d/21-python.sh) checks its extension module, a release
+# line. The Python stage (scripts/test.d/python.sh) checks its extension module, a release
 # build of the core it already made, rather than compiling a release CLI for this alone.
 #
 #   scripts/check-lanes-inlined.sh FILE

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The Python test environment: a virtual environment in .venv/ (ignored) with the pinned
-# python/requirements-dev.txt. Run by the Python stage (scripts/test.d/21-python.sh), and started
+# python/requirements-dev.txt. Run by the Python stage (scripts/test.d/python.sh), and started
 # early in the background by scripts/test.sh so that the install (mostly one core, and the
 # network on a fresh machine) runs beside the Rust stages; a lock makes the stage wait for it.
 #

@@ -4,7 +4,7 @@
 #   ./scripts/serve.sh                # port 8080, or the next free one
 #   PORT=9000 ./scripts/serve.sh      # exactly this port
 #   SKIP_BUILD=1 ./scripts/serve.sh   # serve what is already built
-#   BUILD_ONLY=1 ./scripts/serve.sh   # build www/ and exit (used by scripts/test.d/40-e2e.sh)
+#   BUILD_ONLY=1 ./scripts/serve.sh   # build www/ and exit (used by scripts/test.d/e2e.sh)
 #
 # Build: the page's three wasm modules (scripts/wasm-module.sh; pkg-gl and pkg-full are the npm
 # package's builds, so whichever of the two scripts runs second only copies them), then every

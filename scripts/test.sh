@@ -1,182 +1,197 @@
 #!/usr/bin/env bash
-# Run every test of the project, installing what is missing first (scripts/setup.sh).
+# Run every test of the project, installing what is missing first.
 #
-#   ./scripts/test.sh              # setup + all stages; fails fast on the first failing stage
-#   SKIP_SETUP=1 ./scripts/test.sh # skip the install checks (fast local reruns)
+#   ./scripts/test.sh                   # every stage: installs, then rust, web, python, e2e
+#   ./scripts/test.sh rust              # one lane (rust | web | python | e2e), with the stages
+#   ./scripts/test.sh web python        #   it needs from other lanes; several lanes at once
+#   ./scripts/test.sh --list [LANE…]    # the stages that would run, and nothing else
+#   SKIP_SETUP=1 ./scripts/test.sh …    # skip the install stages (fast local reruns)
 #
-# Stages: rustfmt, the core crate's dependency check, the import check (no circles, nothing
-# imported from a crate root), clippy (native + wasm32, with and without
-# `render`), native tests, doc tests, wasm tests (node, and headless Chromium for tests with
-# `wasm_bindgen_test_configure!(run_in_browser)`), then scripts/test.d/.
-#
-# scripts/test.d/: every executable `*.sh` there is one more stage, run in sorted (C locale)
-# order from the repo root after the Rust stages, with this script's environment (node_modules
-# installed, CHROMEDRIVER set, Chromium at /usr/bin/chromium). A stage fails by exiting non-zero.
-# Name them NN-what.sh (e.g. 10-npm-package.sh, 20-node-tests.sh, 50-e2e.sh) to fix the order.
-#
-# At the end (and after a failing stage) a table gives each stage's wall time; the last line is
-# `stages: N passed, M failed`.
+# The stages are declared in scripts/stages.txt: name, lane, how it runs (in the foreground, beside
+# the others, or alone) and the stages it needs. A stage fails by exiting non-zero, and the run
+# stops at the first failure it sees. At the end a table gives each stage's wall time and CPU
+# seconds, then the slowest tests, and the last line is `stages: N passed, M failed`.
 set -euo pipefail
 # shellcheck source=scripts/lib.sh
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 cd "$REPO_ROOT"
 
-if [[ ${SKIP_SETUP:-0} == 1 ]]; then
-  log "SKIP_SETUP=1: not checking installs"
-else
-  setup_start=$SECONDS
-  ./scripts/setup.sh
-  log "setup took $((SECONDS - setup_start)) s"
-fi
+list_only=0
+lanes=()
+for arg in "$@"; do
+  case $arg in
+    --list) list_only=1 ;;
+    rust | web | python | e2e) lanes+=("$arg") ;;
+    -h | --help)
+      sed -n '2,13p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+      exit 0
+      ;;
+    *) die "unknown lane or option '$arg' (lanes: rust web python e2e; options: --list)" ;;
+  esac
+done
 
-# wasm-bindgen-test-runner: drive Debian's Chromium through its ChromeDriver, with the extra
+# wasm-bindgen-test-runner drives Debian's Chromium through its ChromeDriver, with the extra
 # Chrome flags that enable WebGPU/WebGL on SwiftShader (no GPU here) and keep Chromium off the
 # network. SwiftShader is slow, hence the generous per-test-binary timeout (default 20 s).
 export CHROMEDRIVER=${CHROMEDRIVER:-/usr/bin/chromedriver}
 export WASM_BINDGEN_TEST_WEBDRIVER_JSON=${WASM_BINDGEN_TEST_WEBDRIVER_JSON:-$REPO_ROOT/webdriver.json}
 export WASM_BINDGEN_TEST_TIMEOUT=${WASM_BINDGEN_TEST_TIMEOUT:-120}
 # No incremental caches: the suite's runs are mostly cold (CI clones afresh), where they only cost
-# time and disk. With the dependencies' line-tables-only debug info (Cargo.toml), the Rust stages'
-# cold builds went from 3.9 GB to 2.4 GB and from 173 s to 148 s (a CI run once failed on a full
-# disk). CARGO_INCREMENTAL=1 brings the caches back for edit-and-rerun loops.
+# time and disk (docs/speed/suite.md). CARGO_INCREMENTAL=1 brings them back for edit-and-rerun loops.
 export CARGO_INCREMENTAL=${CARGO_INCREMENTAL:-0}
 
-passed=0
+# ---- the table --------------------------------------------------------------------------------
+names=()
+declare -A lane_of runs_of after_of cmd_of
+while read -r name lane runs after cmd; do
+  [[ -z $name || $name == \#* ]] && continue
+  names+=("$name")
+  lane_of[$name]=$lane
+  runs_of[$name]=$runs
+  after_of[$name]=$after
+  [[ $after == - ]] && after_of[$name]=
+  cmd_of[$name]=$cmd
+done <scripts/stages.txt
 
-# The Python stage's environment installs in the background from here (scripts/python-env.sh;
-# the stage waits for it); its output is in artifacts/python-env.log.
-mkdir -p artifacts
-./scripts/python-env.sh >artifacts/python-env.log 2>&1 &
-
-stage_names=()
-stage_secs=()
-stage_cpus=()
-clk_tck=$(getconf CLK_TCK)
-# cpu_secs: the CPU seconds (user + system) of this shell's finished children so far, from
-# /proc: with two cores, a stage whose CPU time is near twice its wall time cannot go faster by
-# running beside another one, while a stage far below it waits on something.
-cpu_secs() {
-  local -a s
-  read -r -a s </proc/$$/stat
-  echo $(((s[15] + s[16]) / clk_tck))
+# The selection: every stage, or the chosen lanes' stages and what they need, transitively.
+declare -A chosen
+choose() {
+  local s=$1 dep
+  [[ -n ${chosen[$s]:-} ]] && return
+  [[ -n ${lane_of[$s]:-} ]] || die "scripts/stages.txt: '$s' is needed but not declared"
+  chosen[$s]=1
+  IFS=, read -r -a deps <<<"${after_of[$s]}"
+  for dep in "${deps[@]}"; do [[ -n $dep ]] && choose "$dep"; done
+  return 0
 }
-# summary FAILED: the per-stage wall times, then the closing count line.
-summary() {
-  local i
-  header "stage times (wall, and CPU of all processes)"
-  for i in "${!stage_names[@]}"; do
-    printf '%6d s %6d cpu s  %s\n' "${stage_secs[$i]}" "${stage_cpus[$i]}" "${stage_names[$i]}" >&2
-  done
-  printf '%6d s  total (setup included)\n' "$SECONDS" >&2
-  printf 'stages: %d passed, %d failed\n' "$passed" "$1"
-}
-
-# stage NAME CMD...: one announced stage; stops the whole run at the first failure.
-stage() {
-  local name=$1 start=$SECONDS rc=0 cpu_start
-  cpu_start=$(cpu_secs)
-  shift
-  header "stage $((passed + 1)): $name"
-  "$@" || rc=$?
-  stage_names+=("$name")
-  stage_secs+=($((SECONDS - start)))
-  stage_cpus+=($(($(cpu_secs) - cpu_start)))
-  if ((rc != 0)); then
-    log "stage '$name' FAILED (exit $rc) after $((SECONDS - start)) s"
-    bg_join
-    summary 1
-    exit "$rc"
+for name in "${names[@]}"; do
+  if ((${#lanes[@]} == 0)); then
+    chosen[$name]=1
+  else
+    for lane in "${lanes[@]}"; do [[ ${lane_of[$name]} == "$lane" ]] && choose "$name"; done
   fi
-  passed=$((passed + 1))
-  log "stage '$name' passed in $((SECONDS - start)) s"
-}
-
-stage "rustfmt" cargo fmt --all -- --check
-stage "core has no web dependencies" ./scripts/check-core-deps.sh
-stage "no import circles" python3 scripts/check-imports.py
-stage "ARCHITECTURE.md's trees match the files" python3 scripts/check-architecture.py
-stage "clippy native (all targets)" cargo clippy --workspace --all-targets -- -D warnings
-stage "clippy $WASM_TARGET (core and web libs)" \
-  cargo clippy -p screwbender -p screwbender-web --lib --target "$WASM_TARGET" -- -D warnings
-stage "clippy $WASM_TARGET (web lib, features render)" \
-  cargo clippy -p screwbender-web --lib --target "$WASM_TARGET" --features render -- -D warnings
-stage "native tests (all targets)" cargo test --workspace --all-targets
-stage "doc tests" cargo test --workspace --doc
-# The API documentation builds without warnings: no broken intra-doc links. (The CLI separately:
-# its binary `screwbender` and the core library would write the same page.)
-stage "rustdoc (core and web libs)" env RUSTDOCFLAGS="-D warnings" cargo doc --no-deps -p screwbender -p screwbender-web
-stage "rustdoc (CLI)" env RUSTDOCFLAGS="-D warnings" cargo doc --no-deps -p screwbender-cli
-# The web crate's tests with its `teaching` functions (feature-gated out of the light npm module).
-# ChromeDriver makes a browser profile in $TMPDIR for each test binary and leaves it there (about
-# 28 MB each, 19 per run of this stage), so the stage gets a TMPDIR of its own, removed after it.
-wasm_tmp=$(mktemp -d)
-trap 'rm -rf "$wasm_tmp"' EXIT
-stage "wasm tests (node + headless Chromium)" \
-  env TMPDIR="$wasm_tmp" \
-  cargo test --target "$WASM_TARGET" -p screwbender -p screwbender-web --features screwbender-web/teaching --tests --lib
-rm -rf "$wasm_tmp"
-
-# Stages beside others: a test.d stage with the line `# test.sh: beside the next stages` in its
-# first lines starts in the background (its output kept in a file) while the next stages run, and
-# is waited for before a stage with the line `# test.sh: alone` and at the end; then its output is
-# printed whole and its time counted. For stages that leave a core idle much of the time (an
-# install, a server starting, a browser waiting for a page), so that two of them share the two.
-bg_name=
-bg_pid=
-bg_log=
-bg_start=0
-bg_join() {
-  [[ -n $bg_pid ]] || return 0
-  local rc=0 cpu_start
-  cpu_start=$(cpu_secs)
-  wait "$bg_pid" || rc=$?
-  cat "$bg_log"
-  rm -f "$bg_log"
-  stage_names+=("$bg_name (beside the next stages)")
-  local end=$SECONDS
-  [[ -s $bg_log.end ]] && end=$(<"$bg_log.end")
-  rm -f "$bg_log.end"
-  stage_secs+=($((end - bg_start)))
-  stage_cpus+=($(($(cpu_secs) - cpu_start)))
-  bg_pid=
-  if ((rc != 0)); then
-    log "stage '$bg_name' FAILED (exit $rc) after $((end - bg_start)) s"
-    summary 1
-    exit "$rc"
-  fi
-  passed=$((passed + 1))
-  log "stage '$bg_name' passed in $((end - bg_start)) s (beside the next stages)"
-}
-bg_stage() {
-  bg_join
-  bg_name=$1
-  shift
-  bg_log=$(mktemp)
-  bg_start=$SECONDS
-  header "stage $((passed + 1)): $bg_name (starts now, runs beside the next stages; output when it ends)"
-  {
-    local rc=0
-    "$@" || rc=$?
-    echo "$SECONDS" >"$bg_log.end"
-    exit "$rc"
-  } >"$bg_log" 2>&1 &
-  bg_pid=$!
-}
-
-# Extra stages from other parts of the project (JS package, node tests, Playwright e2e).
-if [[ -d scripts/test.d ]]; then
-  mapfile -t hooks < <(LC_ALL=C find scripts/test.d -maxdepth 1 -type f -name '*.sh' | LC_ALL=C sort)
-  for hook in "${hooks[@]}"; do
-    if [[ ! -x $hook ]]; then
-      log "WARNING: $hook is not executable, so it is not run (chmod +x it)"
-    elif grep -qx '# test.sh: beside the next stages' < <(head -n 30 "$hook"); then
-      bg_stage "${hook#scripts/}" "./$hook"
-    else
-      if grep -qx '# test.sh: alone' < <(head -n 30 "$hook"); then bg_join; fi
-      stage "${hook#scripts/}" "./$hook"
-    fi
-  done
+done
+if [[ ${SKIP_SETUP:-0} == 1 ]]; then
+  for name in "${names[@]}"; do [[ ${lane_of[$name]} == setup ]] && unset "chosen[$name]"; done
 fi
-bg_join
+if ((list_only)); then
+  for name in "${names[@]}"; do
+    [[ -n ${chosen[$name]:-} ]] && printf '%-20s %-7s %-7s %s\n' "$name" "${lane_of[$name]}" "${runs_of[$name]}" "${cmd_of[$name]}"
+  done
+  exit 0
+fi
 
-summary 0
+# ---- running ----------------------------------------------------------------------------------
+mkdir -p artifacts
+logs=$(mktemp -d)
+trap 'rm -rf "$logs"' EXIT
+declare -A state pid_of start_of end_of cpu_of
+passed=0
+failed=0
+clk_tck=$(getconf CLK_TCK)
+
+# run_wrapped NAME OUT: runs a stage's command in this (sub)shell's child and writes to OUT the
+# CPU seconds (user + system) of its processes, the clock and the exit status. With two cores, a
+# stage whose CPU time is near twice its wall time cannot go faster beside another one, while a
+# stage far below it waits on something. Call it in a subshell, so that /proc counts only it.
+run_wrapped() {
+  local name=$1 out=$2 rc=0
+  bash -c "${cmd_of[$name]}" || rc=$?
+  local -a t
+  read -r -a t <"/proc/$BASHPID/stat"
+  echo "$(((t[15] + t[16]) / clk_tck)) $SECONDS $rc" >"$out"
+  return "$rc"
+}
+
+# summary: the per-stage table, the slowest tests, then the closing count line.
+summary() {
+  local name
+  header "stage times (wall, and CPU of the stage's processes)"
+  for name in "${names[@]}"; do
+    [[ -n ${start_of[$name]:-} ]] || continue
+    printf '%6d s %6d cpu s  %-20s %s\n' "$((${end_of[$name]:-$SECONDS} - ${start_of[$name]}))" \
+      "${cpu_of[$name]:-0}" "$name" "${state[$name]:-running}" >&2
+  done
+  printf '%6d s  total\n' "$SECONDS" >&2
+  python3 scripts/slowest-tests.py >&2 || true
+  printf 'stages: %d passed, %d failed\n' "$passed" "$failed"
+}
+
+# finish NAME: collect a background stage that has ended (its output printed whole).
+finish() {
+  local name=$1 cpu end rc=0
+  wait "${pid_of[$name]}" || true
+  header "stage $name (ran beside the others)"
+  cat "$logs/$name.log" >&2
+  read -r cpu end rc <"$logs/$name.end" || { cpu=0 end=$SECONDS rc=1; }
+  record "$name" "$cpu" "$end" "$rc"
+}
+
+# record NAME CPU END RC: a stage's result; the run stops at a failure.
+record() {
+  local name=$1 rc=$4
+  cpu_of[$name]=$2
+  end_of[$name]=$3
+  if ((rc == 0)); then
+    state[$name]=passed
+    passed=$((passed + 1))
+    log "stage '$name' passed in $((end_of[$name] - start_of[$name])) s"
+  else
+    state[$name]="FAILED (exit $rc)"
+    failed=$((failed + 1))
+    log "stage '$name' FAILED (exit $rc) after $((end_of[$name] - start_of[$name])) s"
+    local other
+    for other in "${!pid_of[@]}"; do
+      [[ ${state[$other]} == running ]] && kill -- "-${pid_of[$other]}" 2>/dev/null || true
+    done
+    summary
+    exit "$rc"
+  fi
+}
+
+# reap: collect every background stage that has ended.
+reap() {
+  local name
+  for name in "${!pid_of[@]}"; do
+    [[ ${state[$name]} == running && -s $logs/$name.end ]] && finish "$name"
+  done
+  return 0
+}
+
+# wait_for NAME: until a stage that NAME needs has passed.
+wait_for() {
+  local dep=$1
+  [[ -n ${chosen[$dep]:-} ]] || return 0
+  while [[ ${state[$dep]:-} == running ]]; do
+    [[ -s $logs/$dep.end ]] && finish "$dep" && break
+    sleep 1
+    reap
+  done
+}
+
+set -m # each background stage in its own process group, so that a failure can stop it whole
+for name in "${names[@]}"; do
+  [[ -n ${chosen[$name]:-} ]] || continue
+  IFS=, read -r -a deps <<<"${after_of[$name]}"
+  for dep in "${deps[@]}"; do [[ -n $dep ]] && wait_for "$dep"; done
+  if [[ ${runs_of[$name]} == alone ]]; then
+    for other in "${!pid_of[@]}"; do wait_for "$other"; done
+  fi
+  reap
+  start_of[$name]=$SECONDS
+  state[$name]=running
+  if [[ ${runs_of[$name]} == beside ]]; then
+    header "stage $name (starts now, beside the others; its output when it ends)"
+    (run_wrapped "$name" "$logs/$name.end") >"$logs/$name.log" 2>&1 &
+    pid_of[$name]=$!
+  else
+    header "stage $name"
+    rc=0
+    (run_wrapped "$name" "$logs/$name.end") || rc=$?
+    read -r cpu end _ <"$logs/$name.end"
+    record "$name" "$cpu" "$end" "$rc"
+  fi
+done
+for name in "${!pid_of[@]}"; do wait_for "$name"; done
+
+summary

@@ -16,7 +16,7 @@ import screwbender as sb
 from conftest import ROOT
 
 # marimo is in .venv (python/requirements-dev.txt), where this file runs; the clean venvs of the
-# wheel's CPython checks leave this file out (scripts/test.d/21-python.sh).
+# wheel's CPython checks leave this file out (scripts/test.d/python.sh).
 mo = pytest.importorskip("marimo")
 
 NOTEBOOK = ROOT / "examples" / "notebooks" / "screw-figure.py"

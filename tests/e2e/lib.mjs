@@ -10,7 +10,7 @@ import { chromium } from 'playwright-core';
 
 /** The repository root. */
 export const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
-/** The backend of this run (scripts/test.d/40-e2e.sh sets it) and the name the page reports. */
+/** The backend of this run (scripts/test.d/e2e.sh sets it) and the name the page reports. */
 export const BACKEND = process.env.E2E_BACKEND ?? 'webgpu';
 export const EXPECTED_BACKEND = BACKEND === 'webgpu' ? 'WebGPU' : 'WebGL2';
 

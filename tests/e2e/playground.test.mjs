@@ -1,7 +1,7 @@
 // e2e-backends: webgpu webgl2 (pixels of every preset, the backend the page reports)
 // End-to-end tests of the playground in headless Chromium (playwright-core + Debian chromium).
 //
-//   E2E_BACKEND=webgpu|webgl2 node --test tests/e2e/   (scripts/test.d/40-e2e.sh runs both)
+//   E2E_BACKEND=webgpu|webgl2 node --test tests/e2e/   (scripts/test.d/e2e.sh runs both)
 //
 // Serves www/ with scripts/serve.mjs on a free port, drives the page with real mouse and keyboard
 // events, and reads the state back through window.screwbender (documented in www/js/main.js).

@@ -8,7 +8,7 @@
 //   FRAMEWORK_APPS=DIR E2E_BACKEND=webgpu node --test tests/frameworks/apps.test.mjs
 //
 // DIR holds react/, vue/, svelte/ with each a dist/ (and react/dist-dev/, built with
-// NODE_ENV=development): scripts/test.d/25-frameworks.sh makes them.
+// NODE_ENV=development): scripts/test.d/frameworks.sh makes them.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';

@@ -1,6 +1,6 @@
 // The JS API of the built package (pkg/, from scripts/build-pkg.sh), method by method:
 //
-//   node --test tests/js/                      # what scripts/test.d/30-js-api.sh runs
+//   node --test tests/js/                      # what scripts/test.d/js-api.sh runs
 //   SCREWBENDER_PKG=/path/to/node.js node --test tests/js/
 //
 // Typed-array layouts are checked against the object forms, the numbers against closed forms

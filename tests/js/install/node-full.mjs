@@ -1,6 +1,6 @@
 // Node smoke test of the installed package's `screwbender/full` entry (the math plus files,
 // comparison methods, three.js keyframe tracks and teaching functions), run from the temporary
-// app by scripts/test.d/20-npm-package.sh: the entry resolves through the package "exports", is
+// app by scripts/test.d/npm-package.sh: the entry resolves through the package "exports", is
 // ready at once (its Node entry instantiates the module), and each of its extra parts answers.
 import assert from 'node:assert/strict';
 import { Motion, methods, subdividePolygon, importMotionFile } from 'screwbender/full';

@@ -1,5 +1,5 @@
 // Node smoke test of the installed package, run from the temporary app (scripts/test.d/
-// 20-npm-package.sh copies it there next to smoke.mjs): `import 'screwbender'` goes through the
+// npm-package.sh copies it there next to smoke.mjs): `import 'screwbender'` goes through the
 // package's "exports" exactly as in a user's project.
 import init, * as sb from 'screwbender';
 import { runSmoke } from './smoke.mjs';

@@ -1,4 +1,4 @@
-// Type-checked by scripts/test.d/20-npm-package.sh in a Node-only TypeScript project
+// Type-checked by scripts/test.d/npm-package.sh in a Node-only TypeScript project
 // (tsconfig.node.json: lib es2022, types node, no DOM lib, no skipLibCheck): the math entry's
 // types must compile there, init included, and wrong uses must fail.
 import { readFileSync } from 'node:fs';

@@ -1,5 +1,5 @@
 // Type-checked (tsc --strict --noEmit) against the installed package's .d.ts by
-// scripts/test.d/20-npm-package.sh: the types are real, and wrong uses fail to compile.
+// scripts/test.d/npm-package.sh: the types are real, and wrong uses fail to compile.
 import init, {
   Motion,
   limits,

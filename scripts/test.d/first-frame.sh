@@ -5,7 +5,7 @@
 # modules are the npm package's, so after the npm stage it only copies those; stage 40 then
 # reuses them all).
 #
-#   SKIP_E2E_BUILD=1 scripts/test.d/22-first-frame.sh   # measure www/ as built
+#   SKIP_E2E_BUILD=1 scripts/test.d/first-frame.sh   # measure www/ as built
 set -euo pipefail
 # shellcheck source=scripts/lib.sh
 source "$(dirname "${BASH_SOURCE[0]}")/../lib.sh"

@@ -18,13 +18,12 @@
 # target directory) and that wheel is imported and used. With CI=true a missing interpreter fails
 # the stage; elsewhere it is a warning and that interpreter is left out.
 #
-#   PYTHON=python3.12 scripts/test.d/21-python.sh    # another interpreter for .venv (default python3)
+#   PYTHON=python3.12 scripts/test.d/python.sh    # another interpreter for .venv (default python3)
 #
-# It runs beside the next stages (scripts/test.sh): its install, JupyterLab's start and the
-# browser's waits leave a core idle much of the time. It needs www/'s modules: it starts before
-# 22-first-frame builds them, and python/build-figure.sh waits for that build (or makes it)
+# It runs beside the other stages (scripts/stages.txt): its install, JupyterLab's start and the
+# browser's waits leave a core idle much of the time. It needs www/'s modules: it may start before
+# the first-frame stage builds them, and python/build-figure.sh waits for that build (or makes it)
 # under www/'s build lock.
-# test.sh: beside the next stages
 set -euo pipefail
 # shellcheck source=scripts/lib.sh
 source "$(dirname "${BASH_SOURCE[0]}")/../lib.sh"

@@ -6,10 +6,9 @@
 # through Blender's own installer, its operators against the Python package, and the CLI's .glb
 # exports (the CLI as the native test stage built it) through Blender's glTF importer.
 #
-# It runs beside the next stages (scripts/test.sh), after the Python stage (whose wheel it
+# It runs beside the other stages (scripts/stages.txt), after the Python stage (whose wheel it
 # bundles): the bpy install is mostly waiting on the disk and the network. With CI=true a
 # missing CPython 3.11 fails the stage; elsewhere it is a warning and the stage does nothing.
-# test.sh: beside the next stages
 set -euo pipefail
 # shellcheck source=scripts/lib.sh
 source "$(dirname "${BASH_SOURCE[0]}")/../lib.sh"

@@ -4,8 +4,7 @@
 # in Node, the playground page in Chromium, the command line and Python; their results and error
 # words must agree. Uses what the stages before it built: pkg/ (the npm stage), the debug CLI
 # (the native tests), the venv with the wheel (the Python stage, which this stage waits for) and
-# www/ (the first-frame stage).
-# test.sh: alone
+# www/ (the first-frame stage). It runs alone (scripts/stages.txt): a browser and three front ends.
 set -euo pipefail
 # shellcheck source=scripts/lib.sh
 source "$(dirname "${BASH_SOURCE[0]}")/../lib.sh"

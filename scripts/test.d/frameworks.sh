@@ -12,7 +12,7 @@
 #      twice), then drive the builds in headless Chromium (tests/frameworks/apps.test.mjs): all of
 #      it on WebGPU, and on WebGL2 the state reaching a drawn figure (the second renderer module).
 #
-#   E2E_BACKENDS=webgpu scripts/test.d/25-frameworks.sh   # one backend only
+#   E2E_BACKENDS=webgpu scripts/test.d/frameworks.sh   # one backend only
 set -euo pipefail
 # shellcheck source=scripts/lib.sh
 source "$(dirname "${BASH_SOURCE[0]}")/../lib.sh"

@@ -11,14 +11,13 @@
 # E2E_JOBS at a time (default 2), the longest first; each file has its own server and browser.
 # Screenshots land in artifacts/e2e-webgpu/ and artifacts/e2e-webgl2/.
 #
-#   SKIP_E2E_BUILD=1 scripts/test.d/40-e2e.sh      # reuse www/ as built
-#   E2E_BACKENDS=webgl2 scripts/test.d/40-e2e.sh   # one backend only
-#   E2E_FILES="tests/e2e/viewer.test.mjs" scripts/test.d/40-e2e.sh   # some files only
-#   E2E_JOBS=1 scripts/test.d/40-e2e.sh            # one file at a time
+#   SKIP_E2E_BUILD=1 scripts/test.d/e2e.sh      # reuse www/ as built
+#   E2E_BACKENDS=webgl2 scripts/test.d/e2e.sh   # one backend only
+#   E2E_FILES="tests/e2e/viewer.test.mjs" scripts/test.d/e2e.sh   # some files only
+#   E2E_JOBS=1 scripts/test.d/e2e.sh            # one file at a time
 #
-# It runs alone (scripts/test.sh waits for the stages running beside others): its files already
-# share both cores, and frame waits under more load only grow.
-# test.sh: alone
+# It runs alone (scripts/stages.txt): its files already share both cores, and frame waits under
+# more load only grow.
 set -euo pipefail
 # shellcheck source=scripts/lib.sh
 source "$(dirname "${BASH_SOURCE[0]}")/../lib.sh"
