@@ -6,6 +6,7 @@
 #   ./scripts/test.sh web python        #   it needs from other lanes; several lanes at once
 #   ./scripts/test.sh --list [LANE…]    # the stages that would run, and nothing else
 #   SKIP_SETUP=1 ./scripts/test.sh …    # skip the install stages (fast local reruns)
+#   STAGES=FILE ./scripts/test.sh …     # another table (tests/suite/ tests the scheduler so)
 #
 # The stages are declared in scripts/stages.txt: name, lane, how it runs (in the foreground, beside
 # the others, or alone) and the stages it needs. A stage fails by exiting non-zero, and the run
@@ -23,7 +24,7 @@ for arg in "$@"; do
     --list) list_only=1 ;;
     rust | web | python | e2e) lanes+=("$arg") ;;
     -h | --help)
-      sed -n '2,13p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+      sed -n '2,14p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
       exit 0
       ;;
     *) die "unknown lane or option '$arg' (lanes: rust web python e2e; options: --list)" ;;
@@ -51,7 +52,7 @@ while read -r name lane runs after cmd; do
   after_of[$name]=$after
   [[ $after == - ]] && after_of[$name]=
   cmd_of[$name]=$cmd
-done <scripts/stages.txt
+done <"${STAGES:-scripts/stages.txt}"
 
 # The selection: every stage, or the chosen lanes' stages and what they need, transitively.
 declare -A chosen

@@ -129,7 +129,7 @@ header "pytest python/tests"
 # source folder.
 cd "$REPO_ROOT/python/tests"
 timed "pytest" "$venv/bin/python" -m pytest -q -p no:cacheprovider \
-  --rootdir="$REPO_ROOT/python/tests" .
+  --junit-xml="$REPO_ROOT/artifacts/python/pytest.xml" --rootdir="$REPO_ROOT/python/tests" .
 cd "$REPO_ROOT"
 
 header "the wheel on the oldest and the newest CPython, and the sdist"
