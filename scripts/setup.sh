@@ -85,7 +85,13 @@ TOML
       cargo update --quiet -p webpki-roots --precise 1.0.10
     fi
     # --force: replaces a wasm-bindgen of another version; the build dir is thrown away.
-    cargo install --path . --locked --force --target-dir "$work/target"
+    # Only the two programs the project runs, without TLS (the test runner talks plain HTTP to
+    # the local ChromeDriver; TLS is for remote WebDriver services and costs a C and assembly
+    # build), at opt-level 1: they run for seconds per suite, while an optimised build of them
+    # is a large part of a fresh machine's install (docs/speed/suite.md).
+    CARGO_PROFILE_RELEASE_OPT_LEVEL=1 CARGO_PROFILE_RELEASE_DEBUG=0 \
+      cargo install --path . --locked --force --no-default-features \
+      --bin wasm-bindgen --bin wasm-bindgen-test-runner --target-dir "$work/target"
   )
   rm -rf "$work"
 }

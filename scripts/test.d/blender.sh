@@ -7,23 +7,20 @@
 # exports (the CLI as the native test stage built it) through Blender's glTF importer.
 #
 # It runs beside the other stages (scripts/stages.txt), after the Python stage (whose wheel it
-# bundles): the bpy install is mostly waiting on the disk and the network. With CI=true a
+# bundles); the bpy install (scripts/blender-env.sh) starts earlier, beside the Rust stages, as it
+# is mostly waiting on the network and the disk. With CI=true a
 # missing CPython 3.11 fails the stage; elsewhere it is a warning and the stage does nothing.
 set -euo pipefail
 # shellcheck source=scripts/lib.sh
 source "$(dirname "${BASH_SOURCE[0]}")/../lib.sh"
 cd "$REPO_ROOT"
 
-if ! py=$(python_at 3.11); then
+if ! python_at 3.11 >/dev/null; then
   missing_python "3.11 (Blender 4.5's, for bpy)"
   exit 0
 fi
 venv=$REPO_ROOT/.venv-blender
-if [[ ! -x $venv/bin/python ]]; then
-  timed "venv of CPython 3.11" "$py" -m venv "$venv"
-fi
-timed "pip install bpy (pinned)" "$venv/bin/pip" install --quiet --disable-pip-version-check \
-  -r tests/blender/requirements.txt
+./scripts/blender-env.sh
 
 SCREWBENDER_BLENDER_ZIP=$(timed "the extension zip" ./scripts/build-blender-extension.sh)
 SCREWBENDER_CLI=$(timed "the CLI (the reference)" test_cli)
