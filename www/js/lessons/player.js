@@ -279,7 +279,7 @@ export function startLessons(app) {
   if (params.has('seed')) {
     const n = Number(params.get('seed'));
     if (params.get('seed') !== '' && isSeed(n)) urlSeed = n;
-    else app.showError(`?seed=${params.get('seed')}: expected a whole number from 0 to 4294967295; lessons pick their variants as usual.`, 'error', 'lesson');
+    else app.showError(`?seed=${params.get('seed')}: expected a whole number from 0 to 4294967295; lessons pick their variants as usual.`, 'warn');
   }
   player.ready = (async () => {
     if (params.has('lesson')) return open(params.get('lesson'));
