@@ -242,8 +242,7 @@ function checkStep(s, p, ctx, P) {
   if (params === undefined) return checkStepBody(refs.names.some((r) => !r.text) ? substitute(s, {}) : s, p, ctx, P);
   const defs = paramProblems(params, `${p}.params`);
   for (const d of defs) P.push(new LessonError(d.path, d.message));
-  const valid = defs.length ? {} : params;
-  const variants = defs.length ? [{}] : extremeParams(valid);
+  const variants = defs.length ? [{}] : extremeParams(params);
   const seen = new Set(P.map((e) => e.message));
   for (const values of variants) {
     const Q = [];
