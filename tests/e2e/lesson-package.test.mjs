@@ -6,7 +6,7 @@
 // SCORM schemas require and lists exactly the zip's files; a learner answers an exercise wrong,
 // then right, with real clicks; the LMS reads back the status, score, interactions, time spent
 // and suspend data; a second launch from the stored data resumes at the same step with the
-// exercise solved, and Finish completes it with pass or fail against the mastery score; a
+// exercise solved and the randomised step's variant (the learner's), and Finish completes it with pass or fail against the mastery score; a
 // three-lesson course starts at its menu; outside an LMS the package runs as a plain lesson; no
 // request leaves the package's folder. The Lessons menu's dialog makes the same zip, byte for
 // byte, as the script. One browser for all; screenshots go to artifacts/e2e-<backend>/scorm/.
@@ -94,7 +94,7 @@ before(async () => {
   const started = launch(BACKEND);
   [PKGS.scorm12, PKGS.scorm2004, PKGS.course] = await Promise.all([
     makePackage(path.join(DIR, 'screw-12.zip'), ['--format', 'scorm12', '--mastery', '0.8', screw]),
-    makePackage(path.join(DIR, 'screw-2004.zip'), ['--format', 'scorm2004', '--mastery', '0.3', screw]),
+    makePackage(path.join(DIR, 'screw-2004.zip'), ['--format', 'scorm2004', '--mastery', '0.2', screw]),
     makePackage(path.join(DIR, 'course.zip'), ['--format', 'scorm2004', screw, 'www/lessons/02-polyscrew.json', 'www/lessons/03-split-tweak.json']),
   ]);
   for (const [k, v] of Object.entries(PKGS)) unpack(k, v);
@@ -195,12 +195,15 @@ for (const format of ['scorm12', 'scorm2004']) {
     const man = await checkManifest(format, entries);
     // The LMS's mastery comes from the manifest, as an LMS reads it.
     const mastery = v12 ? Number(man.mastery12) / 100 : Number(man.mastery2004);
-    assert.equal(mastery, v12 ? 0.8 : 0.3);
+    assert.equal(mastery, v12 ? 0.8 : 0.2);
     const learner = v12 ? { core: { student_id: 'learner-7', student_name: 'Doe, Jo' }, student_data: { mastery_score: man.mastery12 } } : { learner_id: 'learner-7', learner_name: 'Jo Doe', scaled_passing_score: man.mastery2004 };
 
-    // First launch: the lesson starts at step 1; the learner goes to the multiple choice (step 5).
+    // First launch: the lesson starts at step 1; the learner goes to the multiple choice (step 6).
     let frame = await launchIn(format, format, learner, stepShown(0));
-    for (let k = 1; k <= 4; k++) {
+    // The randomised step's variant comes from the learner's id (lms.js variantSeed).
+    const variant = await frame.evaluate(() => window.screwbender.lessons.then((L) => L.variant));
+    assert.equal(variant.seed, await frame.evaluate(() => window.screwbender.lms.seed('screw')));
+    for (let k = 1; k <= 5; k++) {
       await frame.click('#lesson button.next');
       await frame.waitForFunction(stepShown(k));
     }
@@ -217,18 +220,18 @@ for (const format of ['scorm12', 'scorm2004']) {
     const commits = await page.evaluate(() => window.calls.filter((c) => /Commit/.test(c)).length);
     assert.ok(commits >= 2, `a commit after each checked exercise (${commits})`);
     const rec = ia(cmi);
-    assert.equal(rec.id, 'screw_step5');
+    assert.equal(rec.id, 'screw_step6');
     assert.equal(rec.type, 'choice');
     assert.equal(rec.result, 'correct');
     assert.equal(v12 ? rec.student_response : rec.learner_response, v12 ? '1' : 'answer_1');
     if (v12) assert.match(rec.time, /^\d\d:\d\d:\d\d$/);
     else assert.match(rec.timestamp, /^\d{4}-\d\d-\d\dT\d\d:\d\d:\d\d/);
     const score = v12 ? cmi.core.score : cmi.score;
-    assert.deepEqual([score.raw, score.min, score.max].map(Number), [33.33, 0, 100], 'one of three exercises solved, in %');
+    assert.deepEqual([score.raw, score.min, score.max].map(Number), [25, 0, 100], 'one of four exercises solved, in %');
     if (v12) assert.equal(cmi.core.lesson_status, 'incomplete');
     else {
       assert.equal(cmi.completion_status, 'incomplete');
-      assert.ok(Math.abs(Number(cmi.score.scaled) - 1 / 3) < 1e-3, `scaled ${cmi.score.scaled}`);
+      assert.ok(Math.abs(Number(cmi.score.scaled) - 1 / 4) < 1e-3, `scaled ${cmi.score.scaled}`);
       assert.equal(cmi.success_status, 'unknown');
     }
     const suspend = cmi.suspend_data;
@@ -248,17 +251,19 @@ for (const format of ['scorm12', 'scorm2004']) {
     const stored = v12
       ? { ...learner, suspend_data: cmi.suspend_data, core: { ...learner.core, entry: 'resume', lesson_status: cmi.core.lesson_status } }
       : { ...learner, suspend_data: cmi.suspend_data, entry: 'resume', completion_status: cmi.completion_status };
-    frame = await launchIn(format, format, stored, stepShown(4));
+    frame = await launchIn(format, format, stored, stepShown(5));
+    // The same variant as at the first launch: its seed is not stored, it is the learner's.
+    assert.deepEqual(await frame.evaluate(() => window.screwbender.lessons.then((L) => L.variant)), variant);
     assert.match(await frame.textContent('#lesson .task .label'), /solved/);
     assert.equal(await frame.evaluate(() => window.screwbender.lms.learnerId), 'learner-7');
     // Finish: the summary; completed, with pass or fail against the mastery score.
     await frame.click('#lesson button.next');
     await frame.waitForFunction(() => document.querySelector('#lesson')?.dataset.step === 'summary');
     cmi = await page.evaluate(() => window.cmi());
-    if (v12) assert.equal(cmi.core.lesson_status, 'failed', '1 of 3 is under the mastery score 80');
+    if (v12) assert.equal(cmi.core.lesson_status, 'failed', '1 of 4 is under the mastery score 80');
     else {
       assert.equal(cmi.completion_status, 'completed');
-      assert.equal(cmi.success_status, 'passed', '1 of 3 is over the mastery score 0.3');
+      assert.equal(cmi.success_status, 'passed', '1 of 4 is over the mastery score 0.2');
     }
     assert.deepEqual(await frame.evaluate(() => window.screwbender.lms.errors()), []);
     await leave(v12 ? 'LMSFinish' : 'Terminate');
@@ -283,7 +288,7 @@ test('a three-lesson course starts at its menu and scores over all lessons', asy
   await frame.click('#lesson button.check');
   await frame.waitForSelector('#lesson .feedback.ok');
   const cmi = await page.evaluate(() => window.cmi());
-  assert.deepEqual([cmi.score.raw, cmi.score.max].map(Number), [14.29, 100], 'one of the seven exercises of all three lessons, in %');
+  assert.deepEqual([cmi.score.raw, cmi.score.max].map(Number), [12.5, 100], 'one of the eight exercises of all three lessons, in %');
   assert.equal(cmi.interactions[0].id, 'split_tweak_step5');
   assert.equal(cmi.suspend_data.split(';')[1], '2', `the lesson open is the third: ${cmi.suspend_data}`);
   await leave('Terminate');

@@ -52,11 +52,19 @@ const ANSWERS = {
       app.motion.setPose(1, { origin: [p.origin[0], p.origin[1], 0], rotation: p.rotation });
     }),
   },
+  // The randomised pitch: pose 1 raised by h·π/2 for this student's h (its variant).
   'screw:3': {
+    wrong: () => {},
+    right: (L, app) => app.edit(() => {
+      const p = app.motion.pose(1);
+      app.motion.setPose(1, { origin: [p.origin[0], p.origin[1], (L.variant.values[L.step].h * Math.PI) / 2], rotation: p.rotation });
+    }),
+  },
+  'screw:4': {
     wrong: () => {},
     right: (L, app) => app.edit(() => app.motion.setPose(1, { origin: app.motion.pose(1).origin, rotation: [1, 0, 0, 0] })),
   },
-  'screw:4': { wrong: (L) => L.choose(0), right: (L) => L.choose(1) },
+  'screw:5': { wrong: (L) => L.choose(0), right: (L) => L.choose(1) },
   'polyscrew:2': {
     wrong: () => {},
     // Pose 1 at the screw midpoint of poses 0 and 2: both spans are halves of one screw.
@@ -433,7 +441,7 @@ test('axe finds no serious or critical violation in the lesson menu, card and ex
   await page.evaluate(async () => (await window.screwbender.lessons).openMenu());
   assert.deepEqual(await audit(), [], 'lesson menu');
   await openLesson('01-screw');
-  for (const step of [1, 2, 4]) {
+  for (const step of [1, 3, 5]) {
     await inPage((L, app, k) => {
       L.go(k);
       L.check();

@@ -1,14 +1,3 @@
-// The seeded generator of the randomised tests (JS random calls, browser soak): mulberry32.
-// Not a test file itself.
-
-/** mulberry32: a small seeded PRNG, uniform in [0, 1). */
-export function prng(seed) {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
+// The seeded generator of the randomised tests (JS random calls, browser soak): mulberry32, the
+// one the lesson variants use (www/js/lessons/variants.js). Not a test file itself.
+export { mulberry32 as prng } from '../../www/js/lessons/variants.js';

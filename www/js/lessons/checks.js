@@ -66,6 +66,14 @@ export function evaluateCheck(check, motion, answer) {
         got.push(`origin ${fmt(d)} from the target`);
         want.push(`within ${fmt(tol)}`);
       }
+      if (check.coordinate) {
+        const k = 'xyz'.indexOf(check.coordinate);
+        const d = Math.abs(p.origin[k] - check.value);
+        const tol = check.tolerance ?? 0.05;
+        ok &&= d <= tol;
+        got.push(`${check.coordinate} = ${fmt(p.origin[k])}`);
+        want.push(`${check.coordinate} within ${fmt(tol)} of ${fmt(check.value)}`);
+      }
       if (check.rotation) {
         const q = check.rotation;
         const qn = norm(q);

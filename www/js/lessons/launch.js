@@ -45,7 +45,9 @@ async function launch(course) {
   if (lms) {
     // The LMS's place is the learner's: it replaces whatever this browser kept (another learner
     // may have used it), so the Lessons menu shows the same.
-    course.lessons.forEach((l, k) => writeProgress(l.id, toProgress(place.lessons[k])));
+    // With the learner's variant seed: randomised steps show the numbers they showed at the
+    // last launch, whichever browser this is.
+    course.lessons.forEach((l, k) => writeProgress(l.id, { ...toProgress(place.lessons[k]), seed: variantSeed(lms.learnerId ?? '', l.id) }));
   } else {
     course.lessons.forEach((l, k) => Object.assign(place.lessons[k], readProgress(l.id)));
   }
@@ -129,6 +131,6 @@ async function launch(course) {
     const l = course.lessons[place.current];
     // A course starts at its menu; a single lesson, or a course resumed, at the lesson shown last.
     if (course.lessons.length > 1 && !restored && !place.lessons.some((p) => p.step > 0 || p.solved.length)) player.openMenu();
-    else await player.open(l.file, { progress: toProgress(place.lessons[place.current]) });
+    else await player.open(l.file, { progress: { ...toProgress(place.lessons[place.current]), ...(lms ? { seed: page.lms.seed(l.id) } : {}) } });
   }
 }

@@ -22,6 +22,8 @@
 //   terminate()               LMSFinish / Terminate (once; later calls do nothing)
 //   errors                    the LMS calls that failed, as "call: code message" lines
 
+import { fnv1a } from './variants.js';
+
 /** How far up a parent chain each version's search goes (the standard's limits). */
 const MAX_DEPTH = { '1.2': 7, 2004: 500 };
 /** The API object's name in each version. */
@@ -76,17 +78,12 @@ export function duration2004(ms) {
 const pad = (n) => String(n).padStart(2, '0');
 
 /**
- * A seed for a randomised step's variant: the same for the same learner and lesson at every
- * launch, so a resumed lesson shows the variant the learner saw (FNV-1a of both ids, 32 bits).
- * The lesson format has no randomised steps yet; this is what they are to use.
+ * The seed of a randomised step's variant (variants.js) in an LMS: the same for the same learner
+ * and lesson at every launch, so a resumed lesson shows the variant the learner saw without
+ * storing it (FNV-1a of both ids, 32 bits).
  */
 export function variantSeed(learnerId, lessonId) {
-  let h = 0x811c9dc5;
-  for (const c of `${learnerId}\u0000${lessonId}`) {
-    h ^= c.codePointAt(0);
-    h = Math.imul(h, 0x01000193) >>> 0;
-  }
-  return h;
+  return fnv1a(`${learnerId}\u0000${lessonId}`);
 }
 
 /**

@@ -6,12 +6,17 @@
 //
 // startLessons(app) returns the player; main.js exposes it as window.screwbender.lessons:
 //   ready: Promise               settles once ?lesson= or the first-visit tour has been handled
-//   open(name, {resume, progress}): Promise<boolean>   loads lesson <name>: an id of lessons/index.json (`screw`),
+//   open(name, {resume, progress, seed}): Promise<boolean>   loads lesson <name>: an id of lessons/index.json (`screw`),
 //                                a file name (`01-screw`, `01-screw.json`); false: a banner says why
-//   openText(text, source, {resume, progress}): boolean   the same from a file's text (pasted,
-//                                dropped); `progress` (progress.js) replaces the saved progress
+//   openText(text, source, {resume, progress, seed}): boolean   the same from a file's text (pasted,
+//                                dropped); `progress` (progress.js) replaces the saved progress;
+//                                `seed` picks the variant of randomised steps (else the page's
+//                                ?seed=, else the one kept in the progress, else a new one, kept)
 //   openMenu()                   shows the Lessons menu
-//   lesson, step                 the open lesson object and step index (null / -1 when closed)
+//   lesson, step                 the open lesson object and step index (null / -1 when closed);
+//                                a randomised lesson's steps are the student's variant
+//   variant                      of a randomised lesson: {seed, values} (format.js lessonVariant;
+//                                values[i] the parameters of step i, or null); else null
 //   go(i), next(), prev(), close()  (next() after the last step shows the summary; once more closes)
 //   summary                      {solved, total} while the summary shows, else null
 //   choose(k)                    picks answer k of the step's multiple choice
@@ -27,7 +32,8 @@
 //               null), `results` (checks.js)
 //     'finish'  the summary after the last step is shown: `solved`, `total`
 import { VIEW_IDS } from '../views/index.js';
-import { parseLesson } from './format.js';
+import { hasParams, lessonVariant, parseLesson } from './format.js';
+import { isSeed, newSeed } from './variants.js';
 import { readProgress, writeProgress, markTourSeen, tourSeen } from './progress.js';
 import { BASE, lessonUrl, resolveLessonName } from './urls.js';
 import { applyStep } from './apply.js';
@@ -50,7 +56,7 @@ export function startLessons(app) {
   };
 
   // The open lesson, its step, the step's chosen answer and hints shown, and its saved progress.
-  const st = { lesson: null, step: -1, answer: null, hintShown: 0, progress: null, emit };
+  const st = { lesson: null, step: -1, answer: null, hintShown: 0, progress: null, variant: null, emit };
   const events = new EventTarget();
   /** Tells listeners of player.events about `type` (see the file's head). */
   function emit(type, detail = {}) {
@@ -67,6 +73,10 @@ export function startLessons(app) {
     },
     get step() {
       return st.step;
+    },
+    /** The open lesson's variant, {seed, values}, or null (no lesson, or no randomised step). */
+    get variant() {
+      return st.variant;
     },
     /** After the last step: {solved, total} of the summary shown, else null. */
     get summary() {
@@ -95,7 +105,7 @@ export function startLessons(app) {
   const lessonError = (message) => app.showError(message, 'error', 'lesson');
 
   /** Opens lesson `name`: an id of lessons/index.json or a file (see lessonUrl); false (and a banner) if it cannot. */
-  async function open(name, { resume = true, progress = null } = {}) {
+  async function open(name, { resume = true, progress = null, seed = null } = {}) {
     const url = lessonUrl(await resolveLessonName(name));
     if (!url) {
       lessonError(`Lesson "${name}": only files under lessons/ on this site can be opened by name. Nothing was changed.`);
@@ -110,7 +120,7 @@ export function startLessons(app) {
       lessonError(`Lesson ${url.pathname.split('/').pop()}: could not load it (${e.message}). Nothing was changed.`);
       return false;
     }
-    if (!openText(text, url.pathname.split('/').pop(), { resume, progress })) return false;
+    if (!openText(text, url.pathname.split('/').pop(), { resume, progress, seed })) return false;
     // A `metric` check measures in the analysis module: fetched now, before the first Check.
     if (measures(st.lesson)) await app.analysis().catch((e) => app.showError(`${e.message}: this lesson's checks cannot measure the motion.`));
     return true;
@@ -122,7 +132,7 @@ export function startLessons(app) {
   }
 
   /** Opens a lesson from its text; `source` names it in messages. */
-  function openText(text, source = 'lesson', { resume = true, progress = null } = {}) {
+  function openText(text, source = 'lesson', { resume = true, progress = null, seed = null } = {}) {
     let parsed;
     try {
       parsed = parseLesson(text, ctx);
@@ -132,8 +142,24 @@ export function startLessons(app) {
     }
     app.parts.notices.clear('lesson');
     menu.hide();
+    st.progress = progress ?? readProgress(parsed.id);
+    st.variant = null;
     st.lesson = parsed;
-    st.progress = progress ?? readProgress(st.lesson.id);
+    if (hasParams(parsed)) {
+      // The variant's seed: the caller's, a teacher's ?seed= preview (not kept), the student's
+      // own (kept with the progress: the same numbers after a reload), or a new one, kept.
+      let s = isSeed(seed) ? seed : urlSeed;
+      if (s === null) {
+        if (!isSeed(st.progress.seed)) {
+          st.progress.seed = newSeed();
+          writeProgress(parsed.id, st.progress);
+        }
+        s = st.progress.seed;
+      }
+      const v = lessonVariant(parsed, s);
+      st.lesson = v.lesson;
+      st.variant = { seed: s, values: v.values };
+    }
     const opening = card.card.hidden;
     card.card.hidden = false;
     document.body.classList.add('lesson-open');
@@ -206,6 +232,7 @@ export function startLessons(app) {
       foldPanelOnSmallScreens(app);
     }
     st.lesson = null;
+    st.variant = null;
     st.step = -1;
     const closing = !card.card.hidden;
     card.card.hidden = true;
@@ -247,6 +274,13 @@ export function startLessons(app) {
   card.nextBtn.addEventListener('click', () => go(st.step + 1));
 
   const params = new URLSearchParams(location.search);
+  // ?seed=N: every randomised lesson of this page shows variant N (a teacher's preview).
+  let urlSeed = null;
+  if (params.has('seed')) {
+    const n = Number(params.get('seed'));
+    if (params.get('seed') !== '' && isSeed(n)) urlSeed = n;
+    else app.showError(`?seed=${params.get('seed')}: expected a whole number from 0 to 4294967295; lessons pick their variants as usual.`, 'warn');
+  }
   player.ready = (async () => {
     if (params.has('lesson')) return open(params.get('lesson'));
     const seen = tourSeen();

@@ -1,15 +1,25 @@
-// Lesson progress in localStorage: per lesson the step last shown, the exercises solved and the
-// multiple-choice answers given; and whether the first-visit tour has been seen. Storage that is
-// broken, full or disabled never throws: progress then lasts for this page only.
+// Lesson progress in localStorage: per lesson the step last shown, the exercises solved, the
+// multiple-choice answers given and the seed of its randomised steps' variant (variants.js); and
+// whether the first-visit tour has been seen. Storage that is broken, full or disabled never
+// throws: progress then lasts for this page only.
+
+import { isSeed } from './variants.js';
 
 const PROGRESS_PREFIX = 'screwbender.lesson.';
 const TOUR_SEEN_KEY = 'screwbender.tour.seen';
 
-/** The saved progress of lesson `id`: {step, solved: [step…], answers: {step: choice}}. */
+/**
+ * The saved progress of lesson `id`: {step, solved: [step…], answers: {step: choice}, seed?}
+ * (`seed`: once the lesson has randomised steps and has been opened).
+ */
 export function readProgress(id) {
   try {
     const p = JSON.parse(localStorage.getItem(PROGRESS_PREFIX + id) ?? 'null');
-    if (p && typeof p === 'object') return { step: Number.isInteger(p.step) ? p.step : 0, solved: Array.isArray(p.solved) ? p.solved : [], answers: p.answers ?? {} };
+    if (p && typeof p === 'object') {
+      const out = { step: Number.isInteger(p.step) ? p.step : 0, solved: Array.isArray(p.solved) ? p.solved : [], answers: p.answers ?? {} };
+      if (isSeed(p.seed)) out.seed = p.seed;
+      return out;
+    }
   } catch {
     // A broken entry counts as no progress.
   }
