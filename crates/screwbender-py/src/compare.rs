@@ -8,14 +8,15 @@
 //! `json.loads`: the three APIs then agree on every field name by construction, and a field the
 //! core adds or renames reaches Python without a change here.
 
-use glam::DVec3;
-use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyString;
-use screwbender::frontend::compare::{compare, parse_methods, split_names, MAX_BODY_POINTS};
+use screwbender::frontend::compare::{
+    body_points, compare, parse_methods, split_names, MAX_BODY_POINTS,
+};
 use screwbender::Pose;
 
-use crate::convert::{detached, flag, parameters, poses_from, shape_text, value_error};
+use crate::convert::{detached, expected, flag, parameters, poses_from, shape_text, value_error};
 
 /// The method names of `methods=`: `None` (every method that applies), a string (names
 /// separated by commas, as the CLI's `--methods`) or a sequence of names; they are resolved by
@@ -28,21 +29,18 @@ fn methods_from(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Vec<String>>>
         let text: String = obj.extract()?;
         return Ok(Some(split_names(&[text])));
     }
-    let type_error = |what: &Bound<'_, PyAny>, at: &str| {
-        PyTypeError::new_err(format!(
-            "{at}: expected a method name (str), got a {}",
-            what.get_type()
-                .name()
-                .map(|n| n.to_string())
-                .unwrap_or_default()
-        ))
-    };
-    let items = obj.try_iter().map_err(|_| type_error(obj, "methods"))?;
+    let items = obj
+        .try_iter()
+        .map_err(|_| expected(obj, "methods", "a method name (str)"))?;
     let mut names = Vec::new();
     for (i, item) in items.enumerate() {
         let item = item?;
         if !item.is_instance_of::<PyString>() {
-            return Err(type_error(&item, &format!("methods[{i}]")));
+            return Err(expected(
+                &item,
+                &format!("methods[{i}]"),
+                "a method name (str)",
+            ));
         }
         names.push(item.extract::<String>()?);
     }
@@ -51,25 +49,32 @@ fn methods_from(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Vec<String>>>
 }
 
 /// The body points of `body_points=`: `None` (the core's default, `(0, 0, 0)` and `(2, 0, 0)`)
-/// or a `(k, 3)` array of 1 to [`MAX_BODY_POINTS`] points in local coordinates.
-fn body_points_from(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Vec<DVec3>>> {
+/// or a `(k, 3)` array of points in local coordinates; their count and values are checked by the
+/// core (`screwbender::frontend::compare::body_points`), its error naming `body_points`.
+fn body_points_from(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Vec<[f64; 3]>>> {
     let Some(obj) = obj.filter(|o| !o.is_none()) else {
         return Ok(None);
     };
     let (numbers, shape) = parameters(obj, "body_points")?;
-    match shape[..] {
-        [k, 3] if (1..=MAX_BODY_POINTS).contains(&k) => Ok(Some(
-            numbers
-                .chunks_exact(3)
-                .map(|p| DVec3::new(p[0], p[1], p[2]))
-                .collect(),
-        )),
-        _ => Err(PyValueError::new_err(format!(
+    let [_, 3] = shape[..] else {
+        return Err(PyValueError::new_err(format!(
             "body_points: shape {} is not (k, 3) with k from 1 to {MAX_BODY_POINTS} (x, y, z \
              in the body's local frame)",
             shape_text(&shape)
-        ))),
-    }
+        )));
+    };
+    let points: Vec<[f64; 3]> = numbers
+        .chunks_exact(3)
+        .map(|p| [p[0], p[1], p[2]])
+        .collect();
+    body_points(&points).map_err(|e| {
+        let text = e.to_string();
+        PyValueError::new_err(match text.strip_prefix("bodyPoints") {
+            Some(rest) => format!("body_points{rest}"),
+            None => text,
+        })
+    })?;
+    Ok(Some(points))
 }
 
 /// The comparison table of `methods` (all that apply when `None`) on `poses`, as the Python
@@ -86,7 +91,7 @@ pub fn table<'py>(
     let json = detached(py, || {
         // As the CLI and JavaScript: with no names, a method that does not support these poses
         // is listed in `skipped`.
-        compare(poses, closed, methods.as_deref(), points).map(|t| t.to_json())
+        compare(poses, closed, methods.as_deref(), points.as_deref()).map(|t| t.to_json())
     })?
     .map_err(value_error)?;
     py.import("json")?.call_method1("loads", (json,))

@@ -28,6 +28,17 @@ pub fn value_error(e: Error) -> PyErr {
     PyValueError::new_err(e.to_string())
 }
 
+/// The `TypeError` for an argument of the wrong type, in the one wording every function uses:
+/// `NAME: expected WHAT, got a TYPE` (TYPE: the Python type's name).
+pub fn expected(obj: &Bound<'_, PyAny>, name: &str, what: &str) -> PyErr {
+    let type_name = obj
+        .get_type()
+        .name()
+        .map(|n| n.to_string())
+        .unwrap_or_else(|_| "value".into());
+    PyTypeError::new_err(format!("{name}: expected {what}, got a {type_name}"))
+}
+
 /// A float64 view of `obj` (any array-like of real numbers: floats, integers), or a `TypeError`
 /// naming `name` for anything else.
 pub fn float_array<'py>(
@@ -38,10 +49,7 @@ pub fn float_array<'py>(
         return Ok(array);
     }
     if obj.is_instance_of::<PyString>() || obj.is_instance_of::<PyBytes>() {
-        return Err(PyTypeError::new_err(format!(
-            "{name}: expected numbers, got a {}",
-            obj.get_type().name()?
-        )));
+        return Err(expected(obj, name, "numbers"));
     }
     if obj.is_instance_of::<PyBool>() {
         return Err(PyTypeError::new_err(format!(
@@ -93,10 +101,7 @@ pub fn flag(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<bool> {
     if obj.is_instance(&numpy_bool)? {
         return obj.extract();
     }
-    Err(PyTypeError::new_err(format!(
-        "{name}: expected True or False, got a {}",
-        obj.get_type().name()?
-    )))
+    Err(expected(obj, name, "True or False"))
 }
 
 /// A shape as Python writes it: `(3, 7)`, `(5,)`, `()`.
@@ -337,10 +342,7 @@ pub fn text(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<String> {
     if obj.is_instance_of::<PyString>() {
         return obj.extract();
     }
-    Err(PyTypeError::new_err(format!(
-        "{name}: expected a str, got a {}",
-        obj.get_type().name()?
-    )))
+    Err(expected(obj, name, "a str"))
 }
 
 /// An optional string argument (`None` is absent).
@@ -360,10 +362,7 @@ pub fn number(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<f64> {
             return Ok(v);
         }
     }
-    Err(PyTypeError::new_err(format!(
-        "{name}: expected a number, got a {}",
-        obj.get_type().name()?
-    )))
+    Err(expected(obj, name, "a number"))
 }
 
 /// An optional real number argument (`None` is absent).

@@ -20,8 +20,9 @@ use screwbender::{
 };
 
 use crate::convert::{
-    detached, flag, number, optional_number, optional_text, parameters, pose_from, poses_from,
-    poses_to_array, text, to_array, value_error, write_matrices, write_rows, POSE_STRIDE,
+    detached, expected, flag, number, optional_number, optional_text, parameters, pose_from,
+    poses_from, poses_to_array, text, to_array, value_error, write_matrices, write_rows,
+    POSE_STRIDE,
 };
 use crate::{compare, files};
 
@@ -87,10 +88,7 @@ fn level_count(obj: &Bound<'_, PyAny>) -> PyResult<u32> {
                 .and_then(|t| obj.is_instance(&t))
                 .unwrap_or(false));
     if !numeric {
-        return Err(PyTypeError::new_err(format!(
-            "levels: expected a whole number ≥ 0, got a {}",
-            obj.get_type().name()?
-        )));
+        return Err(expected(obj, "levels", "a whole number ≥ 0"));
     }
     // Integers beyond f64's exact range are far beyond the cap either way.
     let v = match obj.extract::<i64>() {
@@ -123,20 +121,13 @@ fn velocities_from(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Vec<Option
     let Some(obj) = obj.filter(|o| !o.is_none()) else {
         return Ok(None);
     };
+    const SEQUENCE: &str = "a sequence of numbers and None";
     if obj.is_instance_of::<pyo3::types::PyString>() {
-        return Err(PyTypeError::new_err(
-            "velocities: expected a sequence of numbers and None, got a str",
-        ));
+        return Err(expected(obj, "velocities", SEQUENCE));
     }
-    let items = obj.try_iter().map_err(|_| {
-        PyTypeError::new_err(format!(
-            "velocities: expected a sequence of numbers and None, got a {}",
-            obj.get_type()
-                .name()
-                .map(|n| n.to_string())
-                .unwrap_or_default()
-        ))
-    })?;
+    let items = obj
+        .try_iter()
+        .map_err(|_| expected(obj, "velocities", SEQUENCE))?;
     let mut out = Vec::new();
     for (i, item) in items.enumerate() {
         let item = item?;
@@ -149,15 +140,9 @@ fn velocities_from(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Vec<Option
                 "velocities[{i}]: expected a number or None, got a bool"
             )));
         }
-        let v: f64 = item.extract().map_err(|_| {
-            PyTypeError::new_err(format!(
-                "velocities[{i}]: expected a number or None, got a {}",
-                item.get_type()
-                    .name()
-                    .map(|n| n.to_string())
-                    .unwrap_or_default()
-            ))
-        })?;
+        let v: f64 = item
+            .extract()
+            .map_err(|_| expected(&item, &format!("velocities[{i}]"), "a number or None"))?;
         out.push(Some(v));
     }
     Ok(Some(out))

@@ -5,14 +5,13 @@
 
 use std::str::FromStr;
 
-use glam::{DQuat, DVec3};
+use glam::DQuat;
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
 use super::convert::{count, is_absent, plain, poses_from_fn, push_kinematics, to_js};
 use super::motion::sample_parameters;
 use super::MotionHandle;
-use screwbender::frontend::compare::MAX_BODY_POINTS;
 use screwbender::methods::{
     fit_barr, fit_quaternion_spline, interpolation_error, kinematics_at, single_step_metrics,
     triangle_samples, BarrOptions, Continuity, Derivatives, EndCondition, Method, MetricsOptions,
@@ -247,33 +246,13 @@ pub fn methods() -> Result<JsValue, JsError> {
     to_js(&list)
 }
 
-/// Body points from an optional array of `[x, y, z]`.
-fn body_points(value: &JsValue) -> Result<Option<Vec<DVec3>>, Error> {
+/// Body points from an optional array of `[x, y, z]` (checked by the core).
+fn body_points(value: &JsValue) -> Result<Option<Vec<[f64; 3]>>, Error> {
     if is_absent(value) {
         return Ok(None);
     }
     let v = plain(value, "bodyPoints")?;
-    let list: Vec<[f64; 3]> = super::convert::from_js(&v, "bodyPoints", "body points")?;
-    if list.is_empty() || list.len() > MAX_BODY_POINTS {
-        return Err(Error::new(
-            "bodyPoints",
-            ErrorKind::OutOfRange {
-                value: format!("{} points", list.len()),
-                expected: format!("1 to {MAX_BODY_POINTS} points"),
-            },
-        ));
-    }
-    list.iter()
-        .enumerate()
-        .map(|(i, p)| {
-            if p.iter().all(|v| v.is_finite()) {
-                Ok(DVec3::from_array(*p))
-            } else {
-                Err(Error::new(format!("bodyPoints[{i}]"), ErrorKind::NonFinite))
-            }
-        })
-        .collect::<Result<Vec<_>, Error>>()
-        .map(Some)
+    super::convert::from_js(&v, "bodyPoints", "body points").map(Some)
 }
 
 /// An optional non-negative number option.
@@ -387,7 +366,7 @@ impl MotionHandle {
             &doc.poses,
             doc.closed,
             names.as_deref(),
-            body_points(&points)?,
+            body_points(&points)?.as_deref(),
         )?;
         to_js(&table)
     }
@@ -405,7 +384,7 @@ impl MotionHandle {
     ) -> Result<JsValue, JsError> {
         let mut options = MetricsOptions::default();
         if let Some(p) = body_points(&points)? {
-            options.body_points = p;
+            options.body_points = screwbender::frontend::compare::body_points(&p)?;
         }
         let (doc, sub) = self.snapshot()?;
         let h = 0.5f64.powi(sub.levels as i32);
