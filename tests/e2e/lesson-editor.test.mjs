@@ -76,6 +76,9 @@ test('a two-step lesson is built with real events, previewed and solved as a stu
   await done();
   await typeInto('id', 'editor-check');
   await done();
+  // The problem list names the step and field; a click on one puts the focus in the field.
+  await page.locator('#lesson-editor .le-problem', { hasText: 'Step 1 · text' }).click();
+  assert.equal(await page.evaluate(() => document.activeElement?.dataset.path), 'steps[0].text');
   await typeInto('steps[0].title', 'A question');
   await done();
   await typeInto('steps[0].text', 'The screw turns by $\\theta$ and slides by $d$.');

@@ -1,9 +1,10 @@
 // An exercise's checks in the editor: each check as a row of fields, and the form that makes a
-// new check from what is on the page now — a pose's origin, one coordinate of it or its rotation,
-// a span's angle, slide or pitch, the scheme and levels — with the tolerance the teacher sets
-// ("pose 1 within 0.1 of where it is now"). The check kinds and fields are the lesson format's
+// new check from what is on the page now — a pose's origin (or one coordinate of it, where the
+// format has single-coordinate pose checks) or its rotation, a span's angle, slide or pitch, the
+// scheme and levels, a metric's threshold — with the tolerance the teacher sets ("pose 1 within
+// 0.1 of where it is now", "the velocity jump at most its value now + 0.01"). The check kinds and fields are the lesson format's
 // (format.js CHECK_FIELDS, www/lessons/README.md).
-import { CHECK_FIELDS } from '../format.js';
+import { CHECK_FIELDS, METRIC_FIELDS } from '../format.js';
 import { el } from '../dom.js';
 
 const DEG = 180 / Math.PI;
@@ -21,6 +22,7 @@ export const FROM_PAGE = {
   slide: "a span's slide",
   pitch: "a span's pitch",
   options: 'the scheme and levels',
+  ...Object.fromEntries(METRIC_FIELDS.map((f) => [`metric:${f}`, `at most: ${f.replace(/_/g, ' ')}`])),
 };
 
 /**
@@ -41,6 +43,15 @@ export function checkFromPage(app, what, index, tol) {
   if (what === 'options') {
     const o = m.options();
     return { kind: 'options', scheme: o.scheme, levels: o.levels };
+  }
+  if (what.startsWith('metric:')) {
+    // Present once the analysis module has loaded (see checksForm).
+    if (typeof m.motionMetrics !== 'function') throw new Error('the analysis functions are not loaded yet');
+    const field = what.slice('metric:'.length);
+    const r = m.motionMetrics(undefined);
+    const v = field === 'fourPointGap' ? r.fourPointGap : r.row[field];
+    if (typeof v !== 'number' || !Number.isFinite(v)) throw new Error(`${field} cannot be measured on this motion (${r.row.notes?.join('; ') ?? 'no value'})`);
+    return { kind: 'metric', field, max: round(v + tol) };
   }
   const spans = m.spanScrews();
   if (!(Number.isInteger(index) && index >= 0 && index < spans.length)) throw new Error(`there is no span ${index} (the motion has ${spans.length} spans)`);
@@ -137,7 +148,7 @@ export function checksForm(ed, i) {
   add.type = 'button';
   const sync = () => {
     ed.ui.checkWhat = what.value;
-    indexLabel.hidden = what.value === 'options';
+    indexLabel.hidden = what.value === 'options' || what.value.startsWith('metric:');
     tolLabel.hidden = what.value === 'options';
     indexLabel.firstChild.textContent = ['angle', 'slide', 'pitch'].includes(what.value) ? 'span ' : 'pose ';
   };
@@ -145,9 +156,10 @@ export function checksForm(ed, i) {
   index.addEventListener('change', () => (ed.ui.checkIndex = Number(index.value)));
   tol.addEventListener('change', () => (ed.ui.checkTol = Number(tol.value)));
   sync();
-  add.addEventListener('click', () => {
+  add.addEventListener('click', async () => {
     let c;
     try {
+      if (what.value.startsWith('metric:')) await ed.app.analysis();
       c = checkFromPage(ed.app, what.value, Number(index.value), what.value === 'options' ? 1 : Number(tol.value));
     } catch (e) {
       ed.say(`Cannot make the check: ${e.message}.`);

@@ -5,7 +5,14 @@
 // used.
 import { el } from '../dom.js';
 import { deleteDraft, listDrafts, onDraftsChanged, readDraft, restoreDraft } from '../drafts.js';
-import { lessonFromLink, linkPayload } from '../link.js';
+
+/**
+ * The lesson link's module (link.js), fetched when a link is read: it brings the deflate code,
+ * which the page needs for nothing else at start.
+ */
+const linkModule = () => import('../link.js');
+/** Whether `hash` is a lesson link's fragment (link.js LINK_KEY), known without fetching link.js. */
+const isLessonLink = (hash) => hash.startsWith('#lesson=');
 
 /**
  * The section; `hideMenu()` closes the Lessons menu, `pasted()` is the text of the menu's paste
@@ -16,6 +23,8 @@ import { lessonFromLink, linkPayload } from '../link.js';
 export function createWriteSection(app, { hideMenu, pasted, player }) {
   const box = el('section', 'write-lessons');
   box.id = 'write-lessons';
+  // A lesson package's page (an LMS) is for students: nothing to write there.
+  box.hidden = document.documentElement.dataset.lessonPackage === '1';
   const row = el('div', 'row');
   const newBtn = el('button', '', 'New lesson');
   newBtn.id = 'lesson-new';
@@ -125,7 +134,7 @@ export function createWriteSection(app, { hideMenu, pasted, player }) {
     let lesson = text;
     if (!text.startsWith('{')) {
       try {
-        lesson = lessonFromLink(text);
+        lesson = (await linkModule()).lessonFromLink(text);
       } catch (e) {
         return app.showError(`The pasted text is neither a lesson file nor a lesson link: ${e.message}.`, 'error', 'lesson');
       }
@@ -147,10 +156,10 @@ export function createWriteSection(app, { hideMenu, pasted, player }) {
  * broken link.
  */
 export async function openLinkedLesson(app, openText, ready) {
-  if (linkPayload(location.hash) === null) return;
+  if (!isLessonLink(location.hash)) return;
   await ready;
   try {
-    openText(lessonFromLink(location.hash), 'from the link', { resume: true });
+    openText((await linkModule()).lessonFromLink(location.hash), 'from the link', { resume: true });
   } catch (e) {
     app.showError(`This page's lesson link cannot be opened: ${e.message}.`, 'error', 'lesson');
   }
