@@ -10,8 +10,8 @@ import { el } from '../dom.js';
 const DEG = 180 / Math.PI;
 /** Rounds what the page measured to what a teacher would write (6 significant digits). */
 const round = (x) => Number(x.toPrecision(6));
-/** A pose check may name one coordinate where the format has `axis` and `value` fields. */
-const ONE_COORDINATE = CHECK_FIELDS.pose.includes('axis') && CHECK_FIELDS.pose.includes('value');
+/** A pose check may test one coordinate where the format has its `coordinate` and `value` fields. */
+const ONE_COORDINATE = CHECK_FIELDS.pose.includes('coordinate') && CHECK_FIELDS.pose.includes('value');
 
 /** The kinds of check the form makes from the page: value → words. */
 export const FROM_PAGE = {
@@ -38,7 +38,7 @@ export function checkFromPage(app, what, index, tol) {
     const p = m.pose(index);
     if (what === 'origin') return { kind: 'pose', pose: index, origin: p.origin.map(round), tolerance: tol };
     if (what === 'rotation') return { kind: 'pose', pose: index, rotation: p.rotation.map(round), angleTolerance: tol };
-    return { kind: 'pose', pose: index, axis: what, value: round(p.origin['xyz'.indexOf(what)]), tolerance: tol };
+    return { kind: 'pose', pose: index, coordinate: what, value: round(p.origin['xyz'.indexOf(what)]), tolerance: tol };
   }
   if (what === 'options') {
     const o = m.options();
