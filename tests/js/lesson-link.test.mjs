@@ -10,7 +10,7 @@ import { describe, it } from 'node:test';
 import { fileURLToPath } from 'node:url';
 import { deflateSync } from 'fflate';
 import { lessonFromLink, lessonLink, linkPayload, MAX_LINK_CHARS } from '../../www/js/lessons/link.js';
-import { deleteDraft, listDrafts, readDraft, restoreDraft, saveDraft, LESSON_DRAFT_PREFIX } from '../../www/js/lessons/drafts.js';
+import { deleteDraft, listDrafts, readDraft, restoreDraft, saveDraft, LESSON_DRAFT_PREFIX, MAX_LESSON_DRAFTS } from '../../www/js/lessons/drafts.js';
 
 const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 const PAGE = 'https://example.org/screwbender/index.html';
@@ -81,5 +81,15 @@ describe('lesson drafts', () => {
     restoreDraft(gone);
     assert.deepEqual(readDraft('b'), gone);
     assert.equal(deleteDraft('nope'), null);
+  });
+
+  it('past the limit the oldest draft gives way; saving a kept draft again drops none', () => {
+    for (let k = 0; k < MAX_LESSON_DRAFTS + 3; k++) saveDraft({ id: `n${k}`, name: `N${k}`, lesson: { steps: [] }, savedAt: 10000 + k });
+    const ids = listDrafts().map((d) => d.id);
+    assert.equal(ids.length, MAX_LESSON_DRAFTS);
+    assert.equal(ids.at(-1), 'n3');
+    saveDraft({ id: 'n3', name: 'N3', lesson: { steps: [] }, savedAt: 99999 });
+    assert.equal(listDrafts().length, MAX_LESSON_DRAFTS);
+    assert.equal(listDrafts()[0].id, 'n3');
   });
 });

@@ -74,8 +74,12 @@ export function saveDraft(draft) {
   if (!s) return false;
   const d = { id: draft.id, name: draft.name, savedAt: draft.savedAt ?? Date.now(), lesson: draft.lesson };
   try {
-    const others = listDrafts().filter((o) => o.id !== d.id);
-    for (const o of others.slice(MAX_LESSON_DRAFTS - 1)) s.removeItem(LESSON_DRAFT_PREFIX + o.id);
+    // Only a new draft can pass the limit (the editor saves its draft at every change: the
+    // others are not read then).
+    if (s.getItem(LESSON_DRAFT_PREFIX + d.id) === null) {
+      const others = listDrafts().filter((o) => o.id !== d.id);
+      for (const o of others.slice(MAX_LESSON_DRAFTS - 1)) s.removeItem(LESSON_DRAFT_PREFIX + o.id);
+    }
     s.setItem(LESSON_DRAFT_PREFIX + d.id, JSON.stringify(d));
     return true;
   } catch {
