@@ -2,8 +2,8 @@
 // The lesson editor (www/js/lessons/editor/, docs/teaching/editor.md) with real mouse and
 // keyboard events only, no JSON typed: a two-step lesson — a multiple-choice question with a
 // `why`, then a pose check filled from the current pose with a tolerance and a highlight picked
-// by clicking the pose — is built, previewed and solved as a student (a wrong answer first),
-// saved, and reopened from the file and from the lesson link in a fresh browser context, giving
+// by clicking the pose — is built, previewed and solved as a student (first a wrong answer, and
+// the pose dragged past the tolerance), saved, and reopened from the file and from the lesson link in a fresh browser context, giving
 // the same lesson. Every editor action is undone and redone, each step back and forth giving
 // the lesson as it was. The drafts survive a reload and show in a second tab, and a deleted one
 // comes back with Undo. A lesson link over the limit gets the message. Screenshots go to
@@ -11,7 +11,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
-import { BACKEND, startPlayground, openPage, shotPath, waitFrames } from './lib.mjs';
+import { BACKEND, startPlayground, openPage, shotPath, mouseDrag, waitFrames } from './lib.mjs';
 
 let play;
 let page;
@@ -150,6 +150,16 @@ test('a two-step lesson is built with real events, previewed and solved as a stu
   await page.locator('#lesson .bar i.solved').first().waitFor();
   await page.locator('#lesson .next').click();
   await page.locator('#lesson[data-step="1"]').waitFor();
+  await waitFrames(page, 2);
+  // Pose 1 dragged up by its gizmo's z arrow, well past the tolerance: not solved; the page's
+  // Undo puts it back: solved.
+  const g = await page.evaluate(() => window.screwbender.gizmoOnPage('axis-z'));
+  await mouseDrag(page, g, 0, -90);
+  const moved = await page.evaluate(() => window.screwbender.poses()[9]);
+  assert.ok(Math.abs(moved - pose1[2]) > 0.3, `pose 1's z moved from ${pose1[2]} to ${moved}`);
+  await page.locator('#lesson button.check').click();
+  await page.locator('#lesson .feedback.no').waitFor();
+  await page.locator('#t-undo').click();
   await page.locator('#lesson button.check').click();
   await page.locator('#lesson .bar i.solved').nth(1).waitFor();
   await page.locator('#le-back').click();
