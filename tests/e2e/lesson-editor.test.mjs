@@ -165,6 +165,9 @@ test('a two-step lesson is built with real events, previewed and solved as a stu
   await page.locator('#le-back').click();
   await page.locator('#lesson-editor:not([hidden])').waitFor();
   assert.equal(await page.locator('#lesson').isHidden(), true);
+  // What the preview solved is not kept as a student's progress of the lesson.
+  const progress = await page.evaluate(() => JSON.parse(localStorage.getItem('screwbender.lesson.editor-check') ?? 'null'));
+  assert.deepEqual(progress?.solved ?? [], []);
 });
 
 test('every editor action is undone and redone, each step giving the lesson as it was', async () => {

@@ -7,7 +7,8 @@
 // the step list (step-list.js), the step form (step-form.js) with the text fields
 // (text-field.js), the highlight picking (pick.js), the exercise (exercise-form.js) and its
 // checks (check-form.js), a step's setup from the page (capture.js). Output: preview as a
-// student (the lesson player), the .json file, the lesson link (lessons/link.js), and a SCORM
+// student (the lesson player; the progress a student had under the lesson's id is put back
+// after it), the .json file, the lesson link (lessons/link.js), and a SCORM
 // package (package-dialog.js).
 import { VIEW_IDS } from '../../views/index.js';
 import { History } from '../../editor/session.js';
@@ -16,6 +17,7 @@ import { el } from '../dom.js';
 import { newDraftId, saveDraft } from '../drafts.js';
 import { lessonFromLink, lessonLink } from '../link.js';
 import { MAX_LESSON_BYTES } from '../format.js';
+import { readProgress, writeProgress } from '../progress.js';
 import { capture } from './capture.js';
 import { problemsOf, renderProblems } from './problems.js';
 import { stepList } from './step-list.js';
@@ -304,6 +306,8 @@ export function createLessonEditor(app, player) {
 
   /** While the player shows the lesson being written. */
   let previewing = false;
+  /** The progress kept under the previewed lesson's id before the preview: the preview's own is not a student's. */
+  let kept = null;
   // A lesson the player opens otherwise (the Lessons menu, a link) takes the column: the editor
   // steps aside, its draft kept.
   player.events?.addEventListener('open', () => {
@@ -313,6 +317,7 @@ export function createLessonEditor(app, player) {
   function preview() {
     const text = lessonText(ed.doc);
     previewing = true;
+    kept = typeof ed.doc.id === 'string' ? { id: ed.doc.id, progress: readProgress(ed.doc.id) } : null;
     element.hidden = true;
     document.body.classList.remove('lesson-editing');
     if (!player.openText(text, 'being written', { resume: false, progress: { step: 0, solved: [], answers: {} } })) {
@@ -320,6 +325,7 @@ export function createLessonEditor(app, player) {
       document.body.classList.add('lesson-editing');
       ed.say('The preview needs a lesson without problems: see the list.');
       previewing = false;
+      kept = null;
       return;
     }
     back.hidden = false;
@@ -330,6 +336,8 @@ export function createLessonEditor(app, player) {
     back.hidden = true;
     player.close();
     previewing = false;
+    if (kept) writeProgress(kept.id, kept.progress);
+    kept = null;
     element.hidden = false;
     layout(true);
     previewBtn.focus();
