@@ -76,6 +76,9 @@ test('a two-step lesson is built with real events, previewed and solved as a stu
   await done();
   await typeInto('id', 'editor-check');
   await done();
+  // A lesson with a problem gets no link (a student could not open it).
+  await page.locator('#le-link').click();
+  assert.match(await page.locator('#lesson-editor .le-say.bad').innerText(), /A lesson link needs a lesson without problems: 1 is listed/);
   // The problem list names the step and field; a click on one puts the focus in the field.
   await page.locator('#lesson-editor .le-problem', { hasText: 'Step 1 · text' }).click();
   assert.equal(await page.evaluate(() => document.activeElement?.dataset.path), 'steps[0].text');

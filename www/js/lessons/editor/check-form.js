@@ -162,7 +162,7 @@ export function checksForm(ed, i) {
       if (what.value.startsWith('metric:')) await ed.app.analysis();
       c = checkFromPage(ed.app, what.value, Number(index.value), what.value === 'options' ? 1 : Number(tol.value));
     } catch (e) {
-      ed.say(`Cannot make the check: ${e.message}.`);
+      ed.say(`Cannot make the check: ${e.message}.`, true);
       return;
     }
     ed.edit(`Add a check of ${FROM_PAGE[what.value]}`, (d) => {

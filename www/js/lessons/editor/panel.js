@@ -119,7 +119,11 @@ export function createLessonEditor(app, player) {
     edit,
     select,
     showStep,
-    say: (m) => (say.textContent = m),
+    /** Says `m` in the editor's message line; `bad`: as a refusal. */
+    say(m, bad = false) {
+      say.textContent = m;
+      say.classList.toggle('bad', bad);
+    },
   };
   const history = new History();
   /** The merge key and history version of the last edit (a run of typing is one undo step). */
@@ -202,8 +206,22 @@ export function createLessonEditor(app, player) {
   const problemBox = el('section', 'le-problems');
   problemBox.setAttribute('aria-live', 'polite');
 
+  /** The lesson's problems as last listed. */
+  let found = [];
+
+  /**
+   * True when the lesson has no problems; else says so (what goes to a student must open for
+   * them: a lesson with a problem does not).
+   */
+  function ready(what) {
+    if (!found.length) return true;
+    ed.say(`${what} needs a lesson without problems: ${found.length} ${found.length > 1 ? 'are' : 'is'} listed above. Save .json keeps it as it is.`, true);
+    return false;
+  }
+
   function problems() {
     const list = problemsOf(ed.doc, ctx);
+    found = list;
     element.dataset.problems = String(list.length);
     renderProblems(problemBox, list, (p) => jump(p.path, p.step));
   }
@@ -239,7 +257,7 @@ export function createLessonEditor(app, player) {
     try {
       applyStep(app, s, () => {});
     } catch (e) {
-      ed.say(`Step ${i + 1} cannot be shown: ${e.message}`);
+      ed.say(`Step ${i + 1} cannot be shown: ${e.message}`, true);
     }
   }
 
@@ -355,14 +373,13 @@ export function createLessonEditor(app, player) {
   }
 
   async function copyLink() {
+    if (!ready('A lesson link')) return;
     const { url, error } = lessonLink(JSON.stringify(ed.doc));
     if (error) {
       linkOut.hidden = true;
-      ed.say(error);
-      say.classList.add('bad');
+      ed.say(error, true);
       return;
     }
-    say.classList.remove('bad');
     linkOut.value = url;
     linkOut.hidden = false;
     try {
@@ -376,12 +393,13 @@ export function createLessonEditor(app, player) {
 
   let packageDialog = null;
   async function packageIt() {
+    if (!ready('A package for an LMS')) return;
     try {
       packageDialog ??= import('../package-dialog.js').then((m) => m.createPackageDialog(app, () => null));
       (await packageDialog).open({ file: `${String(ed.doc.id || 'lesson').replace(/[^\w-]+/g, '-')}.json`, text: lessonText(ed.doc), title: ed.doc.title || 'This lesson' });
     } catch (e) {
       packageDialog = null;
-      ed.say(`Could not load the package dialog (${e.message}).`);
+      ed.say(`Could not load the package dialog (${e.message}).`, true);
     }
   }
 
@@ -393,7 +411,7 @@ export function createLessonEditor(app, player) {
       lesson = JSON.parse(text);
       if (!lesson || typeof lesson !== 'object' || Array.isArray(lesson)) throw new Error('a lesson is a JSON object');
     } catch (e) {
-      ed.say(`${source} cannot be opened: ${e.message}. Nothing was changed.`);
+      ed.say(`${source} cannot be opened: ${e.message}. Nothing was changed.`, true);
       return false;
     }
     open(lesson);
@@ -412,7 +430,7 @@ export function createLessonEditor(app, player) {
     try {
       if (openText(lessonFromLink(v), 'the lesson link')) openLink.value = '';
     } catch (e) {
-      ed.say(`The link cannot be opened: ${e.message}. Nothing was changed.`);
+      ed.say(`The link cannot be opened: ${e.message}. Nothing was changed.`, true);
     }
   });
   // The editor's own Undo and Redo keys while the focus is in it (the page's stay the page's).
