@@ -277,4 +277,5 @@ test('a lesson link over the limit gets the message; drafts survive a reload, a 
   await page.screenshot({ path: shotPath('lesson-editor/editor-390.png') });
   await page.setViewportSize({ width: 1280, height: 800 });
   assert.deepEqual(problems, []);
+  assert.deepEqual(await page.evaluate(() => window.__csp), [], 'no content-security-policy violation');
 });
