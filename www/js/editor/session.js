@@ -84,12 +84,22 @@ export const MERGE_IDLE_MS = 1000;
  */
 export const MAX_SHARE_CHARS = 2_000_000;
 
-/** UTF-8 JSON → base64url, and back. */
-export function encodeHash(obj) {
-  const bytes = new TextEncoder().encode(JSON.stringify(obj));
+/** Bytes → base64url text (no padding): the alphabet a URL fragment carries unescaped. */
+export function bytesToBase64url(bytes) {
   let bin = '';
   for (const b of bytes) bin += String.fromCharCode(b);
   return btoa(bin).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+}
+
+/** Base64url text → bytes; the caller has checked the alphabet and the length. */
+export function base64urlToBytes(text) {
+  const bin = atob(text.replace(/-/g, '+').replace(/_/g, '/'));
+  return Uint8Array.from(bin, (c) => c.charCodeAt(0));
+}
+
+/** UTF-8 JSON → base64url, and back. */
+export function encodeHash(obj) {
+  return bytesToBase64url(new TextEncoder().encode(JSON.stringify(obj)));
 }
 
 /**
@@ -105,8 +115,7 @@ export function decodeHash(text) {
   if (!/^[A-Za-z0-9_-]+$/.test(text) || text.length % 4 === 1) {
     throw new Error('the link is malformed (its session is not base64url text; was it cut off?)');
   }
-  const bin = atob(text.replace(/-/g, '+').replace(/_/g, '/'));
-  const bytes = Uint8Array.from(bin, (c) => c.charCodeAt(0));
+  const bytes = base64urlToBytes(text);
   let json;
   try {
     json = new TextDecoder('utf-8', { fatal: true }).decode(bytes);

@@ -1,8 +1,11 @@
 // The Lessons button of the toolbar and its menu: the lessons of lessons/index.json with each
 // one's saved progress, the tour, opening a lesson file by chooser, drop or paste, the
 // "Download for an LMS (SCORM)" dialog (package-dialog.js, fetched when first used; not inside
-// a lesson package, whose page has nothing to package from); the L and Esc keys.
+// a lesson package, whose page has nothing to package from); the L and Esc keys; the lesson
+// editor's entries and drafts (editor/menu-section.js), and a lesson carried by the page's
+// address (a lesson link, link.js).
 import { MAX_LESSON_BYTES } from './format.js';
+import { createWriteSection, openLinkedLesson } from './editor/menu-section.js';
 import { readProgress } from './progress.js';
 import { BASE } from './urls.js';
 import { el } from './dom.js';
@@ -56,7 +59,11 @@ export function createMenu(app, { open, openText, current }) {
   lmsRow.append(lmsBtn);
   const mnote = el('p', 'small');
   mnote.append('A lesson is a JSON file (format: ', Object.assign(el('a', '', 'lessons/README.md'), { href: new URL('README.md', BASE).href, target: '_blank' }), '); a link with ', el('code', '', '?lesson=name'), ' opens lessons/name.json.');
-  mcard.append(el('h2', '', 'Lessons'), list, lmsRow, paste, mrow, mnote, fileInput);
+  // The player, whole: the editor previews through it and edits the lesson it shows (main.js
+  // exposes it once it has started, which is before the menu is first used).
+  const player = () => /** @type {any} */ (window).screwbender?.lessons ?? Promise.resolve(null);
+  const write = createWriteSection(app, { hideMenu: () => (menu.hidden = true), pasted: () => paste.value, player });
+  mcard.append(el('h2', '', 'Lessons'), list, lmsRow, paste, mrow, write.element, mnote, fileInput);
   menu.append(mcard);
   document.body.append(menu);
 
@@ -92,6 +99,7 @@ export function createMenu(app, { open, openText, current }) {
     tour.append(el('b', '', 'Tour of the page'), el('span', '', 'Six stops: handles, gizmo, levels, scheme, play, Analyse'));
     tour.addEventListener('click', () => open('tour', { resume: false }));
     list.append(tour);
+    write.refresh();
     menu.hidden = false;
     list.querySelector('button')?.focus();
   }
@@ -137,6 +145,8 @@ export function createMenu(app, { open, openText, current }) {
     } else return;
     e.preventDefault();
   });
+
+  player().then((p) => openLinkedLesson(app, openText, p?.ready));
 
   return {
     open: openMenu,

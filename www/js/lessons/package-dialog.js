@@ -30,13 +30,15 @@ async function bytes(path) {
 const text = async (path) => new TextDecoder().decode(await bytes(path));
 
 /**
- * Makes the zip of lessons `files` (names in lessons/) in `format` with `mastery` (0…1 or null):
- * {zip: Uint8Array, title, count}.
+ * Makes the zip of lessons `files` in `format` with `mastery` (0…1 or null): {zip: Uint8Array,
+ * title, count}. A lesson is a file name in lessons/, or {file, text}: a lesson of the page (the
+ * lesson editor's).
  */
 export async function buildPackage(files, format, mastery) {
   const list = JSON.parse(await text(FILE_LIST));
   // Lessons fresh each time (one may be being written); the playground's files from the cache.
   const lessons = await Promise.all(files.map(async (file) => {
+    if (typeof file !== 'string') return file;
     const r = await fetch(new URL(`lessons/${file}`, WWW), { cache: 'no-store' });
     if (!r.ok) throw new Error(`lessons/${file}: HTTP ${r.status}`);
     return { file, text: await r.text() };
@@ -49,7 +51,8 @@ export async function buildPackage(files, format, mastery) {
 
 /**
  * Creates the dialog (#lms-package) of `app`; `current()` is the id of the open lesson (or
- * null), checked first. Returns {open()}.
+ * null), checked first. Returns {open(extra)}: `extra`, where given, is a lesson of the page
+ * ({file, text, title}: the lesson editor's), listed first and checked.
  */
 export function createPackageDialog(app, current) {
   const modal = el('div', 'modal');
@@ -94,7 +97,7 @@ export function createPackageDialog(app, current) {
 
   /** The choices of the dialog: {files, format, mastery} or an Error's message. */
   function choices() {
-    const files = [...lessonsBox.querySelectorAll('input:checked')].map((i) => /** @type {HTMLInputElement} */ (i).value);
+    const files = [...lessonsBox.querySelectorAll('input:checked')].map((i) => (i === extraBox ? pageLesson : /** @type {HTMLInputElement} */ (i).value));
     const format = /** @type {HTMLInputElement} */ (formatBox.querySelector('input:checked')).value;
     const m = mastery.value.trim();
     if (m !== '' && !(Number(m) >= 0 && Number(m) <= 100)) return 'The pass mark is a percentage from 0 to 100.';
@@ -114,7 +117,7 @@ export function createPackageDialog(app, current) {
       size.textContent = c;
       return null;
     }
-    const key = JSON.stringify(c);
+    const key = JSON.stringify({ ...c, files: c.files.map((f) => (typeof f === 'string' ? f : f.text)) });
     if (last?.key === key) {
       download.disabled = false;
       return last.p;
@@ -133,7 +136,11 @@ export function createPackageDialog(app, current) {
     }
   }
 
-  async function open() {
+  /** The page's lesson offered by open(extra), and its checkbox. */
+  let pageLesson = null;
+  let extraBox = null;
+
+  async function open(extra = null) {
     let index;
     try {
       const r = await fetch(new URL('index.json', BASE), { cache: 'no-store' });
@@ -145,12 +152,23 @@ export function createPackageDialog(app, current) {
     const lessons = index.lessons ?? [];
     const now = current();
     lessonsBox.replaceChildren(el('legend', '', 'Lessons (several make one course)'));
+    pageLesson = extra ? { file: extra.file, text: extra.text } : null;
+    extraBox = null;
+    if (extra) {
+      const label = el('label');
+      extraBox = el('input');
+      extraBox.type = 'checkbox';
+      extraBox.value = extra.file;
+      extraBox.checked = true;
+      label.append(extraBox, ` ${extra.title} (being written)`);
+      lessonsBox.append(label);
+    }
     lessons.forEach((l, k) => {
       const label = el('label');
       const c = el('input');
       c.type = 'checkbox';
       c.value = l.file;
-      c.checked = now ? l.id === now : k === 0;
+      c.checked = !extra && (now ? l.id === now : k === 0);
       label.append(c, ` ${l.title}`);
       lessonsBox.append(label);
     });
