@@ -126,7 +126,7 @@ test('a two-step lesson is built with real events, previewed and solved as a stu
   await done();
   await typeInto('steps[1].exercise.task', 'Keep pose 1 within 0.1 of its place.');
   await done();
-  await page.locator('#le-check-what').selectOption('origin');
+  await page.locator('#le-check-what').selectOption('z');
   await page.locator('#le-check-index').fill('1');
   await page.locator('#le-check-tol').fill('0.1');
   await page.locator('#le-check-add').click();
@@ -136,7 +136,8 @@ test('a two-step lesson is built with real events, previewed and solved as a stu
   assert.equal(check.kind, 'pose');
   assert.equal(check.pose, 1);
   assert.equal(check.tolerance, 0.1);
-  check.origin.forEach((x, k) => assert.ok(Math.abs(x - pose1[k]) < 1e-5, `origin[${k}] ${x} is pose 1's ${pose1[k]}`));
+  assert.equal(check.coordinate, 'z', 'one coordinate of the pose, as the form chose');
+  assert.ok(Math.abs(check.value - pose1[2]) < 1e-5, `value ${check.value} is pose 1's z ${pose1[2]}`);
   assert.equal(await page.locator('#lesson-editor').getAttribute('data-problems'), '0', await page.locator('.le-problems').innerText());
   await page.screenshot({ path: shotPath('lesson-editor/editor-1280.png') });
 

@@ -1,7 +1,6 @@
 // The problem list of the lesson editor: every problem of the lesson being written, each naming
 // its step and field, a click jumping to the field. The problems come from the lesson format's
-// validator (format.js lessonProblems). Where the validator only reports its first problem
-// (validateLesson throws), problemsOf falls back to that one problem in the same shape.
+// validator (format.js lessonProblems).
 import * as format from '../format.js';
 import { el } from '../dom.js';
 
@@ -11,13 +10,6 @@ import { el } from '../dom.js';
  * @typedef {{path: string, step: number | null, field: string, message: string}} Problem
  */
 
-/** `path`'s step index and last part. */
-export function locate(path) {
-  const m = /^steps\[(\d+)\]/.exec(path);
-  const field = path.split('.').pop()?.replace(/\[\d+\]$/, '') ?? '';
-  return { step: m ? Number(m[1]) : null, field };
-}
-
 /**
  * Every problem of `lesson` (in file form) against the page's `ctx` (format.js parseLesson).
  * The lesson is not changed (the validator writes parsed fields into what it checks: it gets a
@@ -25,17 +17,7 @@ export function locate(path) {
  * @returns {Problem[]}
  */
 export function problemsOf(lesson, ctx) {
-  const copy = structuredClone(lesson);
-  const all = /** @type {any} */ (format).lessonProblems;
-  if (typeof all === 'function') return all(copy, ctx);
-  try {
-    format.validateLesson(copy, ctx);
-    return [];
-  } catch (e) {
-    const path = e instanceof format.LessonError ? e.path : '';
-    const message = path && e.message.startsWith(`${path}: `) ? e.message.slice(path.length + 2) : e.message;
-    return [{ path, ...locate(path), message }];
-  }
+  return format.lessonProblems(structuredClone(lesson), ctx);
 }
 
 /**
