@@ -6,7 +6,7 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { playgroundPage, waitFrames, ROOT, BACKEND } from './lib.mjs';
+import { playgroundPage, openPage, waitFrames, ROOT, BACKEND } from './lib.mjs';
 
 const AXE = fs.readFileSync(path.join(ROOT, 'node_modules/axe-core/axe.min.js'), 'utf8');
 let play;
@@ -14,13 +14,25 @@ let page;
 let problems;
 
 before(async () => {
-  ({ play, page, problems } = await playgroundPage());
+  // The page as most people see it (the audits include the panels' colours over the view).
+  ({ play, page, problems } = await playgroundPage({ defaultLook: true }));
   // Evaluated through the debugging protocol: the page's CSP (rightly) refuses inline scripts.
   await page.evaluate(AXE);
 });
 
 after(async () => {
   await play?.close();
+});
+
+test(`${BACKEND}: the floating panels are blurred glass, and solid with reduced transparency`, async () => {
+  const look = (p) => p.evaluate(() => ['title', 'toolbar', 'timeline'].map((id) => {
+    const s = getComputedStyle(document.getElementById(id));
+    return `${id} ${s.backdropFilter} ${s.backgroundColor}`;
+  }));
+  assert.deepEqual(await look(page), ['title', 'toolbar', 'timeline'].map((id) => `${id} blur(6px) rgba(255, 255, 255, 0.86)`));
+  const { page: reduced } = await openPage(play.context, play.url, BACKEND);
+  assert.deepEqual(await look(reduced), ['title', 'toolbar', 'timeline'].map((id) => `${id} none rgb(255, 255, 255)`));
+  await reduced.close();
 });
 
 /** The serious and critical violations of the page as it is now, as readable lines. */

@@ -123,12 +123,26 @@ export async function launch(backend, { softwarePage = true } = {}) {
 }
 
 /**
+ * Emulates the reduced-transparency system setting in `page` (before it loads anything): the
+ * page's panels then have no backdrop blur, which SwiftShader redraws on every frame of the view
+ * behind them at about a quarter of the frame's cost. The blur is plain CSS with no logic of the
+ * page behind it; editor-a11y.test.mjs checks that both settings style the panels as meant.
+ * (Playwright's emulateMedia has no such option; a later emulateMedia call resets it.)
+ */
+export async function reduceTransparency(page) {
+  const cdp = await page.context().newCDPSession(page);
+  await cdp.send('Emulation.setEmulatedMedia', { features: [{ name: 'prefers-reduced-transparency', value: 'reduce' }] });
+}
+
+/**
  * Opens the playground in a fresh page of `context`; collects console errors and page errors.
+ * Reduced transparency is emulated (reduceTransparency) unless `defaultLook`.
  * For 'webgl2' the page is forced to WebGL2 with ?backend=webgl2 as well (belt and braces:
  * without the WebGPU flags there is no adapter anyway).
  */
-export async function openPage(context, url, backend, { path = '' } = {}) {
+export async function openPage(context, url, backend, { path = '', defaultLook = false } = {}) {
   const page = await context.newPage();
+  if (!defaultLook) await reduceTransparency(page);
   const problems = [];
   page.on('console', (m) => {
     if (m.type() === 'error') problems.push(`console: ${m.text()}`);
@@ -213,10 +227,11 @@ export async function canvasStats(page) {
 
 /**
  * One playground page for a test file: serves www/, launches Chromium for BACKEND and opens the
- * page; returns {play, page, problems} (close with play.close()).
+ * page; returns {play, page, problems} (close with play.close()). `options`: startPlayground's,
+ * and openPage's `defaultLook`.
  */
-export async function playgroundPage(options) {
+export async function playgroundPage(options = {}) {
   const play = await startPlayground(options);
-  const { page, problems } = await openPage(play.context, play.url, BACKEND);
+  const { page, problems } = await openPage(play.context, play.url, BACKEND, { defaultLook: options.defaultLook });
   return { play, page, problems };
 }
