@@ -132,6 +132,16 @@ function goodLesson() {
 }
 
 describe('the validator', () => {
+  it('checks a step\'s camera field by field, all problems at once', () => {
+    const l = JSON.parse(read('02-polyscrew.json'));
+    l.steps[0].camera = { target: [0, 1, 2], distance: 9, yaw: -1, pitch: 0.5, ortho: true };
+    assert.deepEqual(lessonProblems(l, ctx), [], 'a whole camera');
+    l.steps[0].camera = { target: [0, 1], distance: 0, yaw: 'x', pitch: 2, zoom: 1 };
+    assert.deepEqual(lessonProblems(l, ctx).map((p) => p.path), [
+      'steps[0].camera.zoom', 'steps[0].camera.target', 'steps[0].camera.distance', 'steps[0].camera.yaw', 'steps[0].camera.pitch',
+    ]);
+  });
+
   it('lists all seven mistakes of a lesson at once, each with its step and field', () => {
     // Lesson 2's steps and the first three of lesson 5: seven steps, valid as they are.
     const l = JSON.parse(read('02-polyscrew.json'));

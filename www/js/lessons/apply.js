@@ -1,5 +1,5 @@
 // What a lesson step does to the app before it is shown: its scene or document, motion options,
-// display settings, timing, selection and dock view (fields: www/lessons/README.md), through the
+// display settings, timing, camera, selection and dock view (fields: www/lessons/README.md), through the
 // page's commands.
 import { tryCommand } from '../editor/commands.js';
 import { withS } from './format.js';
@@ -23,6 +23,10 @@ export function applyStep(app, s, setTarget) {
     app.updateAnim();
   }
   if (t.play !== undefined) app.setPlaying(t.play);
+  if (s.camera) {
+    app.camera.load(s.camera);
+    app.viewer.cameraMoved();
+  }
   if (s.dock !== undefined && s.dock !== (app.view.dock || '')) app.openView(s.dock);
   if (s.stepsAt !== undefined) app.dock.current?.goTo?.(s.stepsAt);
   setTarget(s.highlight ?? null);

@@ -46,7 +46,7 @@ export const DISPLAY_FIELDS = {
   object: 'string', strobe: 'number', showStrobe: 'boolean', showControl: 'boolean', showTriads: 'boolean',
   showTrajectories: 'boolean', showPolyscrew: 'boolean', showPolygon: 'boolean', showGrid: 'boolean',
 };
-const STEP_FIELDS = ['title', 'text', 'params', 'scene', 'document', 'options', 'display', 'timing', 'dock', 'stepsAt', 'select', 'highlight', 'exercise'];
+const STEP_FIELDS = ['title', 'text', 'params', 'scene', 'document', 'options', 'display', 'timing', 'camera', 'dock', 'stepsAt', 'select', 'highlight', 'exercise'];
 const HIGHLIGHT_KINDS = ['control', 'panel', 'pose', 'gizmo'];
 const GIZMO_PARTS = ['axis-x', 'axis-y', 'axis-z', 'plane-x', 'plane-y', 'plane-z', 'ring-x', 'ring-y', 'ring-z', 'trackball'];
 
@@ -279,6 +279,7 @@ function checkStepBody(s, p, ctx, P) {
   if (s.options !== undefined) guard(P, () => validateOptions(s.options, `${p}.options`, false, P));
   if (s.display !== undefined) guard(P, () => validateDisplay(s.display, `${p}.display`, P));
   if (s.timing !== undefined) guard(P, () => validateTiming(s.timing, `${p}.timing`, P));
+  if (s.camera !== undefined) guard(P, () => validateCamera(s.camera, `${p}.camera`, P));
   guard(P, () => {
     if (s.dock !== undefined && s.dock !== '') oneOf(s.dock, ctx.views, `${p}.dock`);
   });
@@ -292,6 +293,23 @@ function checkStepBody(s, p, ctx, P) {
   if (s.select !== undefined && s.select !== -1) guard(P, () => index(s.select, `${p}.select`));
   if (s.highlight !== undefined) guard(P, () => validateHighlight(s.highlight, `${p}.highlight`, ctx));
   if (s.exercise !== undefined) validateExercise(s.exercise, `${p}.exercise`, P);
+}
+
+/** A step's camera, as the page's session keeps it (view/camera.js OrbitCamera.toJSON). */
+function validateCamera(c, p, P) {
+  if (!isObj(c)) fail(p, 'expected {target, distance, yaw, pitch, ortho?}');
+  onlyKeys(c, ['target', 'distance', 'yaw', 'pitch', 'ortho'], p, P);
+  guard(P, () => vec(c.target, 3, `${p}.target`));
+  guard(P, () => {
+    num(c.distance, `${p}.distance`);
+    if (c.distance <= 0) fail(`${p}.distance`, 'expected a distance > 0');
+  });
+  guard(P, () => num(c.yaw, `${p}.yaw`));
+  guard(P, () => {
+    num(c.pitch, `${p}.pitch`);
+    if (Math.abs(c.pitch) > Math.PI / 2) fail(`${p}.pitch`, 'expected a pitch from -π/2 to π/2 (radians)');
+  });
+  if (c.ortho !== undefined && typeof c.ortho !== 'boolean') fail(`${p}.ortho`, 'expected true or false');
 }
 
 function validateDisplay(d, p, P) {

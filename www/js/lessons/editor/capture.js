@@ -1,11 +1,12 @@
 // A lesson step's setup taken from what is on the page now, in one action: the preset (where
 // the motion is still the preset's) or the motion document, the options, the display settings,
-// the timing, the open analysis view, the Split & tweak step and the selection — the fields a
-// step sets (www/lessons/README.md), so showing the step brings the page back to this state.
+// the timing, the camera, the open analysis view, the Split & tweak step and the selection —
+// the fields a step sets (www/lessons/README.md), so showing the step brings the page back to
+// this state.
 import { DISPLAY_FIELDS } from '../format.js';
 
 /** The keys of a step that capture() fills: the rest (texts, highlight, exercise) stays. */
-export const SETUP_KEYS = ['scene', 'document', 'options', 'display', 'timing', 'dock', 'stepsAt', 'select'];
+export const SETUP_KEYS = ['scene', 'document', 'options', 'display', 'timing', 'camera', 'dock', 'stepsAt', 'select'];
 
 /** Rounds away float noise (a dragged pose): 12 significant digits keep what a file needs. */
 const tidy = (x) => (Number.isFinite(x) ? Number(x.toPrecision(12)) : x);
@@ -41,6 +42,8 @@ export function capture(app) {
   }
   const times = app.times();
   step.timing = { times: times ? times.map(tidy) : null, speed: Math.min(4, Math.max(0.1, app.anim.speed)), play: !!app.anim.playing, u: tidy(app.anim.u) };
+  const cam = app.camera.toJSON();
+  step.camera = { target: cam.target.map(tidy), distance: tidy(cam.distance), yaw: tidy(cam.yaw), pitch: tidy(cam.pitch), ortho: cam.ortho };
   step.dock = app.view.dock || '';
   const at = app.dock?.current?.state?.index;
   if (step.dock === 'steps' && Number.isInteger(at) && at >= 0 && at <= 9) step.stepsAt = at;
