@@ -186,6 +186,9 @@ test('the J_s parameter: attribute s, its former name j (alone, or agreeing with
 
 test('off-screen figures draw no frames', async () => {
   const { page, problems } = await sharedCourse();
+  // fig-jarek has drawn (it has a renderer); then it goes below the fold, where only its being
+  // off screen can keep it from drawing.
+  await showFigure(page, 'fig-jarek');
   await page.evaluate(() => window.scrollTo(0, 0));
   const frames = () => page.evaluate(() => ['fig-screw', 'fig-jarek'].map((i) => document.getElementById(i).viewer.frames));
   await page.evaluate(() => ['fig-screw', 'fig-jarek'].forEach((i) => document.getElementById(i).play()));
