@@ -5,9 +5,11 @@
 # Each test file names its backends on a line of its own near the top (tests/e2e/run.mjs):
 #     // e2e-backends: webgpu webgl2 (why)
 # Every file runs on WebGPU. A file whose behaviour depends on how the page draws (pixels, the
-# renderer's start-up and fallback, canvas captures) runs again with WebGL2 forced. Picking,
-# layout, files, lessons and the analysis views are computed on the CPU, the same on either
-# backend, so running them twice would test nothing new. One pool of jobs (a file on a backend),
+# renderer's start-up and fallback, canvas captures) runs again with WebGL2 forced, and holds only
+# such tests: picking, layout, menus, files, lessons and the analysis views are computed on the
+# CPU, the same on either backend, so running them twice would test nothing new; they live in
+# WebGPU-only files beside it (playground-render / playground, viewer-render / viewer, media and
+# video-export / view-menu). Pictures for the docs are scripts/docs-shots.mjs's, not the tests'. One pool of jobs (a file on a backend),
 # E2E_JOBS at a time (default 2), the longest first; each file has its own server and browser.
 # Screenshots land in artifacts/e2e-webgpu/ and artifacts/e2e-webgl2/.
 #

@@ -7,7 +7,7 @@
 // On phones the Plots view shows one chart at a time, picked from a list, with nothing to scroll.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { waitFrames, playgroundPage, shotPath, BACKEND } from './lib.mjs';
+import { waitFrames, playgroundPage, BACKEND } from './lib.mjs';
 
 let play;
 let page;
@@ -43,13 +43,6 @@ async function chooseDense() {
   await page.waitForSelector('#reduce-dialog[open]');
 }
 
-/** Hides the notice and the toast (before a screenshot for the docs). */
-const quiet = () =>
-  sb(() => {
-    document.getElementById('banner').hidden = true;
-    document.getElementById('toast').hidden = true;
-  });
-
 /** The last notice's text once it names `file`. */
 async function noticeAbout(file) {
   await page.waitForFunction((f) => document.querySelector('#banner .msg')?.textContent.includes(f), file);
@@ -65,8 +58,6 @@ test(`${BACKEND}: a CSV of 200 poses asks how to import it; Esc changes nothing;
   assert.match(await page.locator('#reduce-title').textContent(), /200 poses in dense\.csv/);
   // The dialog is modal: the focus is inside it.
   assert.ok(await sb(() => document.querySelector('#reduce-dialog').contains(document.activeElement)));
-  await quiet();
-  await page.screenshot({ path: shotPath('csv-reduce.png') });
   await page.keyboard.press('Escape');
   await page.waitForSelector('#reduce-dialog', { state: 'detached' });
   assert.match(await noticeAbout('dense.csv'), /cancelled, nothing was changed/);
@@ -192,8 +183,6 @@ test(`${BACKEND}: plots have units on the y axes and at least 3 labelled ticks o
     return { scroll: b.scrollHeight, client: b.clientHeight };
   });
   assert.ok(body.scroll <= body.client + 1, `the dock scrolls: ${body.scroll} > ${body.client}`);
-  await quiet();
-  await page.screenshot({ path: shotPath('analysis-1280.png') });
   assert.deepEqual(problems, []);
 });
 
@@ -346,8 +335,6 @@ test(`${BACKEND}: dark theme (D key): the charts switch to light ink live, keepi
   // Every chart's labels are light, the near-black series light too (Timing's u).
   const all = await sb(() => window.screwbender.app.dock.current.charts.map((c) => c.plot.axes[0].stroke(c.plot, 0)));
   assert.ok(all.every((h) => hexLum(h) > 0.6), `x axes ${all}`);
-  await quiet();
-  await page.screenshot({ path: shotPath('analysis-dark-1280.png') });
   await sb(() => window.screwbender.openView('timing'));
   await sb(() => window.screwbender.flushViews());
   const u = await sb(() => {
@@ -576,10 +563,6 @@ for (const [w, h] of [[1280, 800], [390, 844], [844, 390]]) {
     for (const t of await sb(() => window.screwbender.app.dock.current.charts.map((c) => c.ticks()))) {
       assert.ok(t.x.length >= 3 && t.y.length >= 3, `ticks ${JSON.stringify(t)} at ${w}x${h}`);
     }
-    if (w === 390) {
-      await quiet();
-      await page.screenshot({ path: shotPath('analysis-390.png') });
-    }
     assert.deepEqual(problems, []);
   });
 }
@@ -626,7 +609,7 @@ for (const [w, h] of [[1280, 800], [1000, 800], [700, 800], [390, 844], [844, 39
   });
 }
 
-for (const [w, h, shot] of [[390, 844, 'analysis-390-plots.png'], [844, 390, 'analysis-844x390.png']]) {
+for (const [w, h] of [[390, 844], [844, 390]]) {
   test(`${BACKEND}: ${w}x${h}: the Plots view shows one chart at a time, picked from a list; nothing scrolls`, async () => {
     await page.setViewportSize({ width: w, height: h });
     await sb(() => window.screwbender.openView(''));
@@ -692,9 +675,6 @@ for (const [w, h, shot] of [[390, 844, 'analysis-390-plots.png'], [844, 390, 'an
     await pick.selectOption({ label: 'position x' });
     await sb(() => window.screwbender.app.seekTime(0));
     await sb(() => window.screwbender.flushViews());
-    await waitFrames(page, 2);
-    await quiet();
-    await page.screenshot({ path: shotPath(shot) });
     assert.deepEqual(problems, []);
   });
 }

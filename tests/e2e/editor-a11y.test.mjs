@@ -1,12 +1,13 @@
 // e2e-backends: webgpu (computed on the CPU, the same on either backend: once)
 // End-to-end: an accessibility audit of the playground with axe-core (from npm, injected by the
 // test: the page does not ship it). The page with the help overlay, the settings panel and each
-// analysis view of the dock open must have no serious or critical violation.
+// analysis view of the dock open, the View menu open in either theme and the recording bar shown
+// must have no serious or critical violation.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { playgroundPage, openPage, waitFrames, ROOT, BACKEND } from './lib.mjs';
+import { playgroundPage, openPage, waitFrames, openViewMenu, ROOT, BACKEND } from './lib.mjs';
 
 const AXE = fs.readFileSync(path.join(ROOT, 'node_modules/axe-core/axe.min.js'), 'utf8');
 let play;
@@ -73,4 +74,20 @@ test(`${BACKEND}: axe finds no serious or critical violation in any analysis vie
     assert.deepEqual(await audit(), [], `view ${id}`);
   }
   assert.deepEqual(problems, []);
+});
+
+test(`${BACKEND}: axe finds no serious or critical violation with the View menu open (both themes) or while recording`, async () => {
+  for (const theme of ['light', 'dark']) {
+    await page.evaluate((t) => (window.screwbender.app.updateView({ theme: t })), theme);
+    await openViewMenu(page);
+    assert.deepEqual(await audit(), [], `View menu, ${theme} theme`);
+    await page.keyboard.press('Escape');
+  }
+  await page.evaluate(() => (window.screwbender.app.updateView({ theme: 'auto' })));
+  await openViewMenu(page);
+  await page.click('#m-video');
+  await page.waitForFunction(() => !document.getElementById('rec').hidden);
+  assert.deepEqual(await audit(), [], 'recording bar');
+  await page.click('#rec-cancel');
+  await page.waitForFunction(() => document.getElementById('rec').hidden);
 });

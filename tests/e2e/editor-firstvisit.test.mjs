@@ -8,7 +8,7 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { startPlayground, openPage, waitFrames, shotPath, ROOT, BACKEND } from './lib.mjs';
+import { startPlayground, openPage, waitFrames, ROOT, BACKEND } from './lib.mjs';
 
 const ARTIFACTS = path.join(ROOT, 'artifacts', `e2e-${BACKEND}`);
 let play;
@@ -144,7 +144,6 @@ test(`${BACKEND}: two tabs: the work of each is kept, and offered again after bo
     const offer = c.page.locator('#drafts li');
     assert.equal(await offer.count(), 1, 'the other tab\'s work is offered');
     assert.match(await offer.textContent(), /pendulum|poses/i);
-    await c.page.screenshot({ path: shotPath('kept-work-offer.png') });
     await offer.locator('button', { hasText: 'Open' }).click();
     assert.equal(await posesOf(c.page), workA, 'the offered draft holds tab A\'s work');
     // Opening it is an edit: the work shown before is one Undo away.
@@ -177,7 +176,6 @@ test(`${BACKEND}: a sandboxed frame without storage says once, in words, that wo
       notices: [...document.querySelectorAll('#drafts:not([hidden])')].map((e) => e.textContent),
       errors: window.screwbender.errors(),
     }));
-    await page.screenshot({ path: shotPath('kept-work-no-storage.png') });
     assert.equal(seen.notices.length, 1, 'one notice');
     assert.match(seen.notices[0], /cannot keep your work/);
     assert.match(seen.notices[0], /Share link/);

@@ -18,7 +18,8 @@ export const EXPECTED_BACKEND = BACKEND === 'webgpu' ? 'WebGPU' : 'WebGL2';
  * Where a screenshot named `name` (a path relative to docs/screenshots/, e.g. 'timeline-phone.png' or
  * 'lessons/01.png') goes: artifacts/e2e-<backend>/ normally, so that a test run never changes a
  * committed file; docs/screenshots/ itself with DOCS_SHOTS=1, to refresh the committed copies. The folder is
- * created.
+ * created. The committed pictures other than the lessons' are made by scripts/docs-shots.mjs, not by
+ * the tests.
  */
 export function shotPath(name) {
   const dir = process.env.DOCS_SHOTS === '1' ? path.join(ROOT, 'docs/screenshots') : path.join(ROOT, `artifacts/e2e-${BACKEND}`);
@@ -180,6 +181,18 @@ export async function mouseDrag(page, from, dx, dy, { steps = 8, during } = {}) 
   }
   await page.mouse.up();
   await waitFrames(page, 1);
+}
+
+/** Runs `action` and returns the download it causes in `page` (null when none came within `ms`). */
+export async function downloadFrom(page, action, ms = 180000) {
+  const got = page.waitForEvent('download', { timeout: ms }).catch(() => null);
+  await action();
+  return got;
+}
+
+/** Opens the playground toolbar's View menu (unless it is open). */
+export async function openViewMenu(page) {
+  if ((await page.locator('#t-view').getAttribute('aria-expanded')) !== 'true') await page.click('#t-view');
 }
 
 /** Waits until at least `n` more frames were drawn. */

@@ -1,14 +1,14 @@
-// e2e-backends: webgpu webgl2 (PNG and video are read back from each backend's canvas)
+// e2e-backends: webgpu webgl2 (PNG pictures and the theme's colours are read back from each backend's canvas)
 // End-to-end: pictures out of the playground (editor/media.js) — a real PNG download at 1× and
-// 2× (size, non-blank pixels, a transparent background; the videos are video-export.test.mjs) — and the view
-// (editor/viewpoint.js, editor/theme.js): camera presets, the orthographic projection with
-// picking by a real click, the dark theme (toggle and prefers-color-scheme on a first visit),
-// the menus at phone size.
+// 2× (size, non-blank pixels, a transparent background; the videos are video-export.test.mjs),
+// what a PNG leaves out — and the dark theme as drawn (toggle, prefers-color-scheme on a first
+// visit). Each result here is pixels of the backend's drawing, so the file runs on both backends;
+// the View menu's behaviour that no drawing decides (camera presets, the orthographic projection
+// and picking, the menu's layout, refused requests) is view-menu.test.mjs, once.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
-import path from 'node:path';
-import { waitFrames, playgroundPage, openPage, BACKEND, ROOT } from './lib.mjs';
+import { waitFrames, playgroundPage, openPage, openViewMenu, downloadFrom, BACKEND } from './lib.mjs';
 
 let play;
 let page;
@@ -36,16 +36,9 @@ const DARK = [27, 31, 39];
 const BG_TOL = 4;
 
 /** Runs `action` and returns the download it causes (null when none came within `ms`). */
-async function downloadOf(action, ms = 180000) {
-  const got = page.waitForEvent('download', { timeout: ms }).catch(() => null);
-  await action();
-  return got;
-}
+const downloadOf = (action, ms) => downloadFrom(page, action, ms);
 
-/** Opens the toolbar's View menu (unless open). */
-async function openMenu() {
-  if ((await page.locator('#t-view').getAttribute('aria-expanded')) !== 'true') await page.click('#t-view');
-}
+const openMenu = () => openViewMenu(page);
 
 /** Clicks `item` in the View menu. */
 async function menuClick(item) {
@@ -139,80 +132,6 @@ test('PNG at 2×: drawn at twice the size (not scaled up), transparent backgroun
   await page.check('#m-png-1x');
   await page.uncheck('#m-png-transparent');
   await page.keyboard.press('Escape');
-});
-
-test('a bad picture request changes nothing and says why', async () => {
-  const before = await page.evaluate(() => JSON.stringify(window.screwbender.session()));
-  const r = await page.evaluate(() => window.screwbender.app.parts.media.savePng({ scale: 3 }));
-  assert.equal(r, null);
-  const errors = await page.evaluate(() => window.screwbender.errors());
-  assert.match(errors.at(-1), /scale: 3 is not 1 or 2/);
-  assert.equal(await page.evaluate(() => JSON.stringify(window.screwbender.session())), before);
-});
-
-const camera = () => page.evaluate(() => ({ ...window.screwbender.app.camera.toJSON() }));
-
-test('camera presets by key and by menu set the view direction', async () => {
-  const EPS = 1e-12;
-  await page.focus('#view');
-  await page.keyboard.press('Shift+T');
-  let c = await camera();
-  assert.ok(Math.abs(c.yaw + Math.PI / 2) < EPS && Math.abs(c.pitch - Math.PI / 2) < EPS, `top: ${c.yaw}, ${c.pitch}`);
-  // Looking straight down, x points right on the screen: pose handles keep their order in x.
-  await page.keyboard.press('Shift+F');
-  c = await camera();
-  assert.ok(Math.abs(c.yaw + Math.PI / 2) < EPS && Math.abs(c.pitch) < EPS, `front: ${c.yaw}, ${c.pitch}`);
-  // Lower-case f is still the 4-point scheme (editor/input.js), not a camera view.
-  await page.keyboard.press('f');
-  assert.equal(await page.evaluate(() => window.screwbender.options().scheme), 'fourpoint');
-  assert.equal((await camera()).pitch, c.pitch);
-  await menuClick('[data-camera=side]');
-  c = await camera();
-  assert.ok(Math.abs(c.yaw) < EPS && Math.abs(c.pitch) < EPS, `side: ${c.yaw}, ${c.pitch}`);
-  await page.click('[data-camera=iso]');
-  c = await camera();
-  assert.ok(Math.abs(c.yaw + Math.PI / 4) < EPS && Math.abs(c.pitch - Math.atan(Math.SQRT1_2)) < EPS, `iso: ${c.yaw}, ${c.pitch}`);
-  await page.keyboard.press('Escape');
-  assert.equal(await page.locator('#view-menu').isHidden(), true, 'Esc closes the menu');
-  // The top view is drawn (no degenerate look-at straight down).
-  await page.focus('#view');
-  await page.keyboard.press('Shift+T');
-  await waitFrames(page, 2);
-  const vp = await page.evaluate(() => [...window.screwbender.app.viewer.vp]);
-  assert.ok(vp.every(Number.isFinite), 'a finite view-projection looking straight down');
-});
-
-test('orthographic: the projection changes, persists, and a real click still selects a pose', async () => {
-  await menuClick('#m-ortho');
-  await page.keyboard.press('Escape');
-  await waitFrames(page, 2);
-  const s = await page.evaluate(() => {
-    const { app } = window.screwbender;
-    const p = app.camera.proj();
-    return { ortho: app.camera.ortho, p11: p[11], p15: p[15], saved: app.session().camera.ortho };
-  });
-  assert.deepEqual(s, { ortho: true, p11: 0, p15: 1, saved: true });
-  assert.equal(await page.locator('#m-ortho').getAttribute('aria-pressed'), 'true');
-  await page.evaluate(() => window.screwbender.app.frameAll());
-  await waitFrames(page, 2);
-  for (const k of [1, 3]) {
-    await page.evaluate(() => window.screwbender.app.select(-1));
-    const at = await page.evaluate((i) => window.screwbender.handleOnPage(i), k);
-    await page.mouse.click(at.x, at.y);
-    await waitFrames(page, 1);
-    assert.equal(await page.evaluate(() => window.screwbender.selected()), k, `pose ${k} selected by a click at ${at.x}, ${at.y}`);
-  }
-  // The orthographic ray is parallel to the view direction at every pixel.
-  const rays = await page.evaluate(() => {
-    const v = window.screwbender.app.viewer;
-    return [v.ray([10, 10]).d, v.ray([300, 200]).d, v.camera.forward];
-  });
-  for (const d of rays.slice(0, 2)) for (let k = 0; k < 3; k++) assert.ok(Math.abs(d[k] - rays[2][k]) < 1e-12);
-  // O toggles back to perspective.
-  await page.focus('#view');
-  await page.keyboard.press('o');
-  assert.equal(await page.evaluate(() => window.screwbender.app.camera.ortho), false);
-  assert.equal(await page.evaluate(() => window.screwbender.app.camera.proj()[11]), -1);
 });
 
 /**
@@ -311,50 +230,6 @@ test('prefers-color-scheme: dark gives the dark theme on a first visit', async (
   } finally {
     await context.close();
   }
-});
-
-test('the View menu at phone size and at 1280×800: on screen, by keyboard, Esc closes it', async () => {
-  for (const size of [{ width: 390, height: 844 }, { width: 1280, height: 800 }]) {
-    await page.setViewportSize(size);
-    await waitFrames(page, 2);
-    await page.focus('#t-view');
-    await page.keyboard.press('Enter');
-    assert.equal(await page.evaluate(() => document.activeElement.dataset.camera), 'front', 'the focus moves into the menu');
-    const box = await page.locator('#view-menu').boundingBox();
-    assert.ok(box.x >= 0 && box.y >= 0 && box.x + box.width <= size.width && box.y + box.height <= size.height, `on screen: ${JSON.stringify(box)}`);
-    for (const id of ['#m-png', '#m-video', '#m-theme']) assert.ok(await page.locator(id).isVisible(), id);
-    await page.keyboard.press('Escape');
-    assert.equal(await page.locator('#view-menu').isHidden(), true);
-    assert.equal(await page.evaluate(() => document.activeElement.id), 't-view', 'the focus goes back to the button');
-  }
-});
-
-/** The serious and critical axe violations of the page as it is now (axe from npm, injected). */
-async function audit() {
-  if (!(await page.evaluate(() => typeof window.axe?.run === 'function'))) {
-    // Through the debugging protocol: the page's CSP (rightly) refuses inline scripts.
-    await page.evaluate(fs.readFileSync(path.join(ROOT, 'node_modules/axe-core/axe.min.js'), 'utf8'));
-  }
-  const found = await page.evaluate(async () => {
-    const r = await window.axe.run(document, { resultTypes: ['violations'] });
-    return r.violations.map((v) => ({ id: v.id, impact: v.impact, nodes: v.nodes.map((n) => n.target.join(' ')) }));
-  });
-  return found.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => `${v.impact} ${v.id}: ${v.nodes.slice(0, 4).join(', ')}`);
-}
-
-test('axe: no serious or critical violation with the View menu open (both themes) and while recording', async () => {
-  for (const theme of ['light', 'dark']) {
-    await page.evaluate((t) => (window.screwbender.app.updateView({ theme: t })), theme);
-    await openMenu();
-    assert.deepEqual(await audit(), [], `View menu, ${theme} theme`);
-    await page.keyboard.press('Escape');
-  }
-  await page.evaluate(() => (window.screwbender.app.updateView({ theme: 'auto' })));
-  await menuClick('#m-video');
-  await page.waitForFunction(() => !document.getElementById('rec').hidden);
-  assert.deepEqual(await audit(), [], 'recording bar');
-  await page.click('#rec-cancel');
-  await page.waitForFunction(() => document.getElementById('rec').hidden);
 });
 
 /** The fraction of pixels where two PNGs of the same size differ (sum of channel differences > 30). */

@@ -1,16 +1,18 @@
-// e2e-backends: webgpu webgl2 (pixels of every preset, the backend the page reports)
-// End-to-end tests of the playground in headless Chromium (playwright-core + Debian chromium).
+// e2e-backends: webgpu (picking, drags, keys, files and links are computed on the CPU, the same on either backend: once)
+// End-to-end tests of editing in the playground in headless Chromium (playwright-core + Debian
+// chromium): selecting and dragging poses and gizmo parts, undo and redo, shortcuts, playback,
+// the autosave across a reload, a share link in a fresh context, bad input, export, touch.
 //
-//   E2E_BACKEND=webgpu|webgl2 node --test tests/e2e/   (scripts/test.d/e2e.sh runs both)
+//   node --test tests/e2e/playground.test.mjs
 //
 // Serves www/ with scripts/serve.mjs on a free port, drives the page with real mouse and keyboard
 // events, and reads the state back through window.screwbender (documented in www/js/main.js).
-// Screenshots of every preset go to artifacts/e2e-<backend>/.
+// What the page draws on each backend is playground-render.test.mjs.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { openPage, waitFrames, canvasStats, mouseDrag, startPlayground, ROOT, BACKEND, EXPECTED_BACKEND as EXPECTED } from './lib.mjs';
+import { openPage, waitFrames, mouseDrag, startPlayground, ROOT, BACKEND } from './lib.mjs';
 
 const ARTIFACTS = path.join(ROOT, 'artifacts', `e2e-${BACKEND}`);
 const VIEWPORT = { width: 1280, height: 800 };
@@ -52,21 +54,6 @@ async function fresh(preset = 'l_cycle_rotated') {
   }, preset);
   await waitFrames(page, 1);
 }
-
-test(`${BACKEND}: page loads without console errors and reports the backend`, async () => {
-  assert.equal(await sb(() => window.screwbender.backend()), EXPECTED);
-  assert.match(await page.locator('#backend').textContent(), new RegExp(EXPECTED));
-  assert.deepEqual(problems, []);
-  assert.deepEqual(await sb(() => window.screwbender.errors()), []);
-});
-
-test(`${BACKEND}: the canvas is not blank`, async () => {
-  const s = await canvasStats(page);
-  fs.writeFileSync(path.join(ARTIFACTS, 'start.png'), s.png);
-  assert.ok(s.nonBackground > 0.05, `only ${(s.nonBackground * 100).toFixed(1)}% of pixels drawn`);
-  assert.ok(s.red > 0.002, `red control poses missing (${s.red})`);
-  assert.ok(s.colours > 40, `too few colours (${s.colours})`);
-});
 
 test(`${BACKEND}: click selects a pose; dragging it moves it and re-subdivides live`, async () => {
   await fresh();
@@ -328,17 +315,6 @@ test(`${BACKEND}: touch: one finger orbits, two fingers pinch-zoom`, async () =>
   await cdp.detach();
 });
 
-test(`${BACKEND}: every preset renders (screenshots in artifacts/)`, async () => {
-  const ids = await sb(() => window.screwbender.app.scenes.map((s) => s.id));
-  assert.equal(ids.length, 14); // A1–A11 without A4 (the planar polygons), B1, C1–C3
-  for (const id of ids) {
-    await fresh(id);
-    await sb(() => window.screwbender.app.frameAll());
-    await waitFrames(page, 2);
-    const s = await canvasStats(page);
-    await page.screenshot({ path: path.join(ARTIFACTS, `${id}.png`) });
-    assert.ok(s.nonBackground > 0.03, `${id}: only ${(s.nonBackground * 100).toFixed(1)}% drawn`);
-    assert.ok(s.red > 0.0005, `${id}: no red control poses`);
-  }
+test(`${BACKEND}: no console error or page error in all of the above`, () => {
   assert.deepEqual(problems, []);
 });

@@ -162,7 +162,6 @@ test('the dialog: opened and left by keyboard, focus kept inside, screenshots at
   }
   // The size of the offline file is stated on its button.
   await page.waitForFunction(() => /\(\d+(\.\d)? (MB|KB)\)/.test(document.getElementById('share-download').textContent));
-  await page.screenshot({ path: shotPath('share/dialog-1280x800.png') });
   const box = await page.locator('#share').boundingBox();
   assert.ok(box.x >= 0 && box.y >= 0 && box.x + box.width <= DESKTOP.width && box.y + box.height <= DESKTOP.height, `on screen: ${JSON.stringify(box)}`);
   // axe (from npm, injected through the debugging protocol: the page's CSP refuses inline scripts).
@@ -248,7 +247,6 @@ test('Copy code: the <screw-bender> snippet in a blank page draws the same figur
     assert.equal(s.backend, EXPECTED_BACKEND);
     assert.equal(s.playing, true, 'autoplay');
     assert.equal(await p.evaluate(() => document.querySelector('screw-bender').shadowRoot.querySelector('.fig').dataset.controls), 'full');
-    await p.screenshot({ path: shotPath('share/snippet-page-1280x800.png') });
     assert.ok((await drawn(p, p.locator('screw-bender'))) > 0.05, 'the figure is drawn');
     // Keys of the focused figure: a real click gives it the focus, Space pauses and plays.
     const canvas = p.locator('screw-bender canvas');
@@ -318,7 +316,6 @@ test('Copy iframe: embed.html in a sandbox="allow-scripts" frame — opaque orig
     }
     await p.evaluate(() => (document.querySelector('iframe').style.cssText = 'border:0;width:800px;height:500px'));
     await p.waitForTimeout(300);
-    await p.screenshot({ path: shotPath('share/iframe-page-1280x800.png') });
     assert.ok((await drawn(p, p.locator('iframe'))) > 0.05, 'the figure is drawn');
     // A real drag on the frame's canvas orbits, a click focuses it, Space plays.
     const cb = await frame.locator('#figure canvas').boundingBox();
@@ -350,8 +347,6 @@ test('embed.html on a phone: touch plays and orbits; screenshots at 390×844 and
       await p.waitForFunction(() => window.screwbenderEmbed);
       await p.evaluate(() => window.screwbenderEmbed.ready);
       await p.waitForTimeout(500);
-      const name = `${size.width}x${size.height}`;
-      await p.screenshot({ path: shotPath(`share/embed-${name}.png`) });
       const hb = await p.locator('#figure').boundingBox();
       assert.ok(Math.abs(hb.width - size.width) <= 1 && Math.abs(hb.height - size.height) <= 1, `fills the window: ${JSON.stringify(hb)}`);
       if (touch) {
@@ -402,7 +397,6 @@ for (const size of [PHONE, { width: 844, height: 390 }]) {
       await p.locator('#m-share').tap();
       await p.locator('#share').waitFor({ state: 'visible' });
       await p.waitForFunction(() => /MB|KB/.test(document.getElementById('share-download').textContent));
-      await p.screenshot({ path: shotPath(`share/dialog-${size.width}x${size.height}.png`) });
       const box = await p.locator('#share').boundingBox();
       assert.ok(box.x >= 0 && box.x + box.width <= size.width && box.height <= size.height, `on screen: ${JSON.stringify(box)}`);
       const small = await p.evaluate(() =>
@@ -471,7 +465,6 @@ test('Download .html: one file that works from file:// with the network blocked 
       assertSame(s, true);
       assert.equal(s.backend, backend, 'the backend');
       assert.deepEqual(s.storage, [], 'no storage call');
-      if (!noWebGpu) await p.screenshot({ path: shotPath('share/offline-1280x800.png') });
       const ink = await drawn(p, p.locator('screw-bender canvas'));
       assert.ok(ink > 0.02, `the figure is drawn: ${(ink * 100).toFixed(1)} % of the canvas`);
       const canvas = p.locator('screw-bender canvas');

@@ -1,14 +1,15 @@
-// e2e-backends: webgpu webgl2 (frames are read back from each backend's canvas and encoded)
+// e2e-backends: webgpu webgl2 (every test encodes and checks frames read back from each backend's canvas)
 // End-to-end: videos of one cycle out of the playground (editor/media.js, muxed by mediabunny):
 // MP4 with H.264 and WebM, each a real download whose container holds every frame at the motion's
 // times (the boxes and elements read here, not by mediabunny) and which a <video> plays with the
-// cycle's duration and frame count; MP4 in a browser without an H.264 encoder (the encoder's
-// answer for H.264 replaced by "unsupported") gives WebM and a message saying why; cancelling a
-// recording; a browser without any video encoder.
+// cycle's duration and frame count. Each test records and checks the backend's frames, so the
+// file runs on both; what no frame decides (the WebM instead of an MP4 without an H.264 encoder,
+// a refused format, cancelling, a browser without an encoder) is view-menu.test.mjs, once.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
-import { waitFrames, playgroundPage } from './lib.mjs';
+import { waitFrames, playgroundPage, downloadFrom } from './lib.mjs';
+import { FPS, mp4Info, webmInfo } from './containers.mjs';
 
 let play;
 let page;
@@ -16,8 +17,6 @@ let problems;
 /** A blank page (no content security policy) where the videos are played. */
 let blank;
 
-/** Frames per second of the videos (editor/media.js FPS). */
-const FPS = 30;
 /** The light background as displayed (www/js/view/slots.js BACKGROUND), 0..255. */
 const LIGHT = [232, 236, 241];
 
@@ -38,125 +37,7 @@ after(async () => {
 });
 
 /** Runs `action` and returns the download it causes (null when none came within `ms`). */
-async function downloadOf(action, ms = 180000) {
-  const got = page.waitForEvent('download', { timeout: ms }).catch(() => null);
-  await action();
-  return got;
-}
-
-/** The boxes of an ISO BMFF (MP4) byte range: [{type, start, end}] (start: after the header). */
-function boxes(bytes, from = 0, to = bytes.length) {
-  const out = [];
-  let pos = from;
-  while (pos + 8 <= to) {
-    let size = bytes.readUInt32BE(pos);
-    const type = bytes.subarray(pos + 4, pos + 8).toString('latin1');
-    let head = 8;
-    if (size === 1) {
-      size = Number(bytes.readBigUInt64BE(pos + 8));
-      head = 16;
-    } else if (size === 0) size = to - pos;
-    out.push({ type, start: pos + head, end: pos + size });
-    pos += size;
-  }
-  return out;
-}
-
-/** The box of `path` (types, e.g. ['moov', 'trak', 'mdia', 'mdhd']), or undefined. */
-function box(bytes, path) {
-  let range = { start: 0, end: bytes.length };
-  for (const type of path) {
-    range = boxes(bytes, range.start, range.end).find((b) => b.type === type);
-    if (!range) return undefined;
-  }
-  return range;
-}
-
-/**
- * What an MP4 file says: its brand, the sample entry (codec), the track's duration (mdhd,
- * seconds), the number of samples (stsz) and the times of the first and last samples from stts.
- */
-function mp4Info(bytes) {
-  const ftyp = box(bytes, ['ftyp']);
-  const stbl = ['moov', 'trak', 'mdia', 'minf', 'stbl'];
-  const mdhd = box(bytes, ['moov', 'trak', 'mdia', 'mdhd']);
-  const v1 = bytes[mdhd.start] === 1;
-  const timescale = bytes.readUInt32BE(mdhd.start + (v1 ? 20 : 12));
-  const duration = v1 ? Number(bytes.readBigUInt64BE(mdhd.start + 24)) : bytes.readUInt32BE(mdhd.start + 16);
-  const stsd = box(bytes, [...stbl, 'stsd']);
-  const entry = bytes.subarray(stsd.start + 12, stsd.start + 16).toString('latin1');
-  const stsz = box(bytes, [...stbl, 'stsz']);
-  const samples = bytes.readUInt32BE(stsz.start + 8);
-  const stts = box(bytes, [...stbl, 'stts']);
-  let t = 0;
-  let counted = 0;
-  const runs = bytes.readUInt32BE(stts.start + 4);
-  for (let k = 0; k < runs; k++) {
-    const n = bytes.readUInt32BE(stts.start + 8 + 8 * k);
-    const delta = bytes.readUInt32BE(stts.start + 12 + 8 * k);
-    t += n * delta;
-    counted += n;
-  }
-  return {
-    brand: bytes.subarray(ftyp.start, ftyp.start + 4).toString('latin1'),
-    entry,
-    duration: duration / timescale,
-    samples,
-    sttsSamples: counted,
-    sttsSpan: t / timescale,
-  };
-}
-
-/**
- * What a WebM file says of its time: `duration` (s) from the Duration element of its Info, and
- * `span` (s) from its blocks (the last block's time minus the first's, plus one frame) and their
- * count, and the codec id. Walks the EBML elements, entering Segment, Info, Tracks and Clusters.
- */
-function webmInfo(bytes) {
-  const MASTERS = new Set([0x18538067, 0x1549a966, 0x1f43b675, 0x1654ae6b, 0xae, 0xa0]); // Segment, Info, Cluster, Tracks, TrackEntry, BlockGroup
-  let pos = 0;
-  const vint = (keepMarker) => {
-    const first = bytes[pos];
-    let len = 1;
-    while (len <= 8 && !(first & (0x80 >> (len - 1)))) len++;
-    let v = keepMarker ? first : first & (0xff >> len);
-    for (let k = 1; k < len; k++) v = v * 256 + bytes[pos + k];
-    pos += len;
-    return v;
-  };
-  const uint = (at, n) => {
-    let v = 0;
-    for (let k = 0; k < n; k++) v = v * 256 + bytes[at + k];
-    return v;
-  };
-  let scale = 1e6; // ns per timecode unit (TimecodeScale's default)
-  let duration = NaN;
-  let cluster = 0;
-  let first = Infinity;
-  let last = -Infinity;
-  let blocks = 0;
-  let codec = '';
-  while (pos < bytes.length) {
-    const id = vint(true);
-    const size = vint(false);
-    const start = pos;
-    if (MASTERS.has(id)) continue;
-    if (id === 0x2ad7b1) scale = uint(start, size);
-    else if (id === 0x4489) duration = size === 8 ? bytes.readDoubleBE(start) : bytes.readFloatBE(start);
-    else if (id === 0x86) codec = bytes.subarray(start, start + size).toString('latin1');
-    else if (id === 0xe7) cluster = uint(start, size);
-    else if (id === 0xa3 || id === 0xa1) {
-      pos = start;
-      vint(false); // track number
-      const t = cluster + bytes.readInt16BE(pos);
-      first = Math.min(first, t);
-      last = Math.max(last, t);
-      blocks++;
-    }
-    pos = start + size;
-  }
-  return { codec, duration: (duration * scale) / 1e9, span: ((last - first) * scale) / 1e9 + 1 / FPS, blocks };
-}
+const downloadOf = (action, ms) => downloadFrom(page, action, ms);
 
 /**
  * Plays `bytes` (of MIME `type`) in a <video> of the blank page: its size, duration, a frame a
@@ -263,83 +144,4 @@ test('WebM: VP8 / VP9 when chosen in the menu, every frame, plays in a <video>',
   await page.check('#m-video-mp4');
   await page.keyboard.press('Escape');
   assert.deepEqual(problems, []);
-});
-
-test('MP4 without an H.264 encoder: a WebM instead, and a message saying why', async () => {
-  // This browser's encoder is asked for H.264 and says no (as a browser without one does).
-  await page.evaluate(() => {
-    window.__isConfigSupported = VideoEncoder.isConfigSupported;
-    VideoEncoder.isConfigSupported = async (config) =>
-      config.codec.startsWith('avc1') ? { supported: false, config } : window.__isConfigSupported.call(VideoEncoder, config);
-  });
-  try {
-    let result;
-    const d = await downloadOf(async () => {
-      result = await page.evaluate(() => window.screwbender.app.parts.media.recordVideo({ format: 'mp4' }));
-    });
-    assert.ok(d, `a download (${JSON.stringify(result)})`);
-    assert.match(d.suggestedFilename(), /\.webm$/);
-    assert.equal(result.format, 'webm');
-    const info = webmInfo(fs.readFileSync(await d.path()));
-    assert.equal(info.blocks, result.frames);
-    const msg = await page.evaluate(() => window.screwbender.errors().at(-1));
-    assert.match(msg, /No MP4: this browser has no H\.264 encoder .*which MP4 needs.*\(WebM\) instead/);
-    assert.equal(await page.locator('#banner').isVisible(), true);
-  } finally {
-    await page.evaluate(() => (VideoEncoder.isConfigSupported = window.__isConfigSupported));
-  }
-});
-
-test('a bad video format is refused with a message, and nothing is recorded', async () => {
-  let downloads = 0;
-  const count = () => downloads++;
-  page.on('download', count);
-  const r = await page.evaluate(() => window.screwbender.app.parts.media.recordVideo({ format: 'avi' }));
-  page.off('download', count);
-  assert.equal(r, null);
-  assert.equal(downloads, 0);
-  assert.match(await page.evaluate(() => window.screwbender.errors().at(-1)), /Video format: "avi" is not mp4 or webm/);
-});
-
-test('cancelling a recording stops it and downloads nothing', async () => {
-  await page.setViewportSize({ width: 1280, height: 800 });
-  await waitFrames(page, 2);
-  const anim = await page.evaluate(() => ({ u: window.screwbender.app.anim.u, playing: window.screwbender.app.anim.playing }));
-  let downloads = 0;
-  const count = () => downloads++;
-  page.on('download', count);
-  await page.click('#t-view');
-  await page.click('#m-video');
-  await page.waitForFunction(() => !document.getElementById('rec').hidden && document.getElementById('rec-progress').value > 0);
-  await page.click('#rec-cancel');
-  await page.waitForFunction(() => document.getElementById('rec').hidden);
-  // Nothing arrives afterwards either (the muxer's output is dropped).
-  await page.waitForTimeout(1500);
-  page.off('download', count);
-  assert.equal(downloads, 0);
-  const after = await page.evaluate(() => ({ u: window.screwbender.app.anim.u, playing: window.screwbender.app.anim.playing }));
-  assert.deepEqual(after, anim, 'the playback as before');
-  assert.equal(await page.evaluate(() => window.screwbender.app.parts.media.recording), false);
-});
-
-test('without a video encoder: a clear message, nothing changes, no exception', async () => {
-  const before = await page.evaluate(() => JSON.stringify(window.screwbender.session()));
-  const errorsBefore = problems.length;
-  await page.evaluate(() => {
-    window.__enc = window.VideoEncoder;
-    window.VideoEncoder = undefined;
-  });
-  let downloads = 0;
-  const count = () => downloads++;
-  page.on('download', count);
-  await page.click('#t-view');
-  await page.click('#m-video');
-  await page.waitForFunction(() => /no video encoder/.test(window.screwbender.errors().at(-1) ?? ''));
-  await page.evaluate(() => (window.VideoEncoder = window.__enc));
-  page.off('download', count);
-  assert.equal(downloads, 0);
-  assert.equal(await page.locator('#rec').isHidden(), true);
-  assert.equal(await page.locator('#banner').isVisible(), true);
-  assert.equal(await page.evaluate(() => JSON.stringify(window.screwbender.session())), before);
-  assert.equal(problems.length, errorsBefore, problems.join('\n'));
 });
