@@ -145,6 +145,16 @@ test('the deck: figures on their slides on the expected backend; a figure on a h
     const f1 = await framesOf();
     await page.waitForTimeout(800);
     assert.equal(await framesOf(), f1, 'playing, it stops drawing when its slide leaves');
+    // The two-figure slide fits the window side by side, at both common desktop widths.
+    for (const viewport of [{ width: 1280, height: 800 }, { width: 1920, height: 1080 }]) {
+      await page.setViewportSize(viewport);
+      await page.waitForFunction(() => !document.querySelector('.reveal .slides section.present')?.getAnimations?.({ subtree: true }).some((a) => a.playState === 'running'));
+      const boxes = await page.evaluate(() => ['fig-bspline', 'fig-fourpoint'].map((id) => document.getElementById(id).getBoundingClientRect().toJSON()));
+      const [a, b] = boxes;
+      const at = `${viewport.width}×${viewport.height}: ${JSON.stringify(boxes.map((r) => [Math.round(r.left), Math.round(r.right)]))}`;
+      assert.ok(a.left >= 0 && b.right <= viewport.width, `the compare slide's figures leave the window at ${at}`);
+      assert.ok(a.right <= b.left && a.width > 0.3 * viewport.width, `the figures overlap or shrank at ${at}`);
+    }
     assert.deepEqual(deck.problems, []);
   } finally {
     await deck.close();
