@@ -14,14 +14,13 @@
 //
 // "First frame": the first rAF after which window.screwbender.frames() is above 0, i.e. the
 // renderer drew the motion. With --lesson the page is ?lesson=NAME and the first frame waits for
-// the lesson card too. "Idle": after the first frame, no request in flight for IDLE_MS (what
-// Playwright calls network idle), or IDLE_CAP_MS after the first frame, whichever comes first.
-// Every response of the page's origin up to then counts, whether it finished before the first
-// frame or after it: what a visit downloads does not depend on when the page asks for it.
-// Requests still in flight at the cap are listed apart (and counted: they are downloading).
-import fs from 'node:fs';
+// the lesson card too. "Idle" (scripts/downloads.mjs): after the first frame, no request in flight
+// for half a second, or 5 s after the first frame, whichever comes first. Every response of the
+// page's origin up to then counts, whether it finished before the first frame or after it: what a
+// visit downloads does not depend on when the page asks for it. Requests still in flight at the
+// cap are listed apart (and counted: they are downloading).
 import path from 'node:path';
-import zlib from 'node:zlib';
+import { IDLE_CAP_MS, fileSizes, watchRequests } from './downloads.mjs';
 import { launch, serveDir as serve } from '../tests/e2e/lib.mjs';
 
 function args() {
@@ -43,40 +42,13 @@ function args() {
   return o;
 }
 
-const gzipCache = new Map();
-/** gzip -9 size of the file that `url` names under `dir`. */
-function gzipSize(dir, url) {
-  let p = decodeURIComponent(new URL(url).pathname);
-  if (p.endsWith('/')) p += 'index.html';
-  const file = path.join(dir, p);
-  if (!gzipCache.has(file)) {
-    const bytes = fs.readFileSync(file);
-    gzipCache.set(file, { raw: bytes.length, gzip: zlib.gzipSync(bytes, { level: 9 }).length });
-  }
-  return gzipCache.get(file);
-}
-
-/** Network idle: this long without a request in flight (Playwright's `networkidle`). */
-const IDLE_MS = 500;
-/** The longest wait for idle after the first frame. */
-const IDLE_CAP_MS = 5000;
-
 /** One first visit: {ms, files: [{path, raw, gzip}], late: [paths], total}. */
 async function visit(browser, url, dir, { backend, lesson }) {
   const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
   const page = await context.newPage();
   const errors = [];
   page.on('pageerror', (e) => errors.push(e.message));
-  // Every request of the page (and its workers), from its start to its end or failure.
-  const requests = new Map();
-  let lastChange = Date.now();
-  const settle = (r, state) => {
-    requests.set(r, state);
-    lastChange = Date.now();
-  };
-  page.on('request', (r) => settle(r, 'open'));
-  page.on('requestfinished', (r) => settle(r, 'done'));
-  page.on('requestfailed', (r) => settle(r, 'failed'));
+  const requests = watchRequests(page);
   // Marks the first frame (and with a lesson, the card) on the page's own clock.
   await page.addInitScript((wantCard) => {
     const poll = () => {
@@ -95,21 +67,15 @@ async function visit(browser, url, dir, { backend, lesson }) {
   await page.goto(`${url}${qs ? `?${qs}` : ''}`);
   await page.waitForFunction(() => window.__firstFrame !== undefined, null, { timeout: 60000 });
   const at = await page.evaluate(() => window.__firstFrame);
-  const cap = Date.now() + IDLE_CAP_MS;
-  const inFlight = () => [...requests.values()].some((s) => s === 'open');
-  while (Date.now() < cap && (inFlight() || Date.now() - lastChange < IDLE_MS)) await new Promise((r) => setTimeout(r, 50));
-  const seen = [...requests];
+  const { done, open } = await requests.untilIdle();
   await context.close();
   if (errors.length) throw new Error(`page errors: ${errors.join('; ')}`);
   const origin = new URL(url).origin;
-  const files = [];
-  const late = [];
-  for (const [r, state] of seen) {
-    if (!r.url().startsWith(origin) || state === 'failed') continue;
-    const p = new URL(r.url()).pathname;
-    if (state === 'open') late.push(p);
-    files.push({ path: p, ...gzipSize(dir, r.url()) });
-  }
+  const sizeOf = fileSizes(dir);
+  const mine = (u) => u.startsWith(origin);
+  // Still in flight at the cap: counted (they are downloading) and listed.
+  const files = [...done, ...open].filter(mine).map(sizeOf);
+  const late = open.filter(mine).map((u) => new URL(u).pathname);
   const total = files.reduce((s, f) => s + f.gzip, 0);
   return { ms: at, files, late, total };
 }
