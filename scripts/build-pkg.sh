@@ -110,7 +110,7 @@ timed "cargo build" cargo_wasm_release
 WASM_OPT_FEATURES=(--enable-bulk-memory --enable-reference-types --enable-nontrapping-float-to-int
   --enable-sign-ext --enable-mutable-globals --enable-multivalue --enable-simd)
 
-# Skip wasm-bindgen and wasm-opt (~20 s) when neither the module nor the packaging changed.
+# Skip wasm-bindgen and wasm-opt when neither the module nor the packaging changed.
 input=$TARGET_DIR/$WASM_TARGET/wasm-release/screwbender_web.wasm
 stamp=$(cat "$input" npm/* scripts/build-pkg.sh Cargo.lock | sha256sum | cut -d' ' -f1)
 
@@ -215,7 +215,7 @@ export const loadFiles = () => import('../../../full/screwbender.js');
 JS
   # The viewer's sources ship minified (esbuild, Vite's: each file on its own, imports and
   # import.meta.url kept, comments dropped): a figure downloads them all, and the readable ones
-  # are www/js/. About 40 KB gzip becomes 25 KB (scripts/viewer-size.sh counts them).
+  # are www/js/ (scripts/viewer-size.sh counts them; docs/speed/code-notes.md has the sizes).
   while IFS= read -r -d '' f; do
     "$REPO_ROOT/node_modules/.bin/esbuild" "$f" --minify --format=esm --log-level=warning --outfile="$f.min"
     mv "$f.min" "$f"

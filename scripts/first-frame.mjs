@@ -1,32 +1,37 @@
 #!/usr/bin/env node
-// What a first visit to the playground downloads before its first frame, measured in headless
-// Chromium (playwright-core, the e2e tests' browser and flags): the page is served from DIR
-// (scripts/serve.mjs), opened in a fresh browser context (empty cache and storage: a first
-// visit), and every file it fetched until the first frame was drawn is counted at its gzip -9
-// size (what a server compressing its responses sends; the local server sends them raw).
+// What a first visit to the playground downloads, measured in headless Chromium (playwright-core,
+// the e2e tests' browser and flags): the page is served from DIR (scripts/serve.mjs), opened in a
+// fresh browser context (empty cache and storage: a first visit), and every response it received
+// until the page was idle is counted at its gzip -9 size (what a server compressing its responses
+// sends; the local server sends them raw).
 //
 //   node scripts/first-frame.mjs [--dir www] [--backend webgpu|webgl2] [--lesson NAME]
 //        [--runs N] [--json]                     one page: files, bytes, time to first frame
+//        [--and-lesson NAME]                     then ?lesson=NAME in the same browser, a
+//                                                block of its own (one browser start less)
 //   node scripts/first-frame.mjs --compare OLD_DIR NEW_DIR [--runs N] [--lesson NAME]
 //                                                time to first frame of two builds, alternating
 //
 // "First frame": the first rAF after which window.screwbender.frames() is above 0, i.e. the
-// renderer drew the motion. With --lesson the page is ?lesson=NAME and the measure ends when the
-// lesson card is shown too (the frame and the card are what the visitor waits for). A file counts
-// when its response ended before that moment; files still in flight are listed apart.
-import fs from 'node:fs';
+// renderer drew the motion. With --lesson the page is ?lesson=NAME and the first frame waits for
+// the lesson card too. "Idle" (scripts/downloads.mjs): after the first frame, no request in flight
+// for half a second, or 5 s after the first frame, whichever comes first. Every response of the
+// page's origin up to then counts, whether it finished before the first frame or after it: what a
+// visit downloads does not depend on when the page asks for it. Requests still in flight at the
+// cap are listed apart (and counted: they are downloading).
 import path from 'node:path';
-import zlib from 'node:zlib';
+import { IDLE_CAP_MS, fileSizes, watchRequests } from './downloads.mjs';
 import { launch, serveDir as serve } from '../tests/e2e/lib.mjs';
 
 function args() {
   const a = process.argv.slice(2);
-  const o = { dir: 'www', backend: 'webgpu', lesson: null, runs: 1, json: false, compare: null };
+  const o = { dir: 'www', backend: 'webgpu', lesson: null, andLesson: null, runs: 1, json: false, compare: null };
   for (let i = 0; i < a.length; i++) {
     const k = a[i];
     if (k === '--dir') o.dir = a[++i];
     else if (k === '--backend') o.backend = a[++i];
     else if (k === '--lesson') o.lesson = a[++i];
+    else if (k === '--and-lesson') o.andLesson = a[++i];
     else if (k === '--runs') o.runs = Number(a[++i]);
     else if (k === '--json') o.json = true;
     else if (k === '--compare') o.compare = [a[++i], a[++i]];
@@ -37,25 +42,13 @@ function args() {
   return o;
 }
 
-const gzipCache = new Map();
-/** gzip -9 size of the file that `url` names under `dir`. */
-function gzipSize(dir, url) {
-  let p = decodeURIComponent(new URL(url).pathname);
-  if (p.endsWith('/')) p += 'index.html';
-  const file = path.join(dir, p);
-  if (!gzipCache.has(file)) {
-    const bytes = fs.readFileSync(file);
-    gzipCache.set(file, { raw: bytes.length, gzip: zlib.gzipSync(bytes, { level: 9 }).length });
-  }
-  return gzipCache.get(file);
-}
-
 /** One first visit: {ms, files: [{path, raw, gzip}], late: [paths], total}. */
 async function visit(browser, url, dir, { backend, lesson }) {
   const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
   const page = await context.newPage();
   const errors = [];
   page.on('pageerror', (e) => errors.push(e.message));
+  const requests = watchRequests(page);
   // Marks the first frame (and with a lesson, the card) on the page's own clock.
   await page.addInitScript((wantCard) => {
     const poll = () => {
@@ -73,21 +66,16 @@ async function visit(browser, url, dir, { backend, lesson }) {
   const qs = q.toString();
   await page.goto(`${url}${qs ? `?${qs}` : ''}`);
   await page.waitForFunction(() => window.__firstFrame !== undefined, null, { timeout: 60000 });
-  const { at, entries } = await page.evaluate(() => ({
-    at: window.__firstFrame,
-    entries: performance.getEntriesByType('resource').map((e) => ({ name: e.name, end: e.responseEnd })),
-  }));
+  const at = await page.evaluate(() => window.__firstFrame);
+  const { done, open } = await requests.untilIdle();
   await context.close();
   if (errors.length) throw new Error(`page errors: ${errors.join('; ')}`);
   const origin = new URL(url).origin;
-  const files = [{ path: '/', ...gzipSize(dir, url) }];
-  const late = [];
-  for (const e of entries) {
-    if (!e.name.startsWith(origin)) continue;
-    const p = new URL(e.name).pathname;
-    if (e.end > 0 && e.end <= at) files.push({ path: p, ...gzipSize(dir, e.name) });
-    else late.push(p);
-  }
+  const sizeOf = fileSizes(dir);
+  const mine = (u) => u.startsWith(origin);
+  // Still in flight at the cap: counted (they are downloading) and listed.
+  const files = [...done, ...open].filter(mine).map(sizeOf);
+  const late = open.filter(mine).map((u) => new URL(u).pathname);
   const total = files.reduce((s, f) => s + f.gzip, 0);
   return { ms: at, files, late, total };
 }
@@ -98,6 +86,23 @@ const median = (xs) => {
   return n % 2 ? s[(n - 1) / 2] : (s[n / 2 - 1] + s[n / 2]) / 2;
 };
 const stats = (xs) => ({ median: median(xs), min: Math.min(...xs), max: Math.max(...xs) });
+
+/** `o.runs` visits of the page (with ?lesson=`lesson` if set). */
+async function runs(browser, url, dir, o, lesson) {
+  const out = [];
+  for (let r = 0; r < o.runs; r++) out.push(await visit(browser, url, dir, { backend: o.backend, lesson }));
+  return out;
+}
+
+/** Prints the files of the last of `runs` and the total (one JSON line with --json). */
+function report(o, lesson, runs) {
+  const last = runs[runs.length - 1];
+  const result = { backend: o.backend, lesson, gzipBytes: last.total, files: last.files, late: last.late, firstFrameMs: stats(runs.map((v) => v.ms)) };
+  if (o.json) return console.log(JSON.stringify(result));
+  for (const f of [...last.files].sort((a, b) => b.gzip - a.gzip)) console.log(`${String(f.gzip).padStart(8)} ${String(f.raw).padStart(9)}  ${f.path}`);
+  if (last.late.length) console.log(`still in flight ${IDLE_CAP_MS} ms after the first frame: ${last.late.join(', ')}`);
+  console.log(`${last.total} bytes gzip in ${last.files.length} files until idle; first frame after ${Math.round(result.firstFrameMs.median)} ms (median of ${o.runs})`);
+}
 
 async function main() {
   const o = args();
@@ -127,19 +132,11 @@ async function main() {
     }
     const dir = path.resolve(o.dir);
     const server = await serve(dir);
-    const runs = [];
     try {
-      for (let r = 0; r < o.runs; r++) runs.push(await visit(browser, server.url, dir, o));
+      report(o, o.lesson, await runs(browser, server.url, dir, o, o.lesson));
+      if (o.andLesson) report(o, o.andLesson, await runs(browser, server.url, dir, o, o.andLesson));
     } finally {
       server.stop();
-    }
-    const last = runs[runs.length - 1];
-    const result = { backend: o.backend, lesson: o.lesson, gzipBytes: last.total, files: last.files, late: last.late, firstFrameMs: stats(runs.map((v) => v.ms)) };
-    if (o.json) console.log(JSON.stringify(result));
-    else {
-      for (const f of [...last.files].sort((a, b) => b.gzip - a.gzip)) console.log(`${String(f.gzip).padStart(8)} ${String(f.raw).padStart(9)}  ${f.path}`);
-      if (last.late.length) console.log(`after the first frame: ${last.late.join(', ')}`);
-      console.log(`${last.total} bytes gzip in ${last.files.length} files; first frame after ${Math.round(result.firstFrameMs.median)} ms (median of ${o.runs})`);
     }
   } finally {
     await browser.close();

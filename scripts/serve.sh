@@ -32,7 +32,7 @@ build() {
   ./scripts/wasm-module.sh webgpu,files "$WWW_DIR/pkg-webgpu" -Oz
   ./scripts/wasm-module.sh webgl,files "$WWW_DIR/pkg-gl" -Oz
   ./scripts/wasm-module.sh export,methods,tracks,teaching "$WWW_DIR/pkg-full" -Os
-  # The all-in-one module of earlier builds: nothing imports it any more.
+  # www/pkg/ is no module of the page's (nothing imports it): a stale copy is not served.
   rm -rf "$WWW_DIR/pkg"
 
   if [[ -d scripts/serve.d ]]; then

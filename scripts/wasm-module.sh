@@ -6,8 +6,8 @@
 #   scripts/wasm-module.sh FEATURES OUT_DIR OPT
 #
 # Used by scripts/build-pkg.sh (the npm package's modules) and scripts/serve.sh (the
-# playground's, the same ones): the wasm-bindgen and wasm-opt output (1-3 min for a renderer
-# module) is kept in the cargo target dir under wasm-modules/<hash of the cargo output, the
+# playground's, the same ones): the wasm-bindgen and wasm-opt output (minutes of work for a
+# renderer module) is kept in the cargo target dir under wasm-modules/<hash of the cargo output, the
 # features, OPT and this script>, so the second of the two builds, or a rebuild of an unchanged
 # module, only copies it. Needs the wasm32 target, wasm-bindgen-cli matching Cargo.lock and the
 # root node_modules (wasm-opt from npm's binaryen: Debian's wasm-opt 108 breaks externref modules).

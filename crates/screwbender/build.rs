@@ -1,6 +1,7 @@
 //! Sets `cfg(lanes)` where the screw batches run several screws at a time on SIMD lanes
 //! (`src/screw/batch.rs`): every native target, and wasm32 only when built with `simd128`
-//! (without SIMD the interleaved lanes gained nothing there and would add 6 KB to the module).
+//! (without SIMD the interleaved lanes gained nothing there and would only add code to the
+//! size-budgeted module; docs/speed/code-notes.md).
 //! `cfg(portable_lanes)` marks where the portable `Lanes` type is used: everywhere but wasm32
 //! with `simd128`, which has its own (`src/lanes/wasm.rs`).
 

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Vendor three.js (the npm package `three`, a devDependency; MIT, www/vendor/three.LICENSE) for the
 # three.js example www/examples/three.html: the names that www/examples/three.js imports, bundled
-# and minified by esbuild (Vite's) into one ES module, www/vendor/three.min.mjs (about 550 KB
-# instead of 2.1 MB for the whole library). The copy is committed too, so www/ works without this
+# and minified by esbuild (Vite's) into one ES module, www/vendor/three.min.mjs (a fraction of
+# the whole library; docs/speed/code-notes.md). The copy is committed too, so www/ works without this
 # step; a name the example starts to use must be added to the list below.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."

@@ -4,7 +4,9 @@
 #   1. build and pack it (scripts/build-pkg.sh), check the tarball's file list and the size
 #      budget of the .wasm (WASM_GZIP_BUDGET bytes gzip, default 150 000; see below),
 #      and the viewer's budgets (scripts/viewer-size.sh: what a browser downloads for one
-#      read-only figure, WebGPU ≤ 290 KB gzip, the WebGL2 path ≤ 1.2 MB gzip);
+#      read-only figure, WebGPU ≤ 290 KB gzip, the WebGL2 path ≤ 1.2 MB gzip), and the figure
+#      beside <model-viewer> showing the same motion from a file, measured in headless Chromium
+#      (scripts/figure-vs-model-viewer.mjs: ours at most as heavy, the ratio printed);
 #   2. install the tarball into fresh apps under a mktemp dir, with only the npm registry:
 #      a Node app (smoke test through the package "exports"), a Vite 7 app (`vite build`, served
 #      on 127.0.0.1, and the Vite dev server; plus `tsc --strict` on a usage file against the
@@ -63,6 +65,7 @@ for f in package/viewer/vendor/bunny.obj package/viewer/vendor/bunny.NOTICE; do
   grep -qx "$f" <<<"$listing" || die "the tarball lacks $f"
 done
 ./scripts/viewer-size.sh pkg
+timed "figure beside <model-viewer>" node scripts/figure-vs-model-viewer.mjs pkg
 wasm_raw=$(wc -c <pkg/screwbender_bg.wasm)
 wasm_gz=$(gzip -9c pkg/screwbender_bg.wasm | wc -c)
 log "wasm: $wasm_raw bytes, $wasm_gz bytes gzip (budget $WASM_GZIP_BUDGET); tarball: $(wc -c <"$tarball") bytes"

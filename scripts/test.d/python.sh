@@ -8,7 +8,9 @@
 # checks that its SIMD lanes are inlined (scripts/check-lanes-inlined.sh), and runs pytest on
 # python/tests: the CLI's poses bit for bit (the CLI as the native test stage built it:
 # scripts/lib.sh `test_cli`), the reference libraries, bad input, files, the notebook figure,
-# the course notebook and, when a figure bundle exists, JupyterLab in headless Chromium.
+# the course notebook and JupyterLab in headless Chromium (the browser tests need the figure
+# bundle; without it they skip, and with CI=true a skipped test fails the stage:
+# python/tests/conftest.py).
 #
 # Then the same wheel in clean virtual environments of the oldest CPython the package supports
 # (3.9) and the newest one on the machine (pyenv's, part of the machine image, or pythonX.Y on

@@ -55,7 +55,7 @@ test(`${BACKEND}: snapped moves land on the absolute 0.25 grid`, async () => {
   await mouseDrag(page, a, (60 * (a.x - o.x)) / len, (60 * (a.y - o.y)) / len);
   const p = await pose(2);
   assert.ok(Math.abs(p[0] - 7.721) > 0.2, `x did not move: ${p[0]}`);
-  assert.ok(onGrid(p[0], 0.25), `x = ${p[0]} is off the grid (it used to keep the start's offset: 7.721 -> 8.221)`);
+  assert.ok(onGrid(p[0], 0.25), `x = ${p[0]} is off the grid (it kept the start's offset: 7.721 -> 8.221)`);
   assert.deepEqual(p.slice(1, 3), [2.13, 0.07], 'an x drag keeps y and z');
 });
 

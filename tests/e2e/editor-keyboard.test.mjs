@@ -69,7 +69,7 @@ test(`${BACKEND}: Tab walks toolbar, panel, dock, timeline and the view; every s
   // The panel open, the dock closed.
   await sb(() => window.screwbender.app.ui.gui.open());
   let seen = await tabRound();
-  // Tab moves the focus and nothing else (it used to cycle the selected pose).
+  // Tab moves the focus and nothing else (not the selected pose).
   assert.equal(await sb(() => window.screwbender.selected()), sel0);
   const enabled = await sb(() =>
     [...document.querySelectorAll('#toolbar button, #timeline button, #timeline input')].filter((e) => !e.disabled).map((e) => `#${e.id}`),

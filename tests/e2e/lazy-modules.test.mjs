@@ -1,9 +1,10 @@
 // e2e-backends: webgpu (what the WebGPU page fetches, and when)
 // End-to-end: what the first visit leaves for later. The first frame is drawn from the renderer
-// module alone (on WebGPU the figure's WebGPU module, on WebGL2 the WebGL2 one): no analysis
-// module, no view, no uPlot, no KaTeX. Opening the dock fetches them, with "loading…" in the
-// dock meanwhile; where a fetch fails, a message names what could not load, the editor keeps
-// working (edits, undo), and the next try loads it.
+// module alone (on WebGPU the figure's WebGPU module, on WebGL2 the WebGL2 one), and until the page
+// is idle nothing else comes: no analysis module, no view, no uPlot, no lesson player, no KaTeX,
+// no Share dialog. Opening the dock fetches the analysis, with "loading…" in the dock meanwhile;
+// the Lessons button fetches the player and KaTeX. Where a fetch fails, a message names what could
+// not load, the editor keeps working (edits, undo), and the next try loads it.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { startPlayground, waitFrames, BACKEND, EXPECTED_BACKEND } from './lib.mjs';
@@ -30,10 +31,23 @@ async function open(route) {
   await page.goto(`${play.url}${BACKEND === 'webgl2' ? '?backend=webgl2' : ''}`);
   await page.evaluate(() => window.screwbender.ready);
   await waitFrames(page, 2);
+  // Idle: what a visit fetches later than its first frame counts too.
+  await page.waitForLoadState('networkidle');
   return { page, requests, problems };
 }
 
-const LATER = [/^\/pkg-full\//, /^\/js\/views\/(?!index\.js|dom\.js)/, /^\/js\/editor\/dock\.js/, /uPlot\.esm\.js$/];
+const LATER = [
+  /^\/pkg-full\//,
+  /^\/js\/views\/(?!index\.js|dom\.js)/,
+  /^\/js\/editor\/dock\.js/,
+  /uPlot\.(esm\.js|min\.css)$/,
+  // The lesson player (all of js/lessons/ but progress.js, which says whether the tour is due), its
+  // stylesheet and KaTeX; the Share dialog.
+  /^\/js\/lessons\/(?!progress\.js)/,
+  /^\/css\/lessons\.css$/,
+  /katex/,
+  /^\/js\/editor\/share-dialog\.js/,
+];
 
 test(`${BACKEND}: the first frame needs the renderer module only; the dock fetches the rest`, async () => {
   const { page, requests, problems } = await open();
@@ -53,6 +67,11 @@ test(`${BACKEND}: the first frame needs the renderer module only; the dock fetch
     return document.querySelector('#dock .view-metrics').textContent;
   });
   assert.match(metrics, /\d/);
+  // The Lessons button fetches the player, its stylesheet and KaTeX, and shows the menu.
+  await page.locator('#t-lessons').click();
+  await page.locator('#lessons-menu').waitFor({ state: 'visible' });
+  for (const p of ['/js/lessons/player.js', '/css/lessons.css', '/vendor/katex.min.mjs']) assert.ok(requests.includes(p), `${p} not fetched for the Lessons menu`);
+  assert.equal(await page.locator('#t-lessons').count(), 1, 'one Lessons button');
   assert.deepEqual(await page.evaluate(() => window.screwbender.errors()), []);
   assert.deepEqual(problems, []);
   await page.context().close();
@@ -82,12 +101,13 @@ test(`${BACKEND}: a module that cannot load is named, and the editor works on`, 
   let blocked = true;
   const { page, problems } = await open(async (p) => {
     await p.route('**/pkg-full/**', (route) => (blocked ? route.abort('connectionrefused') : route.continue()));
-    await p.route('**/js/lessons/player.js', (route) => route.abort('connectionrefused'));
+    await p.route('**/js/lessons/player.js*', (route) => (blocked ? route.abort('connectionrefused') : route.continue()));
   });
-  // The lessons could not load: a message, no Lessons button, the page as it was.
+  // The lessons could not load: a message, no menu, the page as it was.
+  await page.locator('#t-lessons').click();
   await page.waitForFunction(() => window.screwbender.errors().some((e) => /Lessons unavailable/.test(e)));
   assert.equal(await page.evaluate(() => window.screwbender.lessons), null);
-  assert.equal(await page.locator('#t-lessons').count(), 0);
+  assert.equal(await page.locator('#lessons-menu').count(), 0);
   // The dock could not load: its message names the analysis functions; the dock stays closed.
   await page.locator('#t-dock').click();
   await page.waitForFunction(() => window.screwbender.errors().some((e) => /Could not load the analysis functions/.test(e)));
@@ -108,10 +128,12 @@ test(`${BACKEND}: a module that cannot load is named, and the editor works on`, 
   await page.keyboard.press('Control+z');
   await page.waitForFunction((b) => JSON.stringify(Array.from(window.screwbender.poses())) === b, JSON.stringify(before));
   await waitFrames(page, 2);
-  // The fetch works again: the next try opens the dock.
+  // The fetches work again: the next tries open the dock and the Lessons menu.
   blocked = false;
   await page.locator('#t-dock').click();
   await page.waitForSelector('#dock .tabs button[data-view="plots"].on');
+  await page.locator('#t-lessons').click();
+  await page.locator('#lessons-menu').waitFor({ state: 'visible' });
   assert.deepEqual(problems, []);
   await page.context().close();
 });

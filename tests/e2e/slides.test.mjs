@@ -3,7 +3,8 @@
 // real mouse events under the deck's scaling (a transform: ×1.1 at 1280×800, ×0.37 at 390×844),
 // under CSS zoom and in fullscreen; a figure on a hidden slide draws nothing until its slide is
 // shown; a focused figure keeps the keys it uses from the deck (ArrowRight, Space, Escape) while
-// unfocused keys turn the slides; reveal's print view shows every figure as a picture.
+// unfocused keys turn the slides; reveal's print view shows every figure as a picture of what it
+// shows on screen.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import zlib from 'node:zlib';
@@ -145,6 +146,18 @@ test('the deck: figures on their slides on the expected backend; a figure on a h
     const f1 = await framesOf();
     await page.waitForTimeout(800);
     assert.equal(await framesOf(), f1, 'playing, it stops drawing when its slide leaves');
+    // The two-figure slide fits the window side by side, at both common desktop widths.
+    for (const viewport of [{ width: 1280, height: 800 }, { width: 1920, height: 1080 }]) {
+      await page.setViewportSize(viewport);
+      // reveal lays the deck out again on its resize event; now, not whenever that comes.
+      await page.evaluate(() => window.deck.layout());
+      await page.waitForFunction(() => !document.querySelector('.reveal .slides section.present')?.getAnimations?.({ subtree: true }).some((a) => a.playState === 'running'));
+      const boxes = await page.evaluate(() => ['fig-bspline', 'fig-fourpoint'].map((id) => document.getElementById(id).getBoundingClientRect().toJSON()));
+      const [a, b] = boxes;
+      const at = `${viewport.width}×${viewport.height}: ${JSON.stringify(boxes.map((r) => [Math.round(r.left), Math.round(r.right)]))}`;
+      assert.ok(a.left >= 0 && b.right <= viewport.width, `the compare slide's figures leave the window at ${at}`);
+      assert.ok(a.right <= b.left && a.width > 0.3 * viewport.width, `the figures overlap or shrank at ${at}`);
+    }
     assert.deepEqual(deck.problems, []);
   } finally {
     await deck.close();
@@ -232,6 +245,62 @@ test('deck keys: a focused figure keeps ArrowRight, Space and Escape from the de
 });
 
 /** The images of a PDF file: each image XObject's size and, decoded, the spread of its pixels. */
+/**
+ * Grey-level signatures (SIG_W × SIG_H, decoded by the page's own image decoder) of `images`:
+ * each either encoded bytes (`{bytes, type}`: PNG, JPEG) or raw samples (`{raw: {px, n}, w, h}`,
+ * 1 or 3 per pixel, as a PDF's Flate image holds them).
+ */
+const SIG_W = 40;
+const SIG_H = 28;
+async function signatures(page, images) {
+  const items = images.map((i) => (i.raw ? { w: i.w, h: i.h, n: i.raw.n, px: i.raw.px.toString('base64') } : { type: i.type, b64: Buffer.from(i.bytes).toString('base64') }));
+  return page.evaluate(
+    async ({ items, W, H }) => {
+      const unbase64 = (b) => Uint8Array.from(atob(b), (c) => c.charCodeAt(0));
+      const out = [];
+      for (const it of items) {
+        let source;
+        if (it.px) {
+          const px = unbase64(it.px);
+          const rgba = new Uint8ClampedArray(it.w * it.h * 4);
+          for (let k = 0; k < it.w * it.h; k++) {
+            for (let c = 0; c < 3; c++) rgba[4 * k + c] = px[k * it.n + (it.n >= 3 ? c : 0)];
+            rgba[4 * k + 3] = 255;
+          }
+          source = await createImageBitmap(new ImageData(rgba, it.w, it.h));
+        } else {
+          source = await createImageBitmap(new Blob([unbase64(it.b64)], { type: it.type }));
+        }
+        const c = new OffscreenCanvas(W, H);
+        const g = c.getContext('2d');
+        g.drawImage(source, 0, 0, W, H);
+        const d = g.getImageData(0, 0, W, H).data;
+        const sig = [];
+        for (let i = 0; i < d.length; i += 4) sig.push((d[i] + d[i + 1] + d[i + 2]) / 3);
+        out.push(sig);
+      }
+      return out;
+    },
+    { items, W: SIG_W, H: SIG_H },
+  );
+}
+
+/** The correlation of two signatures: 1 for the same picture up to brightness and contrast, 0 against a blank one. */
+function correlation(a, b) {
+  const mean = (x) => x.reduce((s, v) => s + v, 0) / x.length;
+  const ma = mean(a);
+  const mb = mean(b);
+  let ab = 0;
+  let aa = 0;
+  let bb = 0;
+  for (let i = 0; i < a.length; i++) {
+    ab += (a[i] - ma) * (b[i] - mb);
+    aa += (a[i] - ma) ** 2;
+    bb += (b[i] - mb) ** 2;
+  }
+  return aa > 0 && bb > 0 ? ab / Math.sqrt(aa * bb) : 0;
+}
+
 function pdfImages(pdf) {
   const text = pdf.toString('latin1');
   const images = [];
@@ -245,9 +314,11 @@ function pdfImages(pdf) {
     const start = m.index + m[0].length;
     const bytes = pdf.subarray(start, start + len);
     let spread = null;
+    let raw = null;
     if (/\/FlateDecode/.test(dict) && !/\/DecodeParms/.test(dict)) {
       try {
         const px = zlib.inflateSync(bytes);
+        raw = { px, n: Math.round(px.length / (w * h)) };
         // Samples per pixel from the size (the colour space may be an ICC profile's).
         const n = Math.round(px.length / (w * h));
         const lum = [];
@@ -258,7 +329,7 @@ function pdfImages(pdf) {
         spread = null;
       }
     }
-    images.push({ w, h, jpeg: /\/DCTDecode/.test(dict), spread });
+    images.push({ w, h, jpeg: /\/DCTDecode/.test(dict), spread, bytes, raw });
   }
   return images;
 }
@@ -268,15 +339,25 @@ test('reveal\'s print view (?print-pdf): every figure prints as a picture of its
   const { page } = deck;
   try {
     await page.waitForFunction(() => document.documentElement.classList.contains('reveal-print') || document.querySelector('.reveal.print-pdf, html.print-pdf'), null, { timeout: 10000 }).catch(() => {});
-    // Every figure is scrolled to once (a lazy figure starts near the viewport) and draws.
+    // Every figure is scrolled to once (a lazy figure starts near the viewport) and draws; the
+    // playing one is paused, so that what it prints is the frame it shows.
     await page.evaluate(async () => {
       for (const f of document.querySelectorAll('screw-bender')) {
         f.scrollIntoView({ block: 'center' });
         await f.ready;
+        f.pause();
         await new Promise((res) => requestAnimationFrame(() => requestAnimationFrame(res)));
       }
-      window.scrollTo(0, 0);
     });
+    // What each figure shows on screen: its canvas, as the browser composites it.
+    const ids = await page.evaluate(() => [...document.querySelectorAll('screw-bender')].map((f) => f.id));
+    const shown = [];
+    for (const id of ids) {
+      const canvas = page.locator(`#${id} canvas`).first();
+      await canvas.scrollIntoViewIfNeeded();
+      shown.push({ type: 'image/png', bytes: await canvas.screenshot() });
+    }
+    await page.evaluate(() => window.scrollTo(0, 0));
     await page.emulateMedia({ media: 'print' });
     await page.waitForTimeout(1500);
     const pdf = await page.pdf({ width: '1000px', height: '700px', printBackground: true });
@@ -292,10 +373,17 @@ test('reveal\'s print view (?print-pdf): every figure prints as a picture of its
       })),
     );
     // A figure's picture is at least a quarter of its slide's width and 150 px high (the deck
-    // has other images, under 100 px high); a blank box has no image, or one of a
-    // single colour.
-    const pictures = images.filter((i) => i.w >= 250 && i.h >= 150 && (i.jpeg || i.spread === null || i.spread > 60));
-    assert.equal(pictures.length, 5, `five figures printed as pictures (images: ${JSON.stringify(images)}; figures: ${JSON.stringify(states)})`);
+    // has other images, under 100 px high). Each figure must have one that holds its pixels: the
+    // picture's signature correlates with that of the figure's canvas on screen (a blank box, a
+    // grey frame or a picture of another slide's figure does not).
+    const pictures = images.filter((i) => i.w >= 250 && i.h >= 150).map((i) => ({ ...i, type: 'image/jpeg' }));
+    const listed = JSON.stringify(images.map(({ w, h, jpeg, spread }) => ({ w, h, jpeg, spread })));
+    assert.equal(pictures.length, ids.length, `one picture per figure (images: ${listed}; figures: ${JSON.stringify(states)})`);
+    const seen = await signatures(page, shown);
+    const printed = await signatures(page, pictures);
+    const best = seen.map((sig) => Math.max(...printed.map((p) => correlation(sig, p))));
+    const named = ids.map((id, k) => `${id} ${best[k].toFixed(2)}`).join(', ');
+    for (let k = 0; k < ids.length; k++) assert.ok(best[k] >= 0.8, `${ids[k]}: no printed picture has its pixels (best correlation per figure: ${named}; figures: ${JSON.stringify(states)})`);
     assert.deepEqual(deck.problems, []);
   } finally {
     await deck.close();

@@ -20,11 +20,12 @@
 //   app                             the App object itself (for benchmarks / debugging); its state
 //                                   is read-only: change it through its setters (js/app.js)
 //   lessons: Promise<player>        the lesson player once fetched and started, after the first
-//                                   frame (js/lessons/player.js documents it; null if it failed)
+//                                   frame (js/lessons/player.js documents it; null if it failed);
+//                                   reading it fetches the player if the page has not yet
 //   lms                             only in a lesson package's page: its LMS connection, the
 //                                   learner's id and the course's place (js/lessons/launch.js)
 import { App } from './app.js';
-import { lazy } from './editor/modules.js';
+import { setUpLessons } from './editor/lessons-entry.js';
 
 const app = new App();
 
@@ -36,28 +37,16 @@ const ready = app.start().catch((e) => {
   throw e;
 });
 ready.catch(() => {});
-// Lessons: the Lessons menu, ?lesson=…, the first-visit tour, fetched once the first frame is
-// drawn (a failure leaves the page as it is, with a message).
-const loadPlayer = lazy('the lessons', (a) => import(a ? `./lessons/player.js?retry=${a}` : './lessons/player.js'));
-const lessons = ready.then(
-  async () => {
-    try {
-      // Two animation frames: the viewer's first frame is drawn before the lessons are asked for.
-      await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
-      const { startLessons } = await loadPlayer();
-      return startLessons(app);
-    } catch (e) {
-      app.showError(`Lessons unavailable: ${e.message}`);
-      return null;
-    }
-  },
-  () => null,
-);
+// Lessons: the player is fetched when a lesson, the tour or the Lessons menu is to be shown
+// (editor/lessons-entry.js); a failure leaves the page as it is, with a message.
+const lessons = setUpLessons(app, ready);
 
 /** @type {any} */ (window).screwbender = {
   ready,
   app,
-  lessons,
+  get lessons() {
+    return lessons();
+  },
   backend: () => app.backend,
   errors: () => [...app.errors],
   // During a drag the live state is the drag session's (the Motion gets the pose on release).

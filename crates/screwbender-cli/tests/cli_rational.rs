@@ -232,7 +232,7 @@ fn compare_puts_the_barr_baseline_beside_ramamoorthi_barr() {
     let rb = v["objectives"]["rb"]["objective"].as_f64().unwrap();
     let barr = v["objectives"]["barr"]["objective"].as_f64().unwrap();
     // docs/math/quaternion-splines.md §9: the baseline at or below, R–B within a few tenths of a
-    // percent (measured 0.25 %).
+    // percent.
     assert!(barr <= rb && (rb - barr) / barr < 0.005, "{rb} {barr}");
     assert!(v["objectives"]["barr"]["seconds"].as_f64().unwrap() > 0.0);
     assert_eq!(v["rows"].as_array().unwrap().len(), 2);

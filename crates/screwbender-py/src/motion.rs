@@ -293,7 +293,7 @@ fn state_from(
 
 #[pymethods]
 impl PyMotion {
-    /// See the class docstring in `screwbender/__init__.pyi`.
+    /// Makes a motion from control poses; `help(Motion)` describes the arguments.
     #[new]
     #[pyo3(signature = (poses, closed=None, scheme=None, levels=None, rules=None, s=None, times=None, velocities=None, name=None))]
     #[allow(clippy::too_many_arguments)]

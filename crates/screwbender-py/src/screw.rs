@@ -11,7 +11,10 @@ use crate::convert::{detached, parameters, pose_array, poses_to_array, shape_tex
 /// Pairs per chunk of the batch route: the chunk's poses stay in the nearest caches.
 const PAIRS_PER_CHUNK: usize = 256;
 
-/// See `screw` in `screwbender/__init__.pyi`.
+/// `screw(a, t, b)`: the pose after the fraction `t` of the screw motion from `a` to `b` (`t = 0`
+/// is `a`, `t = 1` is `b`, any real `t` extrapolates). `a`, `b`: one pose each (`(7,)` or
+/// `(4, 4)`) with `t` a number or an array, or batches `(n, 7)` / `(n, 4, 4)` (one side may be a
+/// single pose) with `t` a number or `(n,)`; rows `x y z qw qx qy qz`.
 #[pyfunction]
 pub fn screw<'py>(
     py: Python<'py>,

@@ -3,13 +3,18 @@
 // message and the editor goes on without the dock. Opening or closing the dock changes the 3-D
 // view's size: the panel folds beside it on screens narrower than 1700 px and the scene is
 // framed again. The dock itself, once there, is app.dock.
-import { lazy } from './modules.js';
+import { lazy, stylesheet } from './modules.js';
 
 // A retry asks for the modules under another URL (see editor/modules.js).
 const loadDockModule = lazy('the analysis dock', (a) => import(a ? `./dock.js?retry=${a}` : './dock.js'));
-const loadViewModules = lazy('the analysis views', (a) =>
-  import(a ? `../views/index.js?retry=${a}` : '../views/index.js').then((m) => m.loadViews(a)),
-);
+// The views' charts are uPlot's: its stylesheet comes with them.
+const loadViewModules = lazy('the analysis views', async (a) => {
+  const [views] = await Promise.all([
+    import(a ? `../views/index.js?retry=${a}` : '../views/index.js').then((m) => m.loadViews(a)),
+    stylesheet(new URL('../../vendor/uPlot.min.css', import.meta.url)),
+  ]);
+  return views;
+});
 
 /** @type {import('../app.js').Part} */
 export default {

@@ -13,9 +13,9 @@
 // PowerPoint and Keynote play); WebM carries VP8 or VP9. A browser without an H.264 encoder gets
 // WebM, with a message saying so. Every frame is in the video, however long the machine takes to
 // draw and encode it (a progress bar and a Cancel button meanwhile). MediaRecorder on
-// canvas.captureStream(0) was the first choice, but it stamps frames by the wall clock, and
-// headless Chromium's canvas track delivered none of 60 requested frames of the WebGL canvas (a
-// 2-D copy: 43 frames spread over 7.4 s for 2 s of motion). cycle() is the one place this part
+// canvas.captureStream(0) stamps frames by the wall clock, and headless Chromium's canvas track
+// drops frames of a canvas that takes long to draw (docs/speed/code-notes.md), so it is not
+// used. cycle() is the one place this part
 // touches the playback.
 //
 // Both leave out the selected pose's gizmo and highlight unless the View menu keeps them, and

@@ -40,6 +40,41 @@ async function init(imported) {
 }
 
 /**
+ * Opens the Share & embed dialog (editor/share-dialog.js, fetched when first opened: a first
+ * visit does not download it); a failed fetch is a message in the banner.
+ * @param {import('../app.js').App} app
+ * @param {Element | null} opener  where the focus goes back when the dialog closes
+ */
+export function openShare(app, opener = document.activeElement) {
+  shareDialog().then(
+    (m) => m.openShareDialog(app, opener),
+    (e) => app.showError(e.message),
+  );
+}
+const shareDialog = lazy('the share dialog', (a) => import(a ? `./share-dialog.js?retry=${a}` : './share-dialog.js'));
+
+/**
+ * Adds the stylesheet at `url` to the page and resolves once it has loaded: for the styles of
+ * code fetched when first used, which a first visit does not download either. A stylesheet
+ * that fails to load is taken out again (so that a retry adds it anew) and rejects.
+ * @param {URL} url
+ * @returns {Promise<void>}
+ */
+export function stylesheet(url) {
+  return new Promise((resolve, reject) => {
+    const link = document.createElement('link');
+    link.rel = 'stylesheet';
+    link.href = url.href;
+    link.onload = () => resolve();
+    link.onerror = () => {
+      link.remove();
+      reject(new Error(`${url.pathname.split('/').pop()} did not load`));
+    };
+    document.head.append(link);
+  });
+}
+
+/**
  * A loader of `what` (named in the error message): `load(attempt)` runs once and its promise is
  * kept; a failure is thrown as an Error naming `what` and forgotten, so the next call tries again
  * (with the next `attempt`: 0, 1, …).

@@ -4,7 +4,7 @@
 import GUI from '../../vendor/lil-gui.esm.min.js';
 import { exportMotion, importFiles } from './files.js';
 import { presetName } from './presets.js';
-import { openShareDialog } from './share-dialog.js';
+import { openShare } from './modules.js';
 import { smallScreen } from './fold.js';
 import { describeScene } from './status.js';
 
@@ -118,7 +118,7 @@ export function buildPanel(app, { openPaste }) {
     pasteJson: () => openPaste(),
     exportJson: () => app.exportJson(),
     importObj: () => $('obj-file').click(),
-    share: () => openShareDialog(app),
+    share: () => openShare(app),
     reset: () => app.loadPreset(app.view.scene),
   };
   const fFile = gui.addFolder('File');

@@ -1,7 +1,7 @@
 // The toolbar: gizmo mode, insert / delete, undo / redo, frame, help, snap, the dock's button,
 // and the View menu's Share entry; its buttons show the state (pressed, disabled).
 import { VIEW_IDS } from '../views/index.js';
-import { openShareDialog } from './share-dialog.js';
+import { openShare } from './modules.js';
 
 /**
  * Wires the buttons; `toggleHelp` opens and closes the help overlay. Returns {refresh}.
@@ -21,7 +21,7 @@ export function buildToolbar(app, { toggleHelp }) {
   tool('t-help', () => toggleHelp());
   tool('m-share', () => {
     app.parts.viewpoint.menu.close();
-    openShareDialog(app, $('t-view'));
+    openShare(app, $('t-view'));
   });
   tool('t-snap', () => app.setView('snap', !app.view.snap));
   tool('t-dock', () => app.openView(app.view.dock ? '' : app.lastView ?? firstView()));

@@ -5,7 +5,7 @@
 // status and the place, committed after each check. Opened outside an LMS it runs as a plain
 // lesson with its progress in this browser, and says so once.
 //
-// The course is read before the player starts (main.js starts it after the first frame), so the
+// The course is read before the player starts (its start waits for the first frame), so the
 // first-visit tour never covers the lesson, and the LMS's place is in the player's progress
 // before the Lessons menu first shows it.
 import { connectLms, variantSeed } from './lms.js';

@@ -50,7 +50,7 @@ export function fetchBunny() {
 /** Scale of the control-pose and animated objects relative to the strobe (avoids z-fighting). */
 const CONTROL_SCALE = 1.01;
 
-/** Named objects (mirrors named_shape in crates/screwbender-web/src/render/mod.rs) with body points to trace. */
+/** Named objects (the core's `presets::object_shape`, which `Mesh::named` draws) with body points to trace. */
 const OBJECT_POINTS = {
   bar: [[0, 0, 0], [2, 0, 0]],
   block: [[0, 0, 0], [0.6, 0.3, 0.2]],

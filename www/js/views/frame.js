@@ -1,7 +1,7 @@
 // Decoupled smoothing and frame independence (paper Fig. 9 V1 / Fig. 8 V2, docs/math/properties.md §1, docs/math/decoupled-methods.md §1):
 // the control poses are re-expressed with their local origin at the body point c (P ∘ translate(c))
 // and subdivided twice — by screws, and decoupled (origins by the point rule, rotations by the
-// same rules on rotation-only poses; crates/screwbender/src/subdivision/decoupled.rs). The trajectories of the same body
+// same rules on rotation-only poses; crates/screwbender/src/subdivision/componentwise.rs). The trajectories of the same body
 // points are drawn: the screw ones do not move when c changes, the decoupled ones do.
 import { el as h } from './dom.js';
 import { LAYER, Segments, poseOf } from '../view/slots.js';

@@ -131,8 +131,8 @@ impl<'a> NumberList<'a> {
 
 /// Copies `numbers` into the caller's `Float64Array` `target` (named `at` in errors), which must
 /// have exactly their length: the output of a bulk function written into memory the caller
-/// keeps. A fresh array per call costs its allocation and first touch, which in Chromium took
-/// 0.065 ms for 2048 poses (about a quarter of `subdivide()`); filling a kept one, 0.002 ms.
+/// keeps. A fresh array per call costs its allocation and first touch, a sizeable part of a
+/// `subdivide()` call, which filling a kept one avoids (docs/speed/code-notes.md).
 ///
 /// Its length, buffer and offset are read through internal slots (no user code runs); a
 /// detached buffer reads as length 0 and is refused like any other wrong length.

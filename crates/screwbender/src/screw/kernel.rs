@@ -99,7 +99,8 @@ pub(crate) fn regular_span<R: Real>(
 /// out-of-line copy of the batch's span it is a predictable branch.) With `GROUPS` (the batches)
 /// the arctangent is [`trig::atan2_kernel_lanes`], which skips the kernel's two steps for a group
 /// of short spans; the one-`f64` route keeps [`trig::atan2_kernel`], where one call's angle says
-/// nothing about the next (the bench's random pairs ran 1–2 % slower with the test). Both give
+/// nothing about the next (the bench's random pairs ran slower with the test:
+/// docs/speed/code-notes.md). Both give
 /// the same bits.
 #[inline(always)]
 #[allow(

@@ -84,8 +84,8 @@ pub trait Blend: Copy + 'static {
 /// Poses blend by screws. Their batch methods run several screws at a time on SIMD lanes
 /// (`screw::batch`: eight with AVX-512, four with AVX2 or wasm SIMD, two with SSE2 or NEON) where
 /// that pays: natively, and on wasm32 built with `simd128`. Plain wasm32 has no SIMD, the
-/// interleaved lanes gained nothing there in measurements, and their code would add 6 KB to the
-/// module, so it keeps the one-at-a-time defaults.
+/// interleaved lanes gained nothing there (docs/speed/code-notes.md), and their code would only
+/// add to the module, so it keeps the one-at-a-time defaults.
 impl Blend for Pose {
     type Span = Screw;
     #[inline]

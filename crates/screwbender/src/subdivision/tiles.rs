@@ -3,7 +3,7 @@
 //!
 //! Refined whole, every level of a large cycle streams its input and its output through main
 //! memory: at 2²⁰ refined poses (59 MB) the last four levels move about 200 MB, and a refined pose
-//! cost 1.5–2× what it costs at 2¹². But a refined pose reads only coarse poses less than
+//! costs more than at 2¹² (docs/speed/code-notes.md). But a refined pose reads only coarse poses less than
 //! `k + 1` coarse spans away (`k`, the scheme's half-width: 1 for the B-spline, 2 for the
 //! others), so at most `k` spans away, as coarse poses sit at whole spans; and a window refined as
 //! if it were a cycle performs, for the poses that never read across its artificial closing span,

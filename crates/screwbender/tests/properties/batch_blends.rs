@@ -4,6 +4,9 @@
 //! range), every batch length around the lane widths (the groups and the scalar tail), appended
 //! after poses already in the output.
 
+#[cfg(target_arch = "wasm32")]
+use wasm_bindgen_test::wasm_bindgen_test as test;
+
 use glam::{DQuat, DVec3};
 use screwbender::{screw, Blend, Pose};
 use testkit::{pose_bits as bits, Rng};

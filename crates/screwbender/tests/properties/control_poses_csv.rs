@@ -1,6 +1,9 @@
 //! The control-pose CSV (formats::csv::control_poses_csv): a design's poses, key times and
 //! velocities written and read back to the same document, open and closed.
 
+#[cfg(target_arch = "wasm32")]
+use wasm_bindgen_test::wasm_bindgen_test as test;
+
 use glam::{DQuat, DVec3};
 use screwbender::{control_poses_csv, parse_csv_poses, MotionDocument, Pose};
 

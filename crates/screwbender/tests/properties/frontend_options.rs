@@ -1,6 +1,9 @@
 //! The front ends' shared option rules (screwbender::frontend::options): ids, aliases, the
 //! agreement of `scheme` and `s`, the level cap and its reason, the default.
 
+#[cfg(target_arch = "wasm32")]
+use wasm_bindgen_test::wasm_bindgen_test as test;
+
 use screwbender::frontend::{
     default_subdivision, parse_levels, parse_levels_text, resolve, OptionsInput, DEFAULT_LEVELS,
     MAX_LEVELS,

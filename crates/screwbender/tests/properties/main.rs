@@ -1,4 +1,11 @@
-//! The core's properties, one module per subject, natively and in the browser.
+//! The core's properties, one module per subject, natively and in the browser: each module's
+//! tests are `#[test]` natively and `wasm_bindgen_test` on wasm32 (the module's
+//! `use wasm_bindgen_test::wasm_bindgen_test as test;`), which the wasm test stage runs in
+//! headless Chromium. Native only, each saying so with `#![cfg(not(target_arch = "wasm32"))]`:
+//! `fuzz_regressions`, which replays the native fuzz targets' checks (fuzz/), and the heaviest
+//! fits and samplings (`methods_barr`, `methods_continuity`, `methods_converged`, `pip_morph`,
+//! `rational_growth`): the browser test runner gives up on a page that does not answer for
+//! 30 s, which one long test holds up, and the wasm stage's time would grow by their whole run.
 //!
 //! They form one test binary rather than one per file: each binary is linked on its own and, on
 //! wasm32, started in a browser of its own by `wasm-bindgen-test-runner`, so a binary per file
@@ -42,3 +49,32 @@ mod subdivision_buffers;
 mod subdivision_properties;
 mod subdivision_warnings;
 mod timing_kinematics;
+
+/// Each module's tests run in the browser too (the module doc above): a module whose `#[test]`
+/// is the plain one would pass the wasm stage without running there. Native-only modules say so
+/// with `#![cfg(not(target_arch = "wasm32"))]`.
+#[cfg(not(target_arch = "wasm32"))]
+#[test]
+fn every_module_runs_in_the_browser_too() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/properties");
+    let mut checked = 0;
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_none_or(|e| e != "rs") || path.ends_with("main.rs") {
+            continue;
+        }
+        let text = std::fs::read_to_string(&path).unwrap();
+        let native_only = text.contains("#![cfg(not(target_arch = \"wasm32\"))]");
+        assert!(
+            native_only || text.contains("use wasm_bindgen_test::wasm_bindgen_test as test;"),
+            "{}: its tests would not run in the browser (no `use wasm_bindgen_test::wasm_bindgen_test as test;`)",
+            path.display()
+        );
+        checked += 1;
+    }
+    assert!(
+        checked > 30,
+        "only {checked} modules found in {}",
+        dir.display()
+    );
+}

@@ -2,6 +2,11 @@
 //! converged metrics of a C⁰ method show velocity jumps at the knots, a C¹ one none in velocity
 //! (and, when made of pieces, jumps in acceleration), a C² one neither. On a cycle (scene A2) and on an open sequence,
 //! so that every method of [`Method::ALL`] is measured at least once.
+//!
+//! Native only: its fits or sampling are among the heaviest of these modules, and the browser
+//! test runner gives up on a page that does not answer for 30 s, which a test that long holds
+//! up; the wasm stage leaves it out (tests/properties/main.rs).
+#![cfg(not(target_arch = "wasm32"))]
 
 use screwbender::methods::{
     compare_methods, Limit, Method, MetricsOptions, MetricsRow, Smoothness,

@@ -1,6 +1,11 @@
 //! `RationalMotion::growth` and its warning (docs/math/rational-motion.md §6.1): the C¹
 //! Chaudhry–Cameron recursion is flagged where it runs away from the data, and not on the
 //! paper's data or smooth sequences.
+//!
+//! Native only: its fits or sampling are among the heaviest of these modules, and the browser
+//! test runner gives up on a page that does not answer for 30 s, which a test that long holds
+//! up; the wasm stage leaves it out (tests/properties/main.rs).
+#![cfg(not(target_arch = "wasm32"))]
 
 use glam::{DQuat, DVec3};
 use screwbender::methods::{
@@ -90,8 +95,8 @@ fn long_noisy_and_zigzag_sequences_are_flagged() {
         assert!(w.contains("10000 samples") && w.contains("C1"), "{w}");
     }
     // A zig-zag: flagged from a few dozen samples on, and the angular acceleration energy per
-    // span shows why: C⁰'s stays the same, C¹'s runs away (measured: 79 per span at 8 samples,
-    // 34 500 at 60).
+    // span shows why: C⁰'s stays the same, C¹'s runs away (by orders of magnitude between 8 and
+    // 60 samples).
     let short = fit(&zigzag(8), C1_18);
     let long = fit(&zigzag(60), C1_18);
     assert!(short.warning().is_none(), "{}", short.growth());

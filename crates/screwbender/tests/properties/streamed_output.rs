@@ -5,6 +5,9 @@
 
 #![cfg(feature = "json")]
 
+#[cfg(target_arch = "wasm32")]
+use wasm_bindgen_test::wasm_bindgen_test as test;
+
 use std::io::{self, Write};
 
 use glam::DVec3;

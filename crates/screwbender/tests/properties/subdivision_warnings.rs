@@ -2,6 +2,9 @@
 //! rules are warned about exactly where a tweak screw spans half a turn or more, and those are
 //! the cases whose results leave the data's path.
 
+#[cfg(target_arch = "wasm32")]
+use wasm_bindgen_test::wasm_bindgen_test as test;
+
 use std::f64::consts::{PI, TAU};
 
 use glam::{DQuat, DVec3};
