@@ -3,6 +3,7 @@
 // names and dates, each to open or delete; a deleted draft is one Undo away. The drafts list
 // follows other tabs (the storage event). The editor itself (panel.js) is fetched when first
 // used.
+import { stylesheet } from '../../editor/modules.js';
 import { el } from '../dom.js';
 import { deleteDraft, listDrafts, onDraftsChanged, readDraft, restoreDraft } from '../drafts.js';
 
@@ -49,7 +50,7 @@ export function createWriteSection(app, { hideMenu, pasted, player }) {
   /** The lesson editor, fetched and made once. */
   async function getEditor() {
     try {
-      editor ??= Promise.all([import('./panel.js'), player()]).then(([m, p]) => ({ m, e: m.createLessonEditor(app, p), p }));
+      editor ??= Promise.all([import('./panel.js'), player(), stylesheet(new URL('../../../css/lesson-editor.css', import.meta.url))]).then(([m, p]) => ({ m, e: m.createLessonEditor(app, p), p }));
       return await editor;
     } catch (e) {
       editor = null;
