@@ -193,25 +193,21 @@ if [[ ${VIEWER:-1} == 1 ]]; then
   viewer=$PKG_DIR/viewer
   rm -rf "$viewer/js" "$viewer/css"
   header "viewer: sources"
-  mkdir -p "$viewer/js/element" "$viewer/js/view" "$viewer/css"
-  # The element's files as the page has them: viewer.js (npm/) tells them where the package puts
-  # the modules (www/js/assets.js's configure()); the stylesheet and the mesh are where they
-  # look by default.
-  cp www/js/element/*.js "$viewer/js/element/"
-  cp www/js/view/*.js "$viewer/js/view/"
-  cp www/js/math.js www/js/assets.js www/js/share-link.js "$viewer/js/"
+  mkdir -p "$viewer/js" "$viewer/css"
+  # The element and the view it is built on (www/js/element/, www/js/view/), bundled by esbuild
+  # (Vite's) into one minified module, viewer/js/screw-bender.js, with the share-link decoder in
+  # a chunk of its own (share-link.js beside it, imported only for a `share` payload): a figure
+  # downloads all of them, and one file gzips smaller than the files one by one. The bundle sits
+  # where www/js/assets.js does (one folder under viewer/), so the stylesheet and the mesh are
+  # where it looks by default (../css/, ../vendor/); viewer.js (npm/) tells it where the
+  # package keeps the WebAssembly modules. The readable sources are www/js/.
+  "$REPO_ROOT/node_modules/.bin/esbuild" www/js/element/screw-bender.js --bundle --minify --format=esm \
+    --splitting --chunk-names='[name]' --outdir="$viewer/js" --log-level=warning
   cp www/css/screw-bender.css "$viewer/css/"
-  # The Stanford bunny of the bunny6 preset, where assets.js finds it (../vendor/ from js/),
-  # with its origin and terms; fetched only when a figure shows that preset.
+  # The Stanford bunny of the bunny6 preset (viewer.js names it), with its origin and terms;
+  # fetched only when a figure shows that preset.
   mkdir -p "$viewer/vendor"
   cp www/vendor/bunny.obj www/vendor/bunny.NOTICE "$viewer/vendor/"
-  # The viewer's sources ship minified (esbuild, Vite's: each file on its own, imports and
-  # import.meta.url kept, comments dropped): a figure downloads them all, and the readable ones
-  # are www/js/. About 40 KB gzip becomes 25 KB (scripts/viewer-size.sh counts them).
-  while IFS= read -r -d '' f; do
-    "$REPO_ROOT/node_modules/.bin/esbuild" "$f" --minify --format=esm --log-level=warning --outfile="$f.min"
-    mv "$f.min" "$f"
-  done < <(find "$viewer/js" -name '*.js' -print0)
   # The figure's stylesheet too (its comments are for readers of www/css/).
   "$REPO_ROOT/node_modules/.bin/esbuild" "$viewer/css/screw-bender.css" --minify --log-level=warning --outfile="$viewer/css/screw-bender.css.min"
   mv "$viewer/css/screw-bender.css.min" "$viewer/css/screw-bender.css"

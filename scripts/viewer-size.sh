@@ -6,8 +6,8 @@
 #                ≤ WEBGPU_GZIP_BUDGET bytes (default 290 000);
 #   WebGL2 path: the same JS and CSS and viewer/pkg-gl/ (glue + WebGL2 wasm), not the WebGPU
 #                module ≤ WEBGL_GZIP_BUDGET bytes (default 1 200 000).
-# js/share-link.js (the share-link decoder) is imported only for a `share` payload, so
-# neither path counts it. Nor does either count viewer/vendor/bunny.obj (the Stanford bunny, about
+# js/share-link.js (the share-link decoder's chunk of the bundle) is imported only for a
+# `share` payload, so neither path counts it. Nor does either count viewer/vendor/bunny.obj (the Stanford bunny, about
 # 46 KB gzip), which a figure fetches only to show the bunny6 preset; it is logged apart.
 # Also checks that neither wasm carries a name section and that the WebGPU module has no GL
 # backend or shader translator (no naga/glow/WebGL2RenderingContext in its glue or wasm) and no
