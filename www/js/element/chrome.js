@@ -33,7 +33,7 @@ export const chromeFeature = {
       doc: 'Colours of the chrome, frame and 3-D view.',
     },
     {
-      name: 'touch-action', type: TOUCH, default: 'pan-y', parse: (v) => oneOf('touch-action', v, TOUCH),
+      name: 'touch-action', type: TOUCH, default: 'pan-y', parse: (v) => oneOf('touch-action', v, TOUCH), early: true,
       doc: 'What a touch on the unfocused figure leaves to the page: `pan-y` (a vertical swipe scrolls the page, a sideways one orbits), `pan-x`, or `none` (the figure takes every touch).',
     },
   ],

@@ -30,7 +30,7 @@ export const descriptionFeature = {
   doc: 'The accessible name and the live region.',
   options: [
     {
-      name: 'alt', type: 'string', default: DEFAULT_NAME, parse: (v) => (String(v).trim() === '' ? DEFAULT_NAME : String(v)),
+      name: 'alt', type: 'string', default: DEFAULT_NAME, early: true, parse: (v) => (String(v).trim() === '' ? DEFAULT_NAME : String(v)),
       doc: 'The figure\'s accessible name (a text alternative for screen readers).',
     },
   ],

@@ -251,7 +251,7 @@ export class Figure {
    * leaves to the page).
    */
   applyChrome() {
-    for (const f of EARLY) f.early(this, check(f, this.opts));
+    for (const f of EARLY) f.early(this, check(f, this.opts, true));
   }
 
   // ---------------------------------------------------------------- sources

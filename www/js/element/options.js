@@ -20,6 +20,7 @@
  * @property {(value: any, options: Record<string, any>) => any} [parse]
  * @property {any} [default]
  * @property {boolean} [empty]
+ * @property {boolean} [early] applies before the figure starts (checked then too)
  * @property {string} [ts]
  * @property {string} [deprecated]
  * @property {boolean} [attribute]
@@ -55,7 +56,8 @@
  * One feature of the figure: what it declares, and how it applies its options. `check` hands
  * `apply` the checked values of its options (all features are checked before any applies);
  * `apply` runs on every change of options and on each load (`full`), `drawn` after the figure
- * rebuilt its drawing; `early` applies options that take effect before the figure starts;
+ * rebuilt its drawing; `early` applies the options marked `early`, which take effect before
+ * the figure starts (and are checked alone then);
  * `changed` sees every change of options first (also before the start); `loaded` runs when a
  * motion has loaded (what was asked before it takes effect).
  * @typedef {object} Feature
@@ -134,14 +136,17 @@ export function oneOf(name, value, list) {
 }
 
 /**
- * The checked values of `feature`'s options in `o`: each option's `parse` of its value, or its
- * default when it is absent or empty. Throws the first option's OptionError.
+ * The checked values of `feature`'s options in `o` (with `early`, of its early options alone):
+ * each option's `parse` of its value, or its default when it is absent or empty. Throws the
+ * first option's OptionError.
  * @param {Feature} feature
  * @param {Record<string, any>} o
+ * @param {boolean} [early]
  */
-export function check(feature, o) {
+export function check(feature, o, early = false) {
   const out = {};
   for (const d of feature.options ?? []) {
+    if (early && !d.early) continue;
     let v = o[d.name];
     if (v === undefined || v === null || (v === '' && d.type !== 'boolean' && !d.empty)) v = d.default;
     out[d.name] = v !== undefined && d.parse ? d.parse(v, o) : v;
