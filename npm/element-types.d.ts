@@ -1,8 +1,8 @@
-// The <screw-bender> element's attributes, properties and events, written once: what the
-// framework typings (react.d.ts, vue.d.ts, svelte.d.ts) build their element entries from, and what
-// custom-elements.json describes for IDEs and documentation tools. Names follow HTMLMediaElement
-// where they apply (currentTime, duration, paused, playbackRate, loop; play, pause, ended,
-// timeupdate, seeked). Every member is optional here: a framework may set any of them.
+// The <screw-bender> element's attributes, properties and events: what the framework typings
+// (react.d.ts, vue.d.ts, svelte.d.ts) build their element entries from. Written by
+// scripts/element-api.mjs from the element's declarations (www/js/element/features.js and
+// the files it names): edit those, not this file. Names follow HTMLMediaElement where they
+// apply. Every member is optional here: a framework may set any of them.
 import type { MotionDocumentInput, SubdivisionOptions } from './screwbender.js';
 import type { CameraState, ScrewBenderElement } from './viewer.js';
 
@@ -11,14 +11,13 @@ export type BooleanAttribute = boolean | '' | 'true' | 'false';
 /** A number attribute: a number, or its decimal text as attributes carry it. */
 export type NumberAttribute = number | `${number}`;
 
-
 /**
  * The attributes of <screw-bender> (strings in HTML; a framework may pass numbers and booleans,
  * which the element reads the same way). Sources: the first present of `src`, `share`, an inline
  * `<script type="application/json">` child, `preset`.
  */
 export interface ScrewBenderAttributes {
-  /** A preset id, e.g. `'l_cycle_rotated'`. */
+  /** A preset id, e.g. `l_cycle_rotated` (the source when none of src, share or an inline JSON child is given). */
   preset?: string;
   /** @deprecated Renamed to `preset`. */
   scene?: string;
@@ -26,44 +25,44 @@ export interface ScrewBenderAttributes {
   src?: string;
   /** A playground share-link payload (the part after `#s=`, or the whole link). */
   share?: string;
+  /** A localStorage key: the figure saves its edits there and restores them (never without it). */
+  persist?: string;
+  /** The subdivision scheme. */
   scheme?: SubdivisionOptions['scheme'];
-  /** Subdivision levels, 0 to 19. */
-  levels?: NumberAttribute;
-  /** The J_s parameter `s`, -4 to 4 (implies scheme `'j'`). */
+  /** The J_s parameter `s`, -4 to 4 (implies scheme `j`). */
   s?: NumberAttribute;
   /** @deprecated Renamed to `s`. */
   j?: NumberAttribute;
+  /** The rule set: `direct`, or the first version's split-then-tweak (`split`). */
   rules?: SubdivisionOptions['rules'];
+  /** Subdivision levels, 0 to 19. */
+  levels?: NumberAttribute;
   /** Copies of the object drawn along the motion, 0 to 20000. */
   strobe?: NumberAttribute;
   /** Layers shown, space separated: strobe control trajectories polyscrew polygon triads grid. */
   show?: string;
-  autoplay?: BooleanAttribute;
-  /** Loop an open motion while playing (default true). */
-  loop?: BooleanAttribute;
-  /** Control poses per second while playing, 0 to 100 (default 1). */
-  speed?: NumberAttribute;
-  /** Select and drag poses with the gizmo (default off: orbit, play and scrub only). */
-  editable?: BooleanAttribute;
-  /** The figure's chrome: none, minimal (default) or full. */
+  /** The figure's chrome: none, minimal (play, scrub, time) or full (plus scheme, levels, frame). */
   controls?: 'none' | 'minimal' | 'full';
-  /**
-   * `iso`, `front`, `side`, `top`, `"yaw pitch [distance]"` or `"yaw pitch distance tx ty tz"`
-   * (degrees, scene units; the last three the point looked at) as an attribute; as a property,
-   * the camera as state (radians, scene units).
-   */
-  camera?: string | Partial<CameraState>;
+  /** Colours of the chrome, frame and 3-D view. */
   theme?: 'light' | 'dark';
-  /** A localStorage key: the figure saves its edits there and restores them (never without it). */
-  persist?: string;
+  /** What a touch on the unfocused figure leaves to the page: `pan-y` (a vertical swipe scrolls the page, a sideways one orbits), `pan-x`, or `none` (the figure takes every touch). */
+  'touch-action'?: 'pan-y' | 'pan-x' | 'none';
   /** The figure's accessible name (a text alternative for screen readers). */
   alt?: string;
-  /** `lazy` (default): start when the figure nears the viewport; `eager`: at once. */
+  /** Select and drag poses with the gizmo (off: orbit, play and scrub only). */
+  editable?: BooleanAttribute;
+  /** `iso`, `front`, `side`, `top`, `"yaw pitch [distance]"` or `"yaw pitch distance tx ty tz"` (degrees, scene units; the last three the point looked at) as an attribute; as a property, the camera as state (radians, scene units). */
+  camera?: string | Partial<CameraState>;
+  /** Play from the start. */
+  autoplay?: BooleanAttribute;
+  /** Loop an open motion while playing. */
+  loop?: BooleanAttribute;
+  /** Control poses per second while playing, 0 to 100. */
+  speed?: NumberAttribute;
+  /** `lazy`: start when the figure nears the viewport; `eager`: at once. */
   loading?: 'lazy' | 'eager';
   /** URL of an image shown until the figure starts. */
   poster?: string;
-  /** Which touch gestures the page keeps (CSS touch-action over the figure's canvas). */
-  'touch-action'?: string;
 }
 
 /** Options of play(): how many times an open motion plays before it ends. */
@@ -71,28 +70,25 @@ export interface PlayOptions {
   repetitions?: number;
 }
 
-
 /**
- * The properties a framework sets on the element (besides the attributes): the motion
- * document, a partial options object, and the playback state in the names of HTMLMediaElement.
+ * The properties a framework sets on the element besides the attributes (those of an
+ * attribute's name are typed there).
  */
 export interface ScrewBenderProperties {
-  /** The motion document shown; set to show another. */
-  document?: MotionDocumentInput | object | null;
-  /** A partial options object (the attributes' names), applied in place. */
+  /** The options given, with the motion's subdivision options; set a partial object to change some. */
   options?: Partial<Record<keyof ScrewBenderAttributes, unknown>> & Partial<SubdivisionOptions>;
-  /** The playhead in seconds (settable, also while paused). */
+  /** The motion document shown (null before it loads); set to show another. */
+  document?: MotionDocumentInput | object | null;
+  /** The playhead in seconds; set it to seek (works while paused; fires `seeked`). */
   currentTime?: number;
-  /** Playback speed factor; negative plays backwards. */
+  /** Motion seconds per real second, −100 to 100 (negative plays backwards); starts as `speed`. */
   playbackRate?: number;
 }
-
-/** The detail of `time`: seconds `t` in [start, end] and the motion's parameter `u`. */
-export interface TimeDetail {
-  t: number;
-  u: number;
-  start: number;
-  end: number;
+/** The detail of `error`: the attribute and value at fault (null when none) and the message. */
+export interface ErrorDetail {
+  attribute: string | null;
+  value: unknown;
+  message: string;
 }
 /** The detail of `change`: every control pose (7 numbers each) and the pose edited. */
 export interface ChangeDetail {
@@ -103,30 +99,43 @@ export interface ChangeDetail {
 export interface SelectDetail {
   index: number;
 }
-/** The detail of `error`: the attribute and value at fault (null when none) and the message. */
-export interface ErrorDetail {
-  attribute: string | null;
-  value: unknown;
-  message: string;
-}
 /** The detail of `camera-change`: who moved the camera, and where it is now. */
 export interface CameraChangeDetail {
   source: 'user' | 'api';
   camera?: CameraState;
 }
+/** The detail of `time`: seconds `t` in [start, end] and the motion's parameter `u`. */
+export interface TimeDetail {
+  t: number;
+  u: number;
+  start: number;
+  end: number;
+}
 
 /** The events of <screw-bender>, by type (none of them bubbles out of the figure as an exception). */
 export interface ScrewBenderEvents {
-  change: CustomEvent<ChangeDetail>;
-  select: CustomEvent<SelectDetail>;
-  time: CustomEvent<TimeDetail>;
+  /** An attribute, source or call failed; the figure shows the message. */
   error: CustomEvent<ErrorDetail>;
-  play: Event;
-  pause: Event;
-  ended: Event;
-  timeupdate: Event;
-  seeked: Event;
+  /** A pose of an editable figure was moved: every control pose (7 numbers each) and the pose edited. */
+  change: CustomEvent<ChangeDetail>;
+  /** A control pose was selected (-1: none). */
+  select: CustomEvent<SelectDetail>;
+  /** The camera moved, by the reader (`user`) or by code (`api`). */
   'camera-change': CustomEvent<CameraChangeDetail>;
+  /** The playhead moved: seconds t in [start, end] and the motion's parameter u. */
+  time: CustomEvent<TimeDetail>;
+  /** The playhead moved (as `time`, in HTMLMediaElement's name). */
+  timeupdate: Event;
+  /** Playback started. */
+  play: Event;
+  /** Playback stopped. */
+  pause: Event;
+  /** An open motion that does not loop reached its end. */
+  ended: Event;
+  /** A seek (or a set of currentTime) finished. */
+  seeked: Event;
+  /** playbackRate changed. */
+  ratechange: Event;
 }
 
 /** An event's handler, `this` being the element. */

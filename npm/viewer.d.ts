@@ -173,6 +173,23 @@ export const ATTRIBUTES: readonly string[];
 /** The layer names of `show`. */
 export const LAYERS: readonly Layer[];
 
+/** Where a figure finds its assets, for a build that moves or inlines them (each optional). */
+export interface AssetConfig {
+  /** Functions that import the wasm-bindgen modules: the renderer module, the WebGL2 one (null: none), one that reads glTF and CSV. */
+  modules?: { main: () => Promise<unknown>; gl: (() => Promise<unknown>) | null; files: () => Promise<unknown> };
+  /** The stylesheet's URL (a `data:` URL works). */
+  stylesheet?: string;
+  /** The stylesheet's text, put in a `<style>` instead. */
+  css?: string;
+  /** The bunny6 preset's mesh (OBJ) URL; null: none (a wedge stands in). */
+  bunny?: string | null;
+}
+/**
+ * Tells every figure where its assets are, before the first one starts. This entry already
+ * names its own modules; a bundle that inlines them calls it from a module imported first.
+ */
+export function configure(assets: AssetConfig): void;
+
 declare global {
   interface HTMLElementTagNameMap {
     'screw-bender': ScrewBenderElement;

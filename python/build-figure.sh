@@ -15,5 +15,6 @@ if [[ ! -f www/pkg-webgpu/screwbender_bg.wasm || ! -f www/pkg-gl/screwbender_bg.
   BUILD_ONLY=1 scripts/serve.sh
   www_lock
 fi
-node python/widget/build.mjs www
+node scripts/element-api.mjs --python
+node python/widget/build.mjs
 www_unlock

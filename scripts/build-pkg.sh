@@ -193,40 +193,29 @@ if [[ ${VIEWER:-1} == 1 ]]; then
   viewer=$PKG_DIR/viewer
   rm -rf "$viewer/js" "$viewer/css"
   header "viewer: sources"
-  mkdir -p "$viewer/js/element" "$viewer/js/view" "$viewer/js/editor" "$viewer/css"
-  # The element's files; modules.js is replaced below.
-  cp www/js/element/*.js "$viewer/js/element/"
-  cp www/js/view/*.js "$viewer/js/view/"
-  cp www/js/math.js "$viewer/js/"
-  cp www/js/editor/session.js "$viewer/js/editor/"
+  mkdir -p "$viewer/js" "$viewer/css"
+  # The element and the view it is built on (www/js/element/, www/js/view/), bundled by esbuild
+  # (Vite's) into one minified module, viewer/js/screw-bender.js, with the share-link decoder in
+  # a chunk of its own (share-link.js beside it, imported only for a `share` payload): a figure
+  # downloads all of them, and one file gzips smaller than the files one by one. The bundle sits
+  # where www/js/assets.js does (one folder under viewer/), so the stylesheet and the mesh are
+  # where it looks by default (../css/, ../vendor/); viewer.js (npm/) tells it where the
+  # package keeps the WebAssembly modules. The readable sources are www/js/.
+  "$REPO_ROOT/node_modules/.bin/esbuild" www/js/element/screw-bender.js --bundle --minify --format=esm \
+    --splitting --chunk-names='[name]' --outdir="$viewer/js" --log-level=warning
   cp www/css/screw-bender.css "$viewer/css/"
-  # The Stanford bunny of the bunny6 preset, where drawing.js fetches it (../../vendor/ from
-  # js/view/), with its origin and terms; fetched only when a figure shows that preset.
+  # The Stanford bunny of the bunny6 preset (viewer.js names it), with its origin and terms;
+  # fetched only when a figure shows that preset.
   mkdir -p "$viewer/vendor"
   cp www/vendor/bunny.obj www/vendor/bunny.NOTICE "$viewer/vendor/"
-  # The package's main renderer module has WebGPU only: name the WebGL2 module.
-  cat >"$viewer/js/element/modules.js" <<'JS'
-// The figure's WebAssembly modules in the npm package (written by scripts/build-pkg.sh): the
-// main one has WebGPU only; the WebGL2 one is imported only when WebGPU has no usable adapter;
-// `screwbender/full` only to read a glTF or CSV `src` with the WebGPU one (no file import).
-export const loadMain = () => import('../../pkg/screwbender.js');
-export const loadGl = () => import('../../pkg-gl/screwbender.js');
-export const loadFiles = () => import('../../../full/screwbender.js');
-JS
-  # The viewer's sources ship minified (esbuild, Vite's: each file on its own, imports and
-  # import.meta.url kept, comments dropped): a figure downloads them all, and the readable ones
-  # are www/js/ (scripts/viewer-size.sh counts them; docs/speed/code-notes.md has the sizes).
-  while IFS= read -r -d '' f; do
-    "$REPO_ROOT/node_modules/.bin/esbuild" "$f" --minify --format=esm --log-level=warning --outfile="$f.min"
-    mv "$f.min" "$f"
-  done < <(find "$viewer/js" -name '*.js' -print0)
   # The figure's stylesheet too (its comments are for readers of www/css/).
   "$REPO_ROOT/node_modules/.bin/esbuild" "$viewer/css/screw-bender.css" --minify --log-level=warning --outfile="$viewer/css/screw-bender.css.min"
   mv "$viewer/css/screw-bender.css.min" "$viewer/css/screw-bender.css"
-  # The element's types (viewer.d.ts, element-types.d.ts), its entries in React's, Vue's and
-  # Svelte's typings, and its Custom Elements Manifest (package.json's "customElements" field).
-  cp npm/viewer.js npm/viewer.d.ts npm/element-types.d.ts npm/react.d.ts npm/vue.d.ts npm/svelte.d.ts \
-    npm/custom-elements.json "$PKG_DIR/"
+  # The element's types (viewer.d.ts), its entries in React's, Vue's and Svelte's typings, and
+  # from its declarations (scripts/element-api.mjs) element-types.d.ts and its Custom Elements
+  # Manifest (package.json's "customElements" field).
+  cp npm/viewer.js npm/viewer.d.ts npm/react.d.ts npm/vue.d.ts npm/svelte.d.ts "$PKG_DIR/"
+  node scripts/element-api.mjs --npm-out "$PKG_DIR"
 fi
 
 header "package files"

@@ -6,9 +6,9 @@
 #                ≤ WEBGPU_GZIP_BUDGET bytes (default 290 000);
 #   WebGL2 path: the same JS and CSS and viewer/pkg-gl/ (glue + WebGL2 wasm), not the WebGPU
 #                module ≤ WEBGL_GZIP_BUDGET bytes (default 1 200 000).
-# js/editor/session.js is imported only for a `share` payload, so
-# neither path counts it. Nor does either count viewer/vendor/bunny.obj (the Stanford bunny),
-# which a figure fetches only to show the bunny6 preset; its size is logged apart.
+# js/share-link.js (the share-link decoder's chunk of the bundle) is imported only for a
+# `share` payload, so neither path counts it. Nor does either count viewer/vendor/bunny.obj (the Stanford bunny),
+# which a figure fetches only to show the bunny6 preset; it is logged apart.
 # Also checks that neither wasm carries a name section and that the WebGPU module has no GL
 # backend or shader translator (no naga/glow/WebGL2RenderingContext in its glue or wasm) and no
 # file import (the figure reads a glTF or CSV `src` with the `screwbender/full` module).
@@ -31,7 +31,7 @@ gz() { # FILE...: total gzip -9 bytes
   echo "$total"
 }
 
-mapfile -t common < <(LC_ALL=C find "$pkg/viewer.js" "$v/js" "$v/css" -type f -not -path '*/js/editor/*' | LC_ALL=C sort)
+mapfile -t common < <(LC_ALL=C find "$pkg/viewer.js" "$v/js" "$v/css" -type f -not -path '*/js/share-link.js' | LC_ALL=C sort)
 common_gz=$(gz "${common[@]}")
 glue_gz=$(gz "$v/pkg/screwbender.js")
 webgpu_wasm_gz=$(gz "$v/pkg/screwbender_bg.wasm")

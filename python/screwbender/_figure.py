@@ -25,11 +25,11 @@ import pathlib
 import uuid
 from typing import Any, Optional, Union
 
-import anywidget
 import ipywidgets
 import numpy as np
 import traitlets
 
+from ._figure_options import FigureOptions
 from ._screwbender import Motion
 
 _STATIC = pathlib.Path(__file__).parent / "static"
@@ -104,7 +104,7 @@ class _StaticCopies:
         return False
 
 
-class Figure(anywidget.AnyWidget):
+class Figure(FigureOptions):
     """A live 3-D figure of a motion in a notebook, with two-way sync.
 
     ``Figure(m_or_P, editable=True, scheme=..., levels=..., show=..., strobe=..., camera=...)``:
@@ -142,22 +142,11 @@ class Figure(anywidget.AnyWidget):
     poses = traitlets.Any(None, allow_none=True).tag(
         sync=True, to_json=_poses_to_json, from_json=_poses_from_json
     )
+    # The element's options (scheme, s, levels, rules, show, strobe, camera, editable, autoplay,
+    # controls, theme, backend) are FigureOptions' traitlets; these are the notebook's own.
     closed = traitlets.Bool(True).tag(sync=True)
     name = traitlets.Unicode(None, allow_none=True).tag(sync=True)
-    scheme = traitlets.Unicode(None, allow_none=True).tag(sync=True)
-    s = traitlets.Float(None, allow_none=True).tag(sync=True)
-    levels = traitlets.Int(None, allow_none=True).tag(sync=True)
-    rules = traitlets.Unicode("direct").tag(sync=True)
-    editable = traitlets.Bool(True).tag(sync=True)
-    show = traitlets.Unicode(None, allow_none=True).tag(sync=True)
-    strobe = traitlets.Int(None, allow_none=True).tag(sync=True)
-    camera = traitlets.Unicode(None, allow_none=True).tag(sync=True)
-    autoplay = traitlets.Bool(False).tag(sync=True)
-    controls = traitlets.Unicode(None, allow_none=True).tag(sync=True)
-    theme = traitlets.Unicode(None, allow_none=True).tag(sync=True)
     height = traitlets.Int(420).tag(sync=True)
-    #: ``None`` (WebGPU where the browser has a usable adapter, else WebGL2) or ``"webgl2"``.
-    backend = traitlets.Enum([None, "webgl2"], None, allow_none=True).tag(sync=True)
 
     def __init__(
         self,

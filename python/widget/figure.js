@@ -3,10 +3,14 @@
 // bound to the widget's model. Bundled with the renderer's WebAssembly module by build.mjs into
 // screwbender/static/figure.js; nothing is fetched from the network.
 //
-// Model → figure: `poses` (rows x y z qw qx qy qz) replace the motion's poses in place (the
-// camera stays); the options (scheme, s, levels, rules, closed, show, strobe, camera, editable,
-// autoplay, controls, theme) go to the figure's options. Figure → model: a drag that moved a pose
+// Model → figure: `poses` (rows x y z qw qx qy qz) and `closed` replace the motion's poses in
+// place (the camera stays); the options (scheme, s, levels, rules, show, strobe, camera,
+// editable, autoplay, controls, theme, backend) go to the figure's options. Figure → model: a drag that moved a pose
 // sets `poses` and saves it, which updates `fig.poses` in the kernel and fires its observers.
+// The options are those the element's declarations mark for the notebook (the same list as the
+// traitlets of screwbender/_figure_options.py, both made from www/js/element/features.js).
+import './assets.js';
+import { WIDGET_OPTIONS as OPTIONS } from '../../www/js/element/features.js';
 import { mount } from '../../www/js/element/screw-bender.js';
 
 // Every figure of a page uses the first bundle's mount(): one wasm instance and one WebGPU
@@ -14,8 +18,6 @@ import { mount } from '../../www/js/element/screw-bender.js';
 // imports a module per widget model).
 const SHARED = Symbol.for('screwbender.figure.mount');
 const shared = (globalThis[SHARED] ??= { mount });
-
-const OPTIONS = ['scheme', 's', 'levels', 'rules', 'show', 'strobe', 'camera', 'editable', 'autoplay', 'controls', 'theme', 'backend'];
 
 /** The figure's options of the model's values (rules "split-then-tweak" is "split" there). */
 function figureOptions(model) {

@@ -4,12 +4,10 @@
 //
 // The file is made of:
 // * the element's ES modules (www/js/element/screw-bender.js and what it imports, the wasm-bindgen
-//   glue among them) bundled by esbuild into one inline module script. Three files are changed on
-//   the way, each at one exact place (the build stops when a place is not found, so a change of
-//   those lines is noticed here and not in a broken download): element/modules.js loads the
-//   modules from the page's inline bytes instead of pkg-webgpu/ and pkg-gl/; element/chrome.js links the stylesheet
-//   as a data: URL; view/drawing.js reads the Stanford bunny from the page (the dialog adds it
-//   only when the figure shows it).
+//   glue among them) bundled by esbuild into one inline module script, unchanged. A module run
+//   first (OFFLINE_ASSETS) tells the figure where its assets are (www/js/assets.js's
+//   configure()): the renderer modules from the page's inline bytes, the stylesheet as a data:
+//   URL, the Stanford bunny from the page (the dialog adds it only when the figure shows it).
 // * the two renderer modules of the figure (WebGPU, and WebGL2 where WebGPU has no adapter),
 //   each gzip-compressed (DecompressionStream unpacks it) and base64-encoded in a
 //   <script type="application/octet-stream"> element, which the browser never runs; only the one
@@ -32,21 +30,13 @@ const WASM_GL = path.join(WWW, 'pkg-gl/screwbender_bg.wasm');
 /** Where the dialog puts the figure, the title and the bunny (each once in the template). */
 const SLOTS = { figure: '<!--screwbender:figure-->', title: '<!--screwbender:title-->', bunny: '<!--screwbender:bunny-->' };
 
-/** Replaces the one occurrence of `from` in `text` (of `file`), or stops the build. */
-function replaceOnce(text, from, to, file) {
-  const at = text.indexOf(from);
-  if (at < 0 || text.indexOf(from, at + 1) >= 0) {
-    throw new Error(`60-offline: ${file} no longer has exactly one ${JSON.stringify(from)}; update scripts/serve.d/60-offline.mjs`);
-  }
-  return text.slice(0, at) + to + text.slice(at + from.length);
-}
-
 const css = fs.readFileSync(path.join(WWW, 'css/screw-bender.css'), 'utf8');
 const cssUrl = `data:text/css;base64,${Buffer.from(css).toString('base64')}`;
 
-const OFFLINE_MODULES = `
-import * as glue from '../../pkg-webgpu/screwbender.js';
-import * as glueGl from '../../pkg-gl/screwbender.js';
+const OFFLINE_ASSETS = `
+import { configure } from './js/assets.js';
+import * as glue from './pkg-webgpu/screwbender.js';
+import * as glueGl from './pkg-gl/screwbender.js';
 
 /** A wasm module's bytes from the page: base64 of gzip (scripts/serve.d/60-offline.mjs). */
 async function wasmBytes(id) {
@@ -61,37 +51,31 @@ async function inline(g, id) {
   return { ...g, default: () => g.default({ module_or_path }) };
 }
 
-export const loadMain = () => inline(glue, 'screwbender-wasm');
-export const loadGl = () => inline(glueGl, 'screwbender-wasm-gl');
-/** Both inline modules read glTF and CSV themselves, and the page fetches no other module. */
-export const loadFiles = () => Promise.reject(new Error('no file import module offline'));
+const bunny = document.getElementById('screwbender-bunny');
+configure({
+  modules: {
+    main: () => inline(glue, 'screwbender-wasm'),
+    gl: () => inline(glueGl, 'screwbender-wasm-gl'),
+    // Both inline modules read glTF and CSV themselves, and the page fetches no other module.
+    files: () => Promise.reject(new Error('no file import module offline')),
+  },
+  stylesheet: ${JSON.stringify(cssUrl)},
+  // No bunny in the page: none, and the wedge stands in.
+  bunny: bunny ? 'data:text/plain;charset=utf-8,' + encodeURIComponent(bunny.textContent) : null,
+});
 `;
 
+/** The entry: the assets first (evaluated before the element defines itself), then the element. */
 const offline = {
   name: 'offline',
   setup(build) {
-    build.onLoad({ filter: /[\\/]www[\\/]js[\\/](element|view)[\\/](modules|chrome|drawing)\.js$/ }, (args) => {
-      const rel = path.relative(WWW, args.path);
-      let text = fs.readFileSync(args.path, 'utf8');
-      if (rel.endsWith('modules.js')) text = OFFLINE_MODULES;
-      else if (rel.endsWith('chrome.js')) {
-        text = replaceOnce(text, "new URL('../../css/screw-bender.css', import.meta.url).href", JSON.stringify(cssUrl), rel);
-      } else if (rel.endsWith('drawing.js')) {
-        // No bunny in the page: a data: URL that fails to load, and the wedge stands in.
-        text = replaceOnce(
-          text,
-          "new URL('../../vendor/bunny.obj', import.meta.url)",
-          "((b) => (b ? 'data:text/plain;charset=utf-8,' + encodeURIComponent(b.textContent) : 'data:text/plain;base64,*'))(document.getElementById('screwbender-bunny'))",
-          rel,
-        );
-      }
-      return { contents: text, loader: 'js', resolveDir: path.dirname(args.path) };
-    });
+    build.onResolve({ filter: /^offline:assets$/ }, () => ({ path: 'assets', namespace: 'offline' }));
+    build.onLoad({ filter: /.*/, namespace: 'offline' }, () => ({ contents: OFFLINE_ASSETS, loader: 'js', resolveDir: WWW }));
   },
 };
 
 const result = await esbuild.build({
-  entryPoints: [path.join(WWW, 'js/element/screw-bender.js')],
+  stdin: { contents: "import 'offline:assets';\nimport './js/element/screw-bender.js';\n", resolveDir: WWW, loader: 'js' },
   bundle: true,
   minify: true,
   format: 'esm',

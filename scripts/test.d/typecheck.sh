@@ -12,3 +12,6 @@ cd "$REPO_ROOT"
 
 [[ -x node_modules/.bin/tsc ]] || die "node_modules/.bin/tsc is missing: run npm ci"
 timed "tsc --project www/jsconfig.json" node_modules/.bin/tsc --project www/jsconfig.json
+# The element's typings, manifest and notebook traitlets are written from its declarations
+# (scripts/element-api.mjs); the committed ones must be what the declarations give now.
+timed "element API files up to date" node scripts/element-api.mjs --check

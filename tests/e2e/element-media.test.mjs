@@ -3,7 +3,9 @@
 // duration, paused, playbackRate (backwards too), loop, play({repetitions}) and the events play,
 // pause, seeked, timeupdate, ended against a scripted sequence; the camera property and
 // camera-change from a real drag ('user') and from code ('api'); pictures from code (toBlob,
-// toDataURL) at the asked size, 2× drawn (not scaled up), without the gizmo unless asked.
+// toDataURL) at the asked size, 2× drawn (not scaled up), without the gizmo unless asked; the
+// element's real observed attributes, members and fired events against its features'
+// declarations (www/js/element/features.js).
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { EXPECTED_BACKEND, OPEN3, canvasBox, figureFrames, openOnePage, pageHtml } from './element-lib.mjs';
@@ -19,6 +21,14 @@ before(async () => {
   await page.evaluate(async () => {
     const el = document.getElementById('f');
     await el.ready;
+    // Every event type the element dispatches, however it does so (checked against the
+    // declarations by the last test).
+    window.__fired = new Set();
+    const dispatch = el.dispatchEvent.bind(el);
+    el.dispatchEvent = (e) => {
+      window.__fired.add(e.type);
+      return dispatch(e);
+    };
     window.__events = [];
     for (const t of ['play', 'pause', 'ended', 'seeked', 'timeupdate', 'ratechange', 'camera-change', 'error']) {
       el.addEventListener(t, (e) => window.__events.push({ type: t, t: el.currentTime, detail: e.detail }));
@@ -302,4 +312,37 @@ test(`${EXPECTED_BACKEND}: toBlob and toDataURL draw the asked size, 2× is draw
   for (const e of errs) assert.match(e, /^RangeError: (scale|type|transparent|quality)/);
   await page.keyboard.press('Escape');
   assert.deepEqual(problems, []);
+});
+
+test(`${EXPECTED_BACKEND}: the element watches, has and fires exactly what its features declare`, async () => {
+  const r = await page.evaluate(async () => {
+    const { FEATURES, ATTRIBUTES, EVENTS } = await import(new URL('../js/element/features.js', location.href).href);
+    const el = document.getElementById('f');
+    // What the tests above did not fire: ratechange, an error, a selection.
+    el.playbackRate = 0.5;
+    el.playbackRate = 1;
+    el.setAttribute('levels', 'many');
+    el.setAttribute('levels', '3');
+    el.viewer.model.selected = -1;
+    el.figure.select(1);
+    el.figure.select(-1);
+    await new Promise((resolve) => setTimeout(resolve, 50));
+    const El = customElements.get('screw-bender');
+    // The element's own members that are not API: the custom-element callbacks and its figure.
+    const internal = ['constructor', 'renew', 'connectedCallback', 'disconnectedCallback', 'attributeChangedCallback', 'figure'];
+    return {
+      observed: [...El.observedAttributes].sort(),
+      attributes: [...ATTRIBUTES].sort(),
+      members: Object.getOwnPropertyNames(El.prototype).filter((n) => !internal.includes(n)).sort(),
+      declared: FEATURES.flatMap((f) => [...(f.properties ?? []), ...(f.methods ?? [])]).map((m) => m.name).sort(),
+      fired: [...window.__fired].sort(),
+      events: EVENTS,
+    };
+  });
+  assert.deepEqual(r.observed, r.attributes, 'observedAttributes are the declared attributes');
+  assert.deepEqual(r.members, r.declared, 'the element\'s properties and methods are the declared ones');
+  for (const t of r.fired) assert.ok(r.events.includes(t), `${t} is fired and declared`);
+  for (const t of ['play', 'pause', 'ended', 'seeked', 'time', 'timeupdate', 'ratechange', 'camera-change', 'error', 'select']) {
+    assert.ok(r.fired.includes(t), `${t} was fired (fired: ${r.fired.join(', ')})`);
+  }
 });

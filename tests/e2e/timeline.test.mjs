@@ -382,7 +382,7 @@ test(`${BACKEND}: times and velocities survive a reload and a share link; old se
     assert.equal(await other.evaluate(() => window.screwbender.app.motion.toJson()), want);
     // An older session: the times in view.times, the document without them.
     const old = await sb(async () => {
-      const { encodeHash } = await import('./js/editor/session.js');
+      const { encodeHash } = await import('./js/share-link.js');
       const s = window.screwbender.session();
       delete s.document.times;
       delete s.document.velocities;

@@ -70,7 +70,7 @@ test('a src motion file loads; figures created and removed 50 times leave no err
   assert.equal(loaded, 3);
   // A playground share-link payload: the figure shows the session's poses and options.
   const shared = await page.evaluate(async () => {
-    const { encodeHash } = await import('../js/editor/session.js');
+    const { encodeHash } = await import('../js/share-link.js');
     const doc = { closed: true, poses: [
       { origin: [0, 0, 0], rotation: [1, 0, 0, 0] },
       { origin: [2, 0, 0], rotation: [0, 1, 0, 0] },

@@ -1,14 +1,19 @@
-// The Custom Elements Manifest (npm/custom-elements.json) against the element and its typings:
-// every attribute the element watches (www/js/element/options.js) and every attribute, property
-// and event of npm/element-types.d.ts is in the manifest, and the manifest names nothing else;
-// the package.json "customElements" field points at it and the package ships it.
+// The Custom Elements Manifest (npm/custom-elements.json) and the typings (npm/element-types.d.ts)
+// against the element's declarations (www/js/element/features.js), from which
+// scripts/element-api.mjs writes both: each names exactly the declared attributes, properties
+// and events (`ratechange` among them), and both are what the declarations give now (not
+// stale); the package.json "customElements" field points at the manifest and the package
+// ships it. (tests/e2e/element-media.test.mjs compares the declarations with the element's real
+// observed attributes, members and events.)
 //
 //   node --test tests/frameworks/manifest.test.mjs
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
+import { execFileSync } from 'node:child_process';
 import { ROOT } from '../e2e/lib.mjs';
+import { ATTRIBUTES, EVENTS, FEATURES } from '../../www/js/element/features.js';
 
 const manifest = JSON.parse(fs.readFileSync(path.join(ROOT, 'npm/custom-elements.json'), 'utf8'));
 const types = fs.readFileSync(path.join(ROOT, 'npm/element-types.d.ts'), 'utf8');
@@ -33,26 +38,24 @@ test('the manifest follows the schema version 2 layout and declares <screw-bende
   for (const e of element.events) assert.ok(e.type?.text && e.description, `event ${e.name} has a type and a description`);
 });
 
-/** The element's ATTRIBUTES list, read from its source (a module of the browser's, not Node's). */
-function watchedAttributes() {
-  const src = fs.readFileSync(path.join(ROOT, 'www/js/element/options.js'), 'utf8');
-  const m = src.match(/export const ATTRIBUTES = \[([^\]]*)\]/);
-  assert.ok(m, 'ATTRIBUTES in options.js');
-  return [...m[1].matchAll(/'([\w-]+)'/g)].map((x) => x[1]);
-}
-
-test('every attribute the element watches is in the manifest, and the manifest names the typings\' attributes exactly', () => {
-  const ATTRIBUTES = watchedAttributes();
-  assert.ok(ATTRIBUTES.length >= 17);
-  const listed = element.attributes.map((a) => a.name);
-  for (const a of ATTRIBUTES) assert.ok(listed.includes(a), `attribute ${a} is in the manifest`);
-  assert.deepEqual([...listed].sort(), keysOf('ScrewBenderAttributes').sort());
+test('the manifest names exactly the declared attributes, properties, methods and events', () => {
+  assert.deepEqual(element.attributes.map((a) => a.name).sort(), [...ATTRIBUTES].sort());
+  const declared = FEATURES.flatMap((f) => [...(f.properties ?? []), ...(f.methods ?? [])]).map((m) => m.name);
+  assert.deepEqual(element.members.map((m) => m.name).sort(), declared.sort());
+  assert.deepEqual(element.events.map((e) => e.name).sort(), [...EVENTS].sort());
+  assert.ok(EVENTS.includes('ratechange'), 'ratechange is declared');
 });
 
-test('the manifest names the typings\' properties and events exactly', () => {
-  const fields = element.members.filter((m) => m.kind === 'field').map((m) => m.name);
-  for (const p of keysOf('ScrewBenderProperties')) assert.ok(fields.includes(p), `property ${p} is in the manifest`);
-  assert.deepEqual(element.events.map((e) => e.name).sort(), keysOf('ScrewBenderEvents').sort());
+test('the typings name exactly the declared attributes and events; settable properties are typed', () => {
+  assert.deepEqual(keysOf('ScrewBenderAttributes').sort(), [...ATTRIBUTES].sort());
+  assert.deepEqual(keysOf('ScrewBenderEvents').sort(), [...EVENTS].sort());
+  const settable = FEATURES.flatMap((f) => f.properties ?? []).filter((p) => p.set && !ATTRIBUTES.includes(p.name)).map((p) => p.name);
+  assert.deepEqual(keysOf('ScrewBenderProperties').sort(), settable.sort());
+  for (const p of keysOf('ScrewBenderProperties')) assert.ok(element.members.some((m) => m.kind === 'field' && m.name === p), `property ${p} is in the manifest`);
+});
+
+test('the committed typings, manifest and Python traitlets are what the declarations give', () => {
+  execFileSync(process.execPath, [path.join(ROOT, 'scripts/element-api.mjs'), '--check'], { stdio: 'pipe' });
 });
 
 test('package.json points at the manifest and ships it with the framework typings', () => {

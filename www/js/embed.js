@@ -8,14 +8,13 @@
 // `sandbox="allow-scripts"` (an opaque origin, where storage throws), and it listens only to its
 // own elements. An unknown or refused option is named in a line below the figure; a bad value
 // of a known one shows inside the figure, as the element does.
-import { ATTRIBUTES, mount } from './element/screw-bender.js';
+import { ATTRIBUTES, FLAGS, OPTIONS } from './element/features.js';
+import { mount } from './element/screw-bender.js';
 
 /** The element's options that the query may set: all but the source of a share payload and storage. */
 const QUERY_OPTIONS = ATTRIBUTES.filter((a) => a !== 'share' && a !== 'persist');
-/** Options for mount() only. */
-const EXTRA = ['backend'];
-/** Boolean options: present without a value means true. */
-const FLAGS = ['autoplay', 'editable'];
+/** Options for mount() only (`backend`). */
+const EXTRA = OPTIONS.filter((o) => o.attribute === false).map((o) => o.name);
 
 /** The options of `search` (a query string) and the messages of the names it cannot take. */
 export function queryOptions(search) {

@@ -25,6 +25,7 @@ export function Typed({ onT }: { onT: (d: TimeDetail) => void }) {
         onselect={(e) => e.detail.index + 1}
         onerror={(e) => e.detail.message.toUpperCase()}
         onplay={(e: Event) => e.type}
+        onratechange={(e: Event) => e.type}
         oncamera-change={(e: CustomEvent<CameraChangeDetail>) => e.detail.source === 'user'}
         ref={(el: ScrewBenderElement | null) => el?.seek(0)}
         className="figure"

@@ -25,6 +25,7 @@ export const typed: Props = {
   onchange: (e) => e.detail.poses.length,
   onselect: (e) => e.detail.index + 1,
   onerror: (e) => e.detail.message.toUpperCase(),
+  onratechange: (e: Event) => e.type,
   'oncamera-change': (e: CustomEvent<CameraChangeDetail>) => e.detail.source === 'user',
   class: 'figure',
 };

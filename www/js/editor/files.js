@@ -8,7 +8,8 @@
 // default export is the app's part (see app.js for the part contract).
 import { IMPORT_SIZE, BUNNY_PRESET, fetchBunny } from '../view/drawing.js';
 import { SLOT } from '../view/slots.js';
-import { SESSION_VERSION, MAX_SAVED_MESH } from './session.js';
+import { MAX_SAVED_MESH } from './session.js';
+import { SESSION_VERSION } from '../share-link.js';
 import { askReduction, MANY_POSES } from './reduce-dialog.js';
 
 /** Largest file the page reads (the core refuses more than 64 MiB as well). */

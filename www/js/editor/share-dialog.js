@@ -11,7 +11,7 @@
 // A native <dialog> (showModal): focus stays inside, Esc closes it, the focus goes back to the
 // control that opened it. Built node by node (no HTML strings), like the rest of the page.
 import { LAYERS, LAYER_FIELD, DEFAULT_SHOW } from '../element/options.js';
-import { encodeHash } from './session.js';
+import { encodeHash } from '../share-link.js';
 import { download } from './files.js';
 import { fileBase } from './media.js';
 import { presetName } from './presets.js';

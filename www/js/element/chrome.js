@@ -7,6 +7,51 @@
 // selected) take the focus out of the figure. The bar's own controls keep the keys they act on
 // (a range's arrows, a button's Space) from the page too, so a slide deck does not turn its
 // slide while the reader scrubs.
+//
+// Its options: `controls` (how much of the bar shows), `theme` (the chrome's and the 3-D view's
+// colours) and `touch-action` (what a touch on the unfocused figure leaves to the page).
+import { stylesheetNode } from '../assets.js';
+import { DEFAULT_NAME } from './description.js';
+import { oneOf } from './options.js';
+
+const CONTROLS = ['none', 'minimal', 'full'];
+const THEMES = ['light', 'dark'];
+/** What a touch on a figure without the focus leaves to the page (`touch-action`). */
+const TOUCH = ['pan-y', 'pan-x', 'none'];
+
+/** @type {import('./options.js').Feature} */
+export const chromeFeature = {
+  name: 'chrome',
+  doc: 'The control bar, the colours and the touch gestures left to the page.',
+  options: [
+    {
+      name: 'controls', type: CONTROLS, default: 'minimal', parse: (v) => oneOf('controls', v, CONTROLS), python: true,
+      doc: 'The figure\'s chrome: none, minimal (play, scrub, time) or full (plus scheme, levels, frame).',
+    },
+    {
+      name: 'theme', type: THEMES, default: 'light', parse: (v) => oneOf('theme', v, THEMES), python: true,
+      doc: 'Colours of the chrome, frame and 3-D view.',
+    },
+    {
+      name: 'touch-action', type: TOUCH, default: 'pan-y', parse: (v) => oneOf('touch-action', v, TOUCH), early: true,
+      doc: 'What a touch on the unfocused figure leaves to the page: `pan-y` (a vertical swipe scrolls the page, a sideways one orbits), `pan-x`, or `none` (the figure takes every touch).',
+    },
+  ],
+  parts: [
+    { name: 'canvas', doc: 'The 3-D view (focusable: keys and wheel act while it has the focus).' },
+    { name: 'controls', doc: 'The control bar (play, scrubber, time; with controls="full" also scheme, levels, frame).' },
+  ],
+  // What a touch leaves to the page applies before the figure starts.
+  early(fig, v) {
+    fig.el.fig.dataset.touch = v['touch-action'];
+  },
+  apply(fig, v) {
+    fig.el.fig.dataset.controls = v.controls;
+    fig.el.fig.dataset.theme = v.theme;
+    // The 3-D view's background and line colours follow the chrome.
+    fig.viewer?.setDark(v.theme === 'dark');
+  },
+};
 
 /**
  * The figure's shadow tree in `host` (emptied first): the canvas, the control bar, the message
@@ -16,9 +61,8 @@ export function buildChrome(host) {
   // Manual slot assignment: labels.js sends each child to the caption or to its pose's label.
   const root = host.shadowRoot ?? host.attachShadow({ mode: 'open', slotAssignment: 'manual' });
   root.replaceChildren();
-  const link = document.createElement('link');
-  link.rel = 'stylesheet';
-  link.href = new URL('../../css/screw-bender.css', import.meta.url).href;
+  // The stylesheet where assets.js says (a <link>, or a <style> in a bundle without files).
+  const link = stylesheetNode();
   const fig = document.createElement('div');
   fig.className = 'fig';
   // Built node by node, not from an HTML string: the element must work under a CSP that
@@ -75,9 +119,6 @@ export function buildChrome(host) {
   };
   return { root, el };
 }
-
-/** The canvas's accessible name without an `alt`. */
-export const DEFAULT_NAME = '3-D figure of a rigid motion';
 
 /** Keys that each kind of the bar's controls acts on (kept from the page). */
 const BAR_KEYS = {

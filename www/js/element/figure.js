@@ -1,22 +1,28 @@
 // One figure: the viewer (view/viewer.js) on a canvas in a shadow root, with its chrome, its
 // source and its options; what the element <screw-bender> and mount() (screw-bender.js) drive.
-// Its parts: options.js (names and checks), sources.js (where the motion comes from, the opt-in
-// saved copy), chrome.js (shadow tree, control bar, keys), edit-tool.js (editing), labels.js
-// (labels on poses), showing.js (lazy start, poster, hidden slides, print), playback.js (the
-// media-element API, the camera as state, pictures), wasm.js (the module instance all figures
-// share).
+// Its features (features.js) each declare their options and apply them: source.js (where the
+// motion comes from, the opt-in saved copy), subdivision.js, display.js (layers, strobe),
+// chrome.js (shadow tree, control bar, keys), description.js (accessible name, live region),
+// editing.js, camera.js, playback.js (the media-element API), pictures.js, labels.js (labels
+// on poses), loading.js (lazy start, poster, hidden slides, print); this file starts, loads and
+// stops the figure and hands each change of options to them. wasm.js holds the module instance
+// all figures share.
 import { Viewer, newModel } from '../view/viewer.js';
-import { DEFAULT_NAME, bindChrome, buildChrome, onKey, refreshChrome, timeChanged } from './chrome.js';
-import { editTool } from './edit-tool.js';
+import { cameraMoved } from './camera.js';
+import { bindChrome, buildChrome, onKey, refreshChrome, timeChanged } from './chrome.js';
+import { describePose, say } from './description.js';
+import { editTool } from './editing.js';
+import { FEATURES } from './features.js';
 import { Labels } from './labels.js';
-import {
-  ALIASES, CONTROLS, DEFAULT_SHOW, canonical, LAYERS, LAYER_FIELD, MAX_STROBE, OptionError, THEMES, TOUCH, bool, cameraView, number, oneOf,
-  subdivisionOptions,
-} from './options.js';
-import { Playback, describePose, schemeName } from './playback.js';
-import { drawWhenShown, forget, isPrinting, keepStill, printable, showPoster, whenNear } from './showing.js';
-import { fetchSource, persist, restorePersisted } from './sources.js';
+import { drawWhenShown, forget, isPrinting, keepStill, printable, showPoster, whenNear } from './loading.js';
+import { ALIASES, OptionError, bool, canonical, check } from './options.js';
+import { Playback } from './playback.js';
+import { fetchSource, persist, restorePersisted } from './source.js';
 import { loadWasm, serially } from './wasm.js';
+
+/** The features that apply options (checked together before any of them applies). */
+const APPLYING = FEATURES.filter((f) => f.apply || f.drawn || f.early);
+const EARLY = FEATURES.filter((f) => f.early);
 
 /**
  * A figure in `host` (any element): the viewer on a canvas in a shadow root, its chrome and its
@@ -29,7 +35,7 @@ export class Figure {
     this.emit = emit;
     this.opts = {};
     this.model = newModel('');
-    // Set by showing.js: whether the figure is on screen, the wake-up of a lazy start, the
+    // Set by loading.js: whether the figure is on screen, the wake-up of a lazy start, the
     // timer that suspends an off-screen figure.
     /** @type {boolean | undefined} */
     this.onScreen;
@@ -37,6 +43,8 @@ export class Figure {
     this.wake;
     /** @type {ReturnType<typeof setTimeout> | undefined} */
     this.suspendTimer;
+    /** The camera asked before the motion loaded (camera.js). */
+    this.pendingCamera = null;
     this.generation = 0;
     const { root, el } = buildChrome(host);
     this.root = root;
@@ -70,7 +78,7 @@ export class Figure {
         onTime: (u, a, b, playhead) => this.timeChanged(playhead),
         onPlay: (on) => this.playback.playing(on),
         onEnded: () => this.playback.ended(),
-        onCamera: (source) => this.playback.cameraMoved(source),
+        onCamera: (source) => cameraMoved(this, source),
         onDraw: () => this.drew(),
       });
       drawWhenShown(viewer);
@@ -104,7 +112,7 @@ export class Figure {
   }
 
   /**
-   * Far from the viewport for a while (showing.js): frees the renderer and its graphics
+   * Far from the viewport for a while (loading.js): frees the renderer and its graphics
    * context, keeping a still picture for print; not while a pose is dragged, it has the focus or
    * the page prints (the print picture is of the live frame; after print it is asked again).
    */
@@ -189,7 +197,7 @@ export class Figure {
 
   /** Says `text` in the figure's polite live region (what changed, in words). */
   say(text) {
-    this.el.live.textContent = text;
+    say(this, text);
   }
 
   // ---------------------------------------------------------------- options
@@ -201,8 +209,7 @@ export class Figure {
     this.opts = { ...this.opts, ...patch };
     // A current name given alone replaces a former name kept beside it.
     for (const [old, now] of Object.entries(ALIASES)) if (now in patch && !(old in patch)) delete this.opts[old];
-    if ('loading' in patch && patch.loading === 'eager') this.wake?.();
-    if ('poster' in patch) showPoster(this);
+    for (const f of FEATURES) f.changed?.(this, patch);
     if (!this.viewer) return this.guard(() => this.applyChrome());
     const reload = ['preset', 'src', 'share', 'inline'].some((k) => k in patch && patch[k] !== before[k]);
     if ('editable' in patch && bool(patch.editable) !== bool(before.editable)) {
@@ -220,73 +227,31 @@ export class Figure {
     return this.guard(() => (reload ? this.load() : this.apply(patch)));
   }
 
-  /** Applies every option but the source to the model and the chrome (checks them first). */
+  /**
+   * Hands the options to the features: all are checked first (a bad value throws its
+   * OptionError and changes nothing), then each applies its own; after the drawing is rebuilt,
+   * those that act on it (autoplay, the words said) follow. `patch` is what changed (the whole
+   * options on a load).
+   */
   apply(patch = this.opts) {
-    const o = this.opts;
-    const { model } = this;
-    // Check everything before changing anything.
-    const sub = subdivisionOptions(o);
-    const strobe = o.strobe != null && o.strobe !== '' ? number('strobe', o.strobe, 0, MAX_STROBE, true) : null;
-    const speed = o.speed != null && o.speed !== '' ? number('speed', o.speed, 0, 100) : 1;
-    const controls = o.controls != null && o.controls !== '' ? oneOf('controls', o.controls, CONTROLS) : 'minimal';
-    const theme = o.theme != null && o.theme !== '' ? oneOf('theme', o.theme, THEMES) : 'light';
-    const show = String(o.show ?? DEFAULT_SHOW).trim().split(/\s+/).filter(Boolean);
-    for (const s of show) if (!LAYERS.includes(s)) throw new OptionError('show', o.show, `unknown layer ${s} (layers: ${LAYERS.join(', ')})`);
-    const cam = o.camera != null && o.camera !== '' ? cameraView(o.camera) : null;
-    this.applyChrome();
-    if (model.motion && Object.keys(sub).length) {
-      const old = model.motion.options();
-      try {
-        model.motion.setOptions(sub);
-      } catch (e) {
-        model.motion.setOptions(old);
-        const key = ['levels', 's', 'scheme', 'rules'].find((k) => k in sub) ?? 'levels';
-        throw new OptionError(key, o[key], e.message);
-      }
-    }
-    if (strobe !== null) model.view.strobe = strobe;
-    for (const l of LAYERS) model.view[LAYER_FIELD[l]] = show.includes(l);
-    if (model.view.strobe === 0) model.view.showStrobe = false;
-    // A full apply (a load) sets the rate and loop from the options; a patch only what it names
-    // (playbackRate and loop set as properties stay).
-    const full = patch === this.opts;
-    if (full || 'speed' in patch) model.anim.speed = speed;
-    if (full || 'loop' in patch) model.anim.loop = o.loop == null ? true : bool(o.loop);
-    this.el.fig.dataset.controls = controls;
-    this.el.fig.dataset.theme = theme;
-    // The 3-D view's background and line colours follow the chrome.
-    this.viewer?.setDark(theme === 'dark');
-    if (!this.editable && model.selected >= 0) model.selected = -1;
-    if (model.motion) {
-      if (cam && ('camera' in patch || patch === this.opts)) {
-        this.viewer.frameAll();
-        this.viewer.camera.yaw = cam.yaw;
-        this.viewer.camera.pitch = cam.pitch;
-        if (cam.distance) this.viewer.camera.distance = cam.distance;
-        if (cam.target) this.viewer.camera.target = [...cam.target];
-        this.viewer.cameraMoved();
-      }
+    const change = { patch, full: patch === this.opts };
+    const values = APPLYING.map((f) => /** @type {const} */ ([f, check(f, this.opts)]));
+    for (const [f, v] of values) f.early?.(this, v);
+    for (const [f, v] of values) f.apply?.(this, v, change);
+    if (this.model.motion) {
       this.viewer.rebuild();
-      if ('autoplay' in patch && !full) this.viewer.setPlaying(bool(o.autoplay));
-      if (!full && Object.keys(sub).length) {
-        const m = model.motion.options();
-        this.say(`${schemeName(m)}, ${m.levels} level${m.levels === 1 ? '' : 's'}`);
-      }
+      for (const [f, v] of values) f.drawn?.(this, v, change);
     }
     this.clearMessage();
     this.refreshChrome();
   }
 
   /**
-   * The options of the chrome alone, which apply before the figure starts: `alt` (the canvas's
-   * accessible name) and `touch-action` (what a touch on the unfocused figure leaves to the page).
+   * The options that apply before the figure starts (the canvas's accessible name, what a touch
+   * leaves to the page).
    */
   applyChrome() {
-    const o = this.opts;
-    const touch = o['touch-action'] != null && o['touch-action'] !== '' ? oneOf('touch-action', o['touch-action'], TOUCH) : 'pan-y';
-    this.el.fig.dataset.touch = touch;
-    const alt = o.alt != null && String(o.alt).trim() !== '' ? String(o.alt) : DEFAULT_NAME;
-    if (this.el.canvas.getAttribute('aria-label') !== alt) this.el.canvas.setAttribute('aria-label', alt);
+    for (const f of EARLY) f.early(this, check(f, this.opts, true));
   }
 
   // ---------------------------------------------------------------- sources
@@ -339,12 +304,13 @@ export class Figure {
     }
     this.viewer.setPlaying(bool(this.opts.autoplay));
     this.viewer.updateAnim();
-    this.playback.loaded();
+    // What was asked before the motion loaded (the camera, the time, play) takes effect.
+    for (const f of FEATURES) f.loaded?.(this);
   }
 
   // ---------------------------------------------------------------- persistence (opt-in)
 
-  /** Saves the motion under the `persist` key, if any (sources.js). */
+  /** Saves the motion under the `persist` key, if any (source.js). */
   persist() {
     persist(this.opts.persist, this.model.motion);
   }
@@ -398,7 +364,7 @@ export class Figure {
 
   // ---------------------------------------------------------------- editing (editable only)
 
-  /** The pointer tool of an editable figure (edit-tool.js). */
+  /** The pointer tool of an editable figure (editing.js). */
   editTool() {
     return editTool(this);
   }

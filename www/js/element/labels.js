@@ -9,6 +9,17 @@
 // box); the page styles it with ::part or
 // the variables of css/screw-bender.css.
 
+/** @type {import('./options.js').Feature} */
+export const labelsFeature = {
+  name: 'labels',
+  doc: 'The caption and the labels on poses.',
+  slots: [
+    { name: '', doc: 'The caption, shown under the figure. An inline `<script type="application/json">` child is read as the motion document.' },
+    { name: 'pose-<i>', doc: 'A label placed at control pose i on screen (or slot="pose" with data-pose="i"), following it through orbit, drag and playback.' },
+  ],
+  parts: [{ name: 'label', doc: 'A label\'s box (also `label-<i>` for pose i).' }],
+};
+
 /** The pose a child labels, or null (a caption node). */
 function poseOfChild(n) {
   if (n.nodeType !== 1) return null;

@@ -1,7 +1,81 @@
-// The options of a <screw-bender> figure (its attributes, or mount()'s options): their names, the
-// checks of their values, and the error that names the option and the value at fault.
+// The vocabulary of a <screw-bender> figure's options (its attributes, or mount()'s options): the
+// shape of a feature's declarations, the checks that read a value, and the error that names the
+// option and the value at fault. The options themselves are declared by the features that own
+// them (features.js lists them); this file knows none of them but the former names.
 
-/** Attributes the element watches (each maps onto an option of mount()). */
+/**
+ * An option a feature declares: an attribute of the element and an option of mount(), unless
+ * `attribute` is false (mount() only). `type` is what the value means ('string', 'number',
+ * 'integer', 'boolean', or the list of allowed words); `parse` reads a given value (a string
+ * from an attribute, or a number or boolean from script) into the checked value, throwing an
+ * OptionError; `default` is the value (as given, read by `parse` too) when the option is absent
+ * or empty (an empty string is a value for a boolean, where it means present, and where `empty`
+ * says so). `ts` is the
+ * TypeScript type of the typings when richer than `type`; `python` puts the option into the
+ * notebook figure (with its default there, or its trait's text).
+ * @typedef {object} OptionDecl
+ * @property {string} name
+ * @property {'string' | 'number' | 'integer' | 'boolean' | string[]} type
+ * @property {string} doc
+ * @property {(value: any, options: Record<string, any>) => any} [parse]
+ * @property {any} [default]
+ * @property {boolean} [empty]
+ * @property {boolean} [early] applies before the figure starts (checked then too)
+ * @property {string} [ts]
+ * @property {string} [deprecated]
+ * @property {boolean} [attribute]
+ * @property {boolean | {default?: any, trait?: string}} [python]
+ */
+/**
+ * A property a feature declares: `get` (and `set`, else it is read-only) on the figure.
+ * @typedef {object} PropertyDecl
+ * @property {string} name
+ * @property {string} ts
+ * @property {string} doc
+ * @property {(fig: any) => any} get
+ * @property {(fig: any, value: any) => void} [set]
+ */
+/**
+ * A method a feature declares: `call` with the figure and the arguments.
+ * @typedef {object} MethodDecl
+ * @property {string} name
+ * @property {{name: string, ts: string, optional?: boolean}[]} params
+ * @property {string} returns
+ * @property {string} doc
+ * @property {(fig: any, ...args: any[]) => any} call
+ */
+/**
+ * An event a feature fires: its detail's type name and fields (none: a plain `Event` in the
+ * typings).
+ * @typedef {object} EventDecl
+ * @property {string} name
+ * @property {string} doc
+ * @property {{type: string, doc: string, fields: Record<string, string>}} [detail]
+ */
+/**
+ * One feature of the figure: what it declares, and how it applies its options. `check` hands
+ * `apply` the checked values of its options (all features are checked before any applies);
+ * `apply` runs on every change of options and on each load (`full`), `drawn` after the figure
+ * rebuilt its drawing; `early` applies the options marked `early`, which take effect before
+ * the figure starts (and are checked alone then);
+ * `changed` sees every change of options first (also before the start); `loaded` runs when a
+ * motion has loaded (what was asked before it takes effect).
+ * @typedef {object} Feature
+ * @property {string} name
+ * @property {string} doc
+ * @property {OptionDecl[]} [options]
+ * @property {PropertyDecl[]} [properties]
+ * @property {MethodDecl[]} [methods]
+ * @property {EventDecl[]} [events]
+ * @property {{name: string, doc: string}[]} [slots]
+ * @property {{name: string, doc: string}[]} [parts]
+ * @property {(fig: any, values: Record<string, any>, change: {patch: Record<string, any>, full: boolean}) => void} [apply]
+ * @property {(fig: any, values: Record<string, any>, change: {patch: Record<string, any>, full: boolean}) => void} [drawn]
+ * @property {(fig: any, values: Record<string, any>) => void} [early]
+ * @property {(fig: any, patch: Record<string, any>) => void} [changed]
+ * @property {(fig: any) => void} [loaded]
+ */
+
 /**
  * The most subdivision levels: the core's `frontend::MAX_LEVELS`, which every front end shares
  * (one level more never fits the memory limit, whatever the poses; `limits().maxLevels` of the
@@ -10,11 +84,6 @@
  */
 export const MAX_LEVELS = 19;
 
-export const ATTRIBUTES = [
-  'preset', 'src', 'share', 'scheme', 'levels', 's', 'rules', 'strobe', 'show', 'autoplay', 'loop',
-  'speed', 'editable', 'controls', 'camera', 'theme', 'persist', 'alt', 'loading', 'poster', 'touch-action',
-  'scene', 'j',
-];
 /** Former names of options, kept for one release: former name → name. */
 export const ALIASES = { scene: 'preset', j: 's' };
 
@@ -39,16 +108,6 @@ export const LAYER_FIELD = {
   strobe: 'showStrobe', control: 'showControl', trajectories: 'showTrajectories', polyscrew: 'showPolyscrew',
   polygon: 'showPolygon', triads: 'showTriads', grid: 'showGrid',
 };
-const SCHEMES = ['bspline', 'fourpoint', 'jarek', 'j'];
-const RULES = ['direct', 'split-then-tweak', 'split'];
-export const CONTROLS = ['none', 'minimal', 'full'];
-export const THEMES = ['light', 'dark'];
-/** What a touch on a figure without the focus leaves to the page (`touch-action`). */
-export const TOUCH = ['pan-y', 'pan-x', 'none'];
-/** Named camera views: yaw and pitch in degrees. */
-const VIEWS = { iso: [-60, 34], front: [-90, 5], side: [0, 5], top: [-90, 89] };
-/** Most strobe copies a figure draws. */
-export const MAX_STROBE = 20000;
 /** An error naming the option (attribute) and the value that caused it. */
 export class OptionError extends Error {
   constructor(attribute, value, message) {
@@ -77,44 +136,20 @@ export function oneOf(name, value, list) {
 }
 
 /**
- * Camera option → {yaw, pitch, distance?, target?}, angles in radians: a named view, or
- * "yaw pitch [distance [tx ty tz]]" (degrees, scene units). With the target the figure is framed
- * exactly as given (the playground's Share & embed writes all six); without it the figure is
- * framed around the motion and then turned.
+ * The checked values of `feature`'s options in `o` (with `early`, of its early options alone):
+ * each option's `parse` of its value, or its default when it is absent or empty. Throws the
+ * first option's OptionError.
+ * @param {Feature} feature
+ * @param {Record<string, any>} o
+ * @param {boolean} [early]
  */
-export function cameraView(value) {
-  const v = String(value).trim();
-  if (VIEWS[v]) return { yaw: (VIEWS[v][0] * Math.PI) / 180, pitch: (VIEWS[v][1] * Math.PI) / 180 };
-  const parts = v.split(/[\s,]+/).map(Number);
-  if ([2, 3, 6].includes(parts.length) && parts.every(Number.isFinite) && Math.abs(parts[1]) <= 89.9 && !(parts[2] <= 0)) {
-    const out = { yaw: (parts[0] * Math.PI) / 180, pitch: (parts[1] * Math.PI) / 180, distance: parts[2] };
-    return parts.length === 6 ? { ...out, target: parts.slice(3) } : out;
-  }
-  throw new OptionError('camera', value, `expected ${Object.keys(VIEWS).join(', ')}, "yaw pitch [distance]" or "yaw pitch distance tx ty tz" (degrees, scene units; |pitch| < 90, distance > 0)`);
-}
-
-/** The subdivision options among `o` (checked), for Motion.setOptions. */
-export function subdivisionOptions(o) {
+export function check(feature, o, early = false) {
   const out = {};
-  if (o.scheme != null && o.scheme !== '') out.scheme = oneOf('scheme', o.scheme, SCHEMES);
-  if (o.s != null && o.s !== '') {
-    out.s = number('s', o.s, -4, 4);
-    out.scheme ??= 'j';
+  for (const d of feature.options ?? []) {
+    if (early && !d.early) continue;
+    let v = o[d.name];
+    if (v === undefined || v === null || (v === '' && d.type !== 'boolean' && !d.empty)) v = d.default;
+    out[d.name] = v !== undefined && d.parse ? d.parse(v, o) : v;
   }
-  if (o.j != null && o.j !== '' && number('j', o.j, -4, 4) !== out.s) {
-    throw new OptionError('s', o.s, `s and j disagree (j="${o.j}"; j is the former name of s)`);
-  }
-  if (o.rules != null && o.rules !== '') out.rules = oneOf('rules', o.rules, RULES);
-  if (o.levels != null && o.levels !== '') out.levels = number('levels', o.levels, 0, MAX_LEVELS, true);
   return out;
-}
-
-/** Options from an element's attributes (and its inline JSON child). */
-export function optionsOf(el) {
-  const o = {};
-  for (const a of ATTRIBUTES) if (el.hasAttribute(a)) o[a] = el.getAttribute(a);
-  for (const b of ['autoplay', 'editable']) if (o[b] === '') o[b] = true;
-  const script = el.querySelector(':scope > script[type="application/json"]');
-  if (script) o.inline = script.textContent;
-  return canonical(o);
 }

@@ -1,29 +1,85 @@
-// A figure's script API beyond its options, with the names and meanings of HTMLMediaElement
-// where they apply: playback (play({repetitions}), pause, currentTime, duration, paused,
-// playbackRate, loop and the events play, pause, ended, timeupdate, seeked, ratechange), the
-// camera as state (the `camera` property, `camera-change` with detail.source 'user' | 'api'),
-// pictures (toBlob, toDataURL), and the words the live region says about them. Times are the
-// motion's own seconds (pose i at motion.times[i], else at i s), as seek(t) and `time` give them.
-import { picture } from '../view/picture.js';
-import { OptionError, number, oneOf } from './options.js';
+// The figure as a media element: its options autoplay, loop and speed, and HTMLMediaElement's
+// script API where it applies (play({repetitions}), pause, currentTime, duration, paused,
+// playbackRate, loop; the events play, pause, ended, time / timeupdate, seeked, ratechange).
+// Times are the motion's own seconds (pose i at motion.times[i], else at i s), as seek(t) and
+// `time` give them.
+import { describePose } from './description.js';
+import { bool, number } from './options.js';
 
-const SCHEME_NAMES = { bspline: 'B-spline', fourpoint: '4-point', jarek: 'Jarek', j: 'J_s' };
-const PROJECTIONS = ['perspective', 'orthographic'];
-const TYPES = ['image/png', 'image/jpeg', 'image/webp'];
-/** Largest picture scale (times the drawing buffer); the device's texture limit also applies. */
-const MAX_SCALE = 8;
+/** The detail of `time` and `timeupdate`. */
+const TIME_DETAIL = {
+  type: 'TimeDetail',
+  doc: 'The detail of `time`: seconds `t` in [start, end] and the motion\'s parameter `u`.',
+  fields: { t: 'number', u: 'number', start: 'number', end: 'number' },
+};
 
-/** "4-point scheme" and the like, from a motion's options. */
-export function schemeName(o) {
-  return `${SCHEME_NAMES[o.scheme] ?? o.scheme} scheme${o.scheme === 'j' ? ` (s = ${o.s})` : ''}`;
-}
-
-const fmt = (v) => v.map((x) => (Math.abs(x) < 5e-3 ? 0 : x).toFixed(2)).join(', ');
-
-/** "Pose 3 at (1.00, 2.00, 0.00)". */
-export function describePose(motion, k) {
-  return `Pose ${k} at (${fmt(motion.pose(k).origin)})`;
-}
+/** @type {import('./options.js').Feature} */
+export const playbackFeature = {
+  name: 'playback',
+  doc: 'Playback in the names and meanings of HTMLMediaElement.',
+  options: [
+    { name: 'autoplay', type: 'boolean', default: false, parse: bool, doc: 'Play from the start.', python: { default: false } },
+    { name: 'loop', type: 'boolean', default: true, parse: bool, doc: 'Loop an open motion while playing.' },
+    {
+      name: 'speed', type: 'number', default: 1, parse: (v) => number('speed', v, 0, 100),
+      doc: 'Control poses per second while playing, 0 to 100.',
+    },
+  ],
+  properties: [
+    {
+      name: 'currentTime', ts: 'number', doc: 'The playhead in seconds; set it to seek (works while paused; fires `seeked`).',
+      get: (fig) => fig.playback.currentTime,
+      set: (fig, t) => fig.guard(() => fig.seek(t)),
+    },
+    { name: 'duration', ts: 'number', doc: 'The playback interval\'s length in seconds (NaN before the motion loads).', get: (fig) => fig.playback.duration },
+    { name: 'paused', ts: 'boolean', doc: 'True unless playing.', get: (fig) => fig.playback.paused },
+    {
+      name: 'playbackRate', ts: 'number', doc: 'Motion seconds per real second, −100 to 100 (negative plays backwards); starts as `speed`.',
+      get: (fig) => fig.playback.playbackRate,
+      set: (fig, r) => fig.guard(() => (fig.playback.playbackRate = r)),
+    },
+    {
+      name: 'loop', ts: 'boolean', doc: 'An open motion wraps at its end while playing (a cycle always does); the `loop` attribute.',
+      get: (fig) => fig.playback.loop,
+      set: (fig, on) => (fig.playback.loop = on),
+    },
+  ],
+  methods: [
+    {
+      name: 'play', params: [{ name: 'options', ts: '{ repetitions?: number }', optional: true }], returns: 'void',
+      doc: 'Plays; with `repetitions` (a whole number ≥ 1), that many passes and then `ended`.',
+      call: (fig, opts) => fig.guard(() => fig.play(opts)),
+    },
+    { name: 'pause', params: [], returns: 'void', doc: 'Stops playback.', call: (fig) => fig.guard(() => fig.pause()) },
+    {
+      name: 'seek', params: [{ name: 't', ts: 'number' }], returns: 'void',
+      doc: 'Shows the moving object at time `t` in seconds (the `currentTime` setter).',
+      call: (fig, t) => fig.guard(() => fig.seek(t)),
+    },
+  ],
+  events: [
+    { name: 'time', doc: 'The playhead moved: seconds t in [start, end] and the motion\'s parameter u.', detail: TIME_DETAIL },
+    { name: 'timeupdate', doc: 'The playhead moved (as `time`, in HTMLMediaElement\'s name).' },
+    { name: 'play', doc: 'Playback started.' },
+    { name: 'pause', doc: 'Playback stopped.' },
+    { name: 'ended', doc: 'An open motion that does not loop reached its end.' },
+    { name: 'seeked', doc: 'A seek (or a set of currentTime) finished.' },
+    { name: 'ratechange', doc: 'playbackRate changed.' },
+  ],
+  // A full apply (a load) sets the rate and loop from the options; a patch only what it names
+  // (playbackRate and loop set as properties stay).
+  apply(fig, v, { patch, full }) {
+    const { anim } = fig.model;
+    if (full || 'speed' in patch) anim.speed = v.speed;
+    if (full || 'loop' in patch) anim.loop = v.loop;
+  },
+  drawn(fig, v, { patch, full }) {
+    if ('autoplay' in patch && !full) fig.viewer.setPlaying(v.autoplay);
+  },
+  loaded(fig) {
+    fig.playback.loaded();
+  },
+};
 
 export class Playback {
   constructor(fig) {
@@ -36,8 +92,6 @@ export class Playback {
   get viewer() {
     return this.fig.model.motion ? this.fig.viewer : null;
   }
-
-  // ---------------------------------------------------------------- playback
 
   /**
    * Plays `repetitions` passes (a whole number ≥ 1) and ends, or without it as loop says.
@@ -148,103 +202,11 @@ export class Playback {
     this.fig.say(`${describePose(motion, i % n)}, ${keys[i].toFixed(2)} s`);
   }
 
-  /** The motion loaded: what was asked before takes effect. */
+  /** The motion loaded: the time and play asked before take effect. */
   loaded() {
-    const { time, play, camera } = this.pending;
+    const { time, play } = this.pending;
     this.pending = {};
-    if (camera) this.setCamera(camera);
     if (time !== undefined) this.seek(time);
     if (play) this.play({ repetitions: play.passes ?? undefined });
   }
-
-  // ---------------------------------------------------------------- camera
-
-  /** {yaw, pitch, distance, target, projection} (radians, scene units), or null before the start. */
-  get camera() {
-    const c = this.viewer?.camera;
-    if (!c) return this.pending.camera ? { ...this.pending.camera } : null;
-    return { yaw: c.yaw, pitch: c.pitch, distance: c.distance, target: [...c.target], projection: c.ortho ? 'orthographic' : 'perspective' };
-  }
-
-  /**
-   * Sets the fields given (checked first: a bad one changes nothing); fires camera-change 'api'.
-   * A string is the `camera` attribute's value (a named view, "yaw pitch [distance]" or
-   * "yaw pitch distance tx ty tz").
-   */
-  setCamera(s) {
-    if (typeof s === 'string') {
-      this.fig.setOptions({ camera: s });
-      return;
-    }
-    if (!s || typeof s !== 'object') throw new OptionError('camera', s, 'expected an object {yaw, pitch, distance, target, projection}');
-    const out = {};
-    for (const key of Object.keys(s)) {
-      if (!['yaw', 'pitch', 'distance', 'target', 'projection'].includes(key)) throw new OptionError('camera', key, 'unknown camera field (yaw, pitch, distance, target, projection)');
-    }
-    if (s.yaw !== undefined) out.yaw = number('camera.yaw', s.yaw, -1e6, 1e6);
-    if (s.pitch !== undefined) out.pitch = number('camera.pitch', s.pitch, -Math.PI / 2, Math.PI / 2);
-    if (s.distance !== undefined) out.distance = number('camera.distance', s.distance, 1e-6, 1e7);
-    if (s.distance === 0) throw new OptionError('camera.distance', 0, 'must be more than 0');
-    if (s.target !== undefined) {
-      const t = /** @type {ArrayLike<number>} */ (s.target);
-      if (!(Array.isArray(t) || ArrayBuffer.isView(t)) || t.length !== 3) throw new OptionError('camera.target', t, 'expected [x, y, z]');
-      out.target = Array.from(t, (x, i) => number(`camera.target[${i}]`, x, -1e9, 1e9));
-    }
-    if (s.projection !== undefined) out.projection = oneOf('camera.projection', s.projection, PROJECTIONS);
-    const v = this.viewer;
-    if (!v) {
-      this.pending.camera = { ...this.pending.camera, ...out };
-      return;
-    }
-    const { projection, ...rest } = out;
-    Object.assign(v.camera, rest);
-    if (projection) v.camera.ortho = projection === 'orthographic';
-    v.cameraMoved('api');
-  }
-
-  /** The viewer's camera moved. */
-  cameraMoved(source) {
-    this.fig.emit('camera-change', { source, camera: this.camera });
-  }
-
-  // ---------------------------------------------------------------- pictures
-
-  /**
-   * A 2-D canvas of the current view: `scale` times the drawing buffer (drawn at that size),
-   * `transparent` background, `gizmo` to keep the selected pose's gizmo. Throws a RangeError
-   * naming the option at fault, or when the figure has not started.
-   */
-  picture({ scale = 1, transparent = false, gizmo = false, type = 'image/png' } = {}) {
-    if (!TYPES.includes(type)) throw new RangeError(`type: ${type} is not one of ${TYPES.join(', ')}`);
-    if (!(typeof scale === 'number' && scale > 0 && scale <= MAX_SCALE)) throw new RangeError(`scale: ${scale} is not a number in (0, ${MAX_SCALE}]`);
-    if (transparent && type === 'image/jpeg') throw new RangeError('transparent: image/jpeg has no transparency (use image/png or image/webp)');
-    const v = this.viewer;
-    if (!v?.renderer) {
-      throw new RangeError(v?.suspended
-        ? 'the figure rests while far from the viewport (it draws again when scrolled near)'
-        : 'the figure has not started yet (a lazy figure starts near the viewport; await ready, or loading="eager")');
-    }
-    return picture(v, { scale, transparent: !!transparent, gizmo: !!gizmo });
-  }
-
-  /** The picture as a data: URL (see picture; `quality` 0 to 1 for JPEG and WebP). */
-  toDataURL(opts = {}) {
-    const q = quality(opts.quality);
-    return this.picture(opts).toDataURL(opts.type ?? 'image/png', q);
-  }
-
-  /** The picture as a Blob (a promise; rejects with the error picture throws). */
-  async toBlob(opts = {}) {
-    const q = quality(opts.quality);
-    const c = this.picture(opts);
-    const blob = await new Promise((resolve) => c.toBlob(resolve, opts.type ?? 'image/png', q));
-    if (!blob) throw new RangeError(`the picture could not be encoded as ${opts.type ?? 'image/png'}`);
-    return blob;
-  }
-}
-
-function quality(q) {
-  if (q === undefined) return undefined;
-  if (!(typeof q === 'number' && q >= 0 && q <= 1)) throw new RangeError(`quality: ${q} is not a number in [0, 1]`);
-  return q;
 }

@@ -1,42 +1,46 @@
 // The embeddable figure: the custom element <screw-bender> and mount(element, options) for
 // frameworks, built from the playground's view (view/viewer.js: one renderer, camera, picking
-// and drawing path); the figure itself is figure.js (chrome, sources, options and editing in
-// the files it names). This file is the entry: the element, mount() and the handle.
+// and drawing path); the figure itself is figure.js (its features in the files
+// features.js names). This file is the entry: the element, mount() and the handle.
 //
 //   <script type="module" src=".../element/screw-bender.js"></script>
 //   <screw-bender preset="l_cycle_rotated" levels="4" autoplay>caption text</screw-bender>
 //
-// Sources (the first present wins): `src` (URL of a motion .json or .glb), `share` (a share-link
-// payload, the part after `#s=`), an inline <script type="application/json"> child (a motion
-// document), `preset` (a preset id; `scene`, its former name, still works). Options: scheme, levels, s, rules, strobe, show (layers:
-// strobe control trajectories polyscrew polygon triads grid), autoplay, loop, speed, editable,
-// controls (none | minimal | full), camera (iso | front | side | top, "yaw pitch [distance]", or
-// "yaw pitch distance tx ty tz" with the point looked at, in degrees and scene units), theme (light | dark), persist (a localStorage key; without it the
-// figure never touches storage), alt (the accessible name), loading (lazy | eager), poster (an
-// image URL shown until the first frame), touch-action (pan-y | pan-x | none: what a touch on
-// the unfocused figure leaves to the page). Children with slot="pose-3" (or slot="pose" and
-// data-pose="3") label pose 3 (labels.js); the others are the caption.
-//
-// Properties: document, options, motion (read-only), backend, ready (a Promise), camera, and as
-// HTMLMediaElement's: currentTime, duration, paused, playbackRate, loop; methods play({
-// repetitions }), pause(), seek(t) (seconds: the currentTime setter), toBlob(opts),
-// toDataURL(opts); events change {poses}, select {index}, time {t, u, start, end} (seconds and
-// parameter; timeupdate is the same), play, pause, ended, seeked, ratechange, camera-change
-// {source, camera}, error {attribute, value, message} (failures do not reach the page as
-// exceptions: each is a message inside the figure plus an `error` event; a picture's bad
-// options throw or reject, as a canvas's would).
+// Its options (attributes), properties, methods and events are declared by the features that
+// own them (features.js lists them; each feature's file documents its own): the element watches
+// exactly the declared attributes, and its members are built here from the declared properties
+// and methods. Failures do not reach the page as exceptions: each is a message inside the figure
+// plus an `error` event (a picture's bad options throw or reject, as a canvas's would). Children
+// with slot="pose-3" (or slot="pose" and data-pose="3") label pose 3 (labels.js); the others are
+// the caption.
 //
 // Good guest manners: one wasm module instance for all figures (a module-level promise); no
-// listener outside the figure's own shadow tree but print's (showing.js); the wheel zooms and a
+// listener outside the figure's own shadow tree but print's (loading.js); the wheel zooms and a
 // vertical swipe orbits only while the figure has the focus; it takes only the keys it acts on,
 // and only while focused (chrome.js); it starts near the viewport and draws only while shown;
 // removing the element frees its GPU data and observers; no inline script or style (the
-// stylesheet is css/screw-bender.css beside this folder), so a strict CSP with
-// 'wasm-unsafe-eval' suffices.
+// stylesheet is linked: css/screw-bender.css, or where ../assets.js is told), so a strict CSP
+// with 'wasm-unsafe-eval' suffices.
+import { FEATURES, ATTRIBUTES, FLAGS, EVENTS } from './features.js';
 import { Figure } from './figure.js';
-import { ATTRIBUTES, optionsOf } from './options.js';
+import { canonical } from './options.js';
 
-export { ATTRIBUTES, LAYERS } from './options.js';
+export { ATTRIBUTES } from './features.js';
+export { LAYERS } from './options.js';
+export { configure } from '../assets.js';
+
+/** The declared event types: a figure fires no other. */
+const DECLARED_EVENTS = new Set(EVENTS);
+
+/** Options from an element's attributes (and its inline JSON child). */
+function optionsOf(el) {
+  const o = {};
+  for (const a of ATTRIBUTES) if (el.hasAttribute(a)) o[a] = el.getAttribute(a);
+  for (const b of FLAGS) if (o[b] === '') o[b] = true;
+  const script = el.querySelector(':scope > script[type="application/json"]');
+  if (script) o.inline = script.textContent;
+  return canonical(o);
+}
 
 /**
  * Mounts a figure into `element` (any element; its content becomes the caption) with `options`
@@ -60,122 +64,48 @@ export function mount(element, options = {}) {
  * Dispatches a figure's events on `target`. `change` bubbles, as the native change event does:
  * frameworks that delegate it to their root (Svelte 5's `onchange`) only see it so.
  */
-const emitter = (target) => (type, detail) =>
+const emitter = (target) => (type, detail) => {
+  // An event no feature declares would be missing from the typings and the manifest.
+  if (!DECLARED_EVENTS.has(type)) throw new Error(`the figure fires "${type}", which no feature declares (element/features.js)`);
   target.dispatchEvent(new CustomEvent(type, { detail, bubbles: type === 'change' }));
+};
 
-/** A figure's script API: what mount() returns, and what <screw-bender> forwards to. */
+/**
+ * A figure's script API: what mount() returns, and what <screw-bender> forwards to. Its
+ * members are the features' declared properties and methods (below), and destroy().
+ */
 export class FigureHandle {
   constructor(fig) {
     this.figure = fig;
   }
 
-  /** Resolves when the figure is drawn (a lazy one: once near the viewport) or has shown its error. */
-  get ready() {
-    return this.figure.ready ?? Promise.resolve();
-  }
-
-  get document() {
-    return this.figure.model.motion?.toDocument() ?? null;
-  }
-
-  set document(doc) {
-    this.figure.setOptions({ inline: JSON.stringify(doc), src: null, share: null, preset: null });
-  }
-
-  get options() {
-    const f = this.figure;
-    return { ...f.opts, ...(f.model.motion ? f.model.motion.options() : {}) };
-  }
-
-  set options(patch) {
-    this.figure.setOptions(patch ?? {});
-  }
-
-  get motion() {
-    return this.figure.model.motion;
-  }
-
-  get backend() {
-    return this.figure.viewer?.backend ?? null;
-  }
-
-  /** The viewer (for tests and advanced use): camera, picking, renderer. */
-  get viewer() {
-    return this.figure.viewer;
-  }
-
-  /** Plays; `repetitions` passes then `ended` (else as `loop` says). */
-  play(opts) {
-    const f = this.figure;
-    return f.guard(() => f.play(opts));
-  }
-
-  pause() {
-    const f = this.figure;
-    return f.guard(() => f.pause());
-  }
-
-  /** Shows time t (seconds): the currentTime setter. */
-  seek(t) {
-    const f = this.figure;
-    return f.guard(() => f.seek(t));
-  }
-
-  get currentTime() {
-    return this.figure.playback.currentTime;
-  }
-
-  set currentTime(t) {
-    this.seek(t);
-  }
-
-  get duration() {
-    return this.figure.playback.duration;
-  }
-
-  get paused() {
-    return this.figure.playback.paused;
-  }
-
-  get playbackRate() {
-    return this.figure.playback.playbackRate;
-  }
-
-  set playbackRate(r) {
-    const f = this.figure;
-    f.guard(() => (f.playback.playbackRate = r));
-  }
-
-  get loop() {
-    return this.figure.playback.loop;
-  }
-
-  set loop(on) {
-    this.figure.playback.loop = on;
-  }
-
-  /** {yaw, pitch, distance, target, projection}; set any of them (fires camera-change 'api'). */
-  get camera() {
-    return this.figure.playback.camera;
-  }
-
-  set camera(c) {
-    const f = this.figure;
-    f.guard(() => f.playback.setCamera(c));
-  }
-
-  /** A picture of the view: {type, quality, scale, transparent, gizmo} → Promise<Blob>. */
-  toBlob(opts) {
-    return this.figure.playback.toBlob(opts);
-  }
-
-  /** The same picture as a data: URL (synchronous). */
-  toDataURL(opts) {
-    return this.figure.playback.toDataURL(opts);
-  }
-
   destroy() {
     this.figure.dispose();
+  }
+}
+
+for (const f of FEATURES) {
+  for (const p of f.properties ?? []) {
+    Object.defineProperty(FigureHandle.prototype, p.name, {
+      configurable: true,
+      get() {
+        return p.get(this.figure);
+      },
+      ...(p.set && {
+        set(v) {
+          p.set(this.figure, v);
+        },
+      }),
+    });
+  }
+  for (const m of f.methods ?? []) {
+    Object.defineProperty(FigureHandle.prototype, m.name, {
+      configurable: true,
+      writable: true,
+      value(...args) {
+        return m.call(this.figure, ...args);
+      },
+    });
   }
 }
 
@@ -227,7 +157,7 @@ export class ScrewBenderElement extends HTMLElement {
 
   attributeChangedCallback(name, old, value) {
     if (!this.started || old === value) return;
-    const v = (name === 'autoplay' || name === 'editable') && value === '' ? true : value;
+    const v = FLAGS.includes(name) && value === '' ? true : value;
     this.handle.figure.setOptions({ [name]: v ?? null });
   }
 

@@ -1,7 +1,14 @@
 // The WebAssembly side that all figures of a page share: one module instance (the main module, or
-// the WebGL2 one when WebGPU has no usable adapter; element/modules.js says which), the files
-// module where a glTF or CSV `src` needs one, and one queue in which figures open their renderers.
-import { loadMain, loadGl, loadFiles as importFiles } from './modules.js';
+// the WebGL2 one when WebGPU has no usable adapter), the files module where a glTF or CSV `src`
+// needs one, and one queue in which figures open their renderers. The modules are those that
+// assets.js's configure() names, else the page's own (modules.js).
+import { configuredModules } from '../assets.js';
+import * as pageModules from './modules.js';
+
+/** The module loaders in use: {main, gl, files}. */
+function loaders() {
+  return configuredModules() ?? { main: pageModules.loadMain, gl: pageModules.loadGl, files: pageModules.loadFiles };
+}
 
 let wasmReady = null;
 let glReady = null;
@@ -12,6 +19,7 @@ let glReady = null;
  * the WebGPU-only module cannot draw with WebGL2.
  */
 export function loadWasm({ webgl2 = false } = {}) {
+  const { main: loadMain, gl: loadGl } = loaders();
   if (webgl2 && loadGl) {
     glReady ??= (async () => {
       const m = await loadGl();
@@ -42,7 +50,7 @@ let filesReady = null;
  * `src` when the renderer module has none; loaded again after a failure.
  */
 export function loadFiles() {
-  filesReady ??= importFiles()
+  filesReady ??= loaders().files()
     .then(async (m) => {
       await m.default();
       return m;

@@ -1,12 +1,12 @@
 // The lesson link: a page address that carries a whole lesson file in its fragment
 // (`index.html#lesson=<payload>`), so a teacher can hand a lesson to students with no hosting.
 // The payload is the lesson's JSON, deflated (the vendored fflate, as the SCORM zip uses) and
-// written as base64url (the share link's coding, editor/session.js). A fragment never reaches
+// written as base64url (the share link's coding, share-link.js). A fragment never reaches
 // the server; its length is bounded by what mail, chat and LMS text fields pass on intact, not
 // by the browser, so links past MAX_LINK_CHARS are refused with a message that says what to do
 // instead.
 import { deflateSync, inflateSync, strFromU8, strToU8 } from '../../vendor/fflate.min.mjs';
-import { base64urlToBytes, bytesToBase64url } from '../editor/session.js';
+import { base64urlToBytes, bytesToBase64url } from '../share-link.js';
 import { MAX_LESSON_BYTES } from './format.js';
 
 /** The fragment's key: `#lesson=…`. */

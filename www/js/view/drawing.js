@@ -5,6 +5,7 @@
 // viewer.js for the model's fields), so whoever edits the model only has to say which part
 // to rebuild. It keeps copies of the control-pose arrays it uploaded, so that a drag can
 // rewrite one pose's entries instead of rebuilding them all.
+import { bunnyUrl } from '../assets.js';
 import { poseMatrix, length, sub, add, scale } from '../math.js';
 import {
   SLOT, LAYER, COLORS, INSTANCE, SEGMENT, MAX_MORPH_STROBE, instances, mix, Segments, poseOf, track, matricesOf,
@@ -23,11 +24,10 @@ function trajectoryLine(dpr, colors = COLORS) {
 
 /** Size of the cube an imported mesh is scaled to fit (scene units; exports use it as well). */
 export const IMPORT_SIZE = 1.6;
-/** The preset of the paper's bunny example, its mesh (vendored by scripts/serve.d/30-bunny.sh) and
- * the size it is scaled to (the wedge's longest side; the core's BUNNY_SIZE). */
+/** The preset of the paper's bunny example (its mesh vendored by scripts/serve.d/30-bunny.sh, found
+ * by assets.js) and the size it is scaled to (the wedge's longest side; the core's BUNNY_SIZE). */
 export const BUNNY_PRESET = 'bunny6';
 const BUNNY_SCENE = `scene:${BUNNY_PRESET}`;
-const BUNNY_URL = new URL('../../vendor/bunny.obj', import.meta.url);
 const BUNNY_SIZE = 1.2;
 /** @type {Promise<string> | null} */
 let bunnyText = null;
@@ -39,7 +39,8 @@ let bunnyText = null;
  * @returns {Promise<string>}
  */
 export function fetchBunny() {
-  bunnyText ??= fetch(BUNNY_URL)
+  const url = bunnyUrl();
+  bunnyText ??= (url ? fetch(url) : Promise.reject(new Error('this build carries no bunny mesh')))
     .then((res) => (res.ok ? res.text() : Promise.reject(new Error(`${res.status} ${res.statusText}`))))
     .catch((e) => {
       bunnyText = null;

@@ -1,8 +1,30 @@
 // Where a figure's motion comes from: `src` (a motion .json or .glb/.gltf/.csv file), `share` (a
-// share-link payload), an inline JSON document, or `scene` (a preset); and the opt-in saved copy
-// (`persist`), the only storage a figure ever touches.
+// share-link payload), an inline JSON document, or `preset`; the `document` and `motion`
+// properties; and the opt-in saved copy (`persist`), the only storage a figure ever touches. A
+// change of any source reloads the figure (figure.js).
 import { OptionError } from './options.js';
 import { loadFiles } from './wasm.js';
+
+/** @type {import('./options.js').Feature} */
+export const sourceFeature = {
+  name: 'source',
+  doc: 'The motion shown: the first present of src, share, an inline JSON child, preset.',
+  options: [
+    { name: 'preset', type: 'string', doc: 'A preset id, e.g. `l_cycle_rotated` (the source when none of src, share or an inline JSON child is given).' },
+    { name: 'scene', type: 'string', deprecated: 'Renamed to `preset`.', doc: 'Former name of `preset`, kept for one release.' },
+    { name: 'src', type: 'string', doc: 'URL of a motion `.json` document or a `.glb` / `.gltf` / `.csv` file.' },
+    { name: 'share', type: 'string', doc: 'A playground share-link payload (the part after `#s=`, or the whole link).' },
+    { name: 'persist', type: 'string', doc: 'A localStorage key: the figure saves its edits there and restores them (never without it).' },
+  ],
+  properties: [
+    {
+      name: 'document', ts: 'MotionDocumentInput | object | null', doc: 'The motion document shown (null before it loads); set to show another.',
+      get: (fig) => fig.model.motion?.toDocument() ?? null,
+      set: (fig, doc) => fig.setOptions({ inline: JSON.stringify(doc), src: null, share: null, preset: null }),
+    },
+    { name: 'motion', ts: 'Motion | null', doc: 'The Motion handle of the math module (read-only).', get: (fig) => fig.model.motion },
+  ],
+};
 
 /** Largest motion file `src` may name (bytes); larger ones are refused before parsing. */
 const MAX_SRC_BYTES = 32 << 20;
@@ -43,8 +65,8 @@ export async function fetchSource(o, w, scenes) {
     }
   }
   if (o.share) {
-    // Imported only for share payloads (it brings the playground's session code).
-    const { decodeHash } = await import('../editor/session.js');
+    // Imported only for share payloads (most figures name a file or a preset).
+    const { decodeHash } = await import('../share-link.js');
     let s;
     try {
       s = decodeHash(String(o.share).replace(/^.*#s=/, ''));

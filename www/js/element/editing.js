@@ -1,6 +1,37 @@
-// The editing of an editable figure (`editable`): its pointer tool.
-import { describePose } from './playback.js';
+// The editing of an editable figure (`editable`): its pointer tool, the selection and the
+// events `select` and `change`. Turning editing on or off gives the figure a fresh canvas
+// (figure.js), since the pointer listeners live on the canvas.
 import { beginPoseDrag, dragTarget, hoverPoseTool, redrawPoseDrag, setDragPose } from '../view/pose-drag.js';
+import { describePose } from './description.js';
+import { bool } from './options.js';
+
+/** @type {import('./options.js').Feature} */
+export const editingFeature = {
+  name: 'editing',
+  doc: 'Selecting and dragging poses.',
+  options: [
+    {
+      name: 'editable', type: 'boolean', default: false, parse: bool,
+      doc: 'Select and drag poses with the gizmo (off: orbit, play and scrub only).', python: { default: true },
+    },
+  ],
+  events: [
+    {
+      name: 'change', doc: 'A pose of an editable figure was moved: every control pose (7 numbers each) and the pose edited.',
+      detail: {
+        type: 'ChangeDetail', doc: 'The detail of `change`: every control pose (7 numbers each) and the pose edited.',
+        fields: { poses: 'Float64Array', index: 'number' },
+      },
+    },
+    {
+      name: 'select', doc: 'A control pose was selected (-1: none).',
+      detail: { type: 'SelectDetail', doc: 'The detail of `select`: the selected control pose, -1 for none.', fields: { index: 'number' } },
+    },
+  ],
+  apply(fig, v) {
+    if (!v.editable && fig.model.selected >= 0) fig.model.selected = -1;
+  },
+};
 
 /**
  * The pointer tool of an editable figure `fig`: select a pose, drag it with the gizmo (the

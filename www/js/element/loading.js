@@ -11,7 +11,7 @@
 //   The print listeners are the figures' only ones outside their shadow trees: one set for the
 //   page (added with the first figure, removed with the last), and they only take pictures.
 import { picture } from '../view/picture.js';
-import { oneOf } from './options.js';
+import { check, oneOf } from './options.js';
 
 /** How near the viewport a lazy figure starts (and a started one keeps drawing). */
 const NEAR = '200px 0px';
@@ -19,8 +19,32 @@ const LOADING = ['lazy', 'eager'];
 /** How long a started figure stays far from the viewport before it frees its renderer. */
 const SUSPEND_MS = 2000;
 
+/** @type {import('./options.js').Feature} */
+export const loadingFeature = {
+  name: 'loading',
+  doc: 'When the figure starts and draws: lazy start, poster, hidden slides, print.',
+  options: [
+    {
+      name: 'loading', type: LOADING, default: 'lazy', parse: (v) => oneOf('loading', v, LOADING),
+      doc: '`lazy`: start when the figure nears the viewport; `eager`: at once.',
+    },
+    { name: 'poster', type: 'string', doc: 'URL of an image shown until the figure starts.' },
+  ],
+  properties: [
+    {
+      name: 'ready', ts: 'Promise<void>',
+      doc: 'Resolves when the figure is drawn (a lazy one: once near the viewport) or has shown its error; never rejects.',
+      get: (fig) => fig.ready ?? Promise.resolve(),
+    },
+  ],
+  changed(fig, patch) {
+    if ('loading' in patch && patch.loading === 'eager') fig.wake?.();
+    if ('poster' in patch) showPoster(fig);
+  },
+};
+
 /** The `loading` option (checked): 'lazy' or 'eager'. */
-export const loadingOf = (o) => (o.loading == null || o.loading === '' ? 'lazy' : oneOf('loading', o.loading, LOADING));
+export const loadingOf = (o) => check(loadingFeature, o).loading;
 
 /**
  * Watches `fig`'s host with an IntersectionObserver (once): resolves fig.near when it nears the
