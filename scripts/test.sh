@@ -145,6 +145,7 @@ record() {
     for other in "${!pid_of[@]}"; do
       [[ ${state[$other]} == running ]] && kill -- "-${pid_of[$other]}" 2>/dev/null || true
     done
+    [[ -n ${fg_pid:-} ]] && kill -- "-$fg_pid" 2>/dev/null || true
     summary
     exit "$rc"
   fi
@@ -159,40 +160,94 @@ reap() {
   return 0
 }
 
-# wait_for NAME: until a stage that NAME needs has passed.
-wait_for() {
-  local dep=$1
-  [[ -n ${chosen[$dep]:-} ]] || return 0
-  while [[ ${state[$dep]:-} == running ]]; do
-    [[ -s $logs/$dep.end ]] && finish "$dep" && break
-    sleep 1
-    reap
+# needs_passed NAME: whether every chosen stage that NAME needs has passed.
+needs_passed() {
+  local dep
+  local -a deps
+  IFS=, read -r -a deps <<<"${after_of[$1]}"
+  for dep in "${deps[@]}"; do
+    [[ -z $dep || -z ${chosen[$dep]:-} || ${state[$dep]:-} == passed ]] || return 1
   done
 }
 
-set -m # each background stage in its own process group, so that a failure can stop it whole
-for name in "${names[@]}"; do
-  [[ -n ${chosen[$name]:-} ]] || continue
-  IFS=, read -r -a deps <<<"${after_of[$name]}"
-  for dep in "${deps[@]}"; do [[ -n $dep ]] && wait_for "$dep"; done
-  if [[ ${runs_of[$name]} == alone ]]; then
-    for other in "${!pid_of[@]}"; do wait_for "$other"; done
-  fi
-  reap
-  start_of[$name]=$SECONDS
-  state[$name]=running
-  if [[ ${runs_of[$name]} == beside ]]; then
+# launch_ready: starts, in the background, every beside stage whose needs have passed, wherever
+# it stands in the table before the next alone stage (none while an alone stage runs).
+launch_ready() {
+  local name
+  ((alone_running)) && return 0
+  for name in "${names[@]}"; do
+    [[ -n ${chosen[$name]:-} && ${runs_of[$name]} == alone && ${state[$name]:-} != passed ]] && return 0
+    [[ -n ${chosen[$name]:-} && ${runs_of[$name]} == beside && -z ${state[$name]:-} ]] || continue
+    needs_passed "$name" || continue
+    start_of[$name]=$SECONDS
+    state[$name]=running
     header "stage $name (starts now, beside the others; its output when it ends)"
     (run_wrapped "$name" "$logs/$name.end") >"$logs/$name.log" 2>&1 &
     pid_of[$name]=$!
+  done
+}
+
+# tick: what the scheduler does every second while it waits.
+tick() {
+  reap
+  launch_ready
+}
+
+# wait_until CONDITION…: ticks until the command CONDITION… succeeds.
+wait_until() {
+  until "$@"; do
+    tick
+    "$@" && break
+    sleep 1
+  done
+}
+
+# all_before_passed NAME: every chosen stage before NAME in the table has passed.
+all_before_passed() {
+  local other
+  for other in "${names[@]}"; do
+    [[ $other == "$1" ]] && return 0
+    [[ -z ${chosen[$other]:-} || ${state[$other]:-} == passed ]] || return 1
+  done
+}
+
+# every_chosen_passed: every chosen stage has passed.
+every_chosen_passed() {
+  local name
+  for name in "${names[@]}"; do
+    [[ -z ${chosen[$name]:-} || ${state[$name]:-} == passed ]] || return 1
+  done
+}
+
+set -m # each stage in its own process group, so that a failure can stop it whole
+alone_running=0
+fg_pid=
+for name in "${names[@]}"; do
+  [[ -n ${chosen[$name]:-} && ${runs_of[$name]} != beside ]] || continue
+  if [[ ${runs_of[$name]} == alone ]]; then
+    wait_until all_before_passed "$name"
+    alone_running=1
   else
-    header "stage $name"
-    rc=0
-    (run_wrapped "$name" "$logs/$name.end") || rc=$?
-    read -r cpu end _ <"$logs/$name.end"
-    record "$name" "$cpu" "$end" "$rc"
+    wait_until needs_passed "$name"
   fi
+  start_of[$name]=$SECONDS
+  state[$name]=running
+  header "stage $name"
+  # In the background, so that the scheduler starts beside stages while it runs.
+  (run_wrapped "$name" "$logs/$name.end") &
+  fg_pid=$!
+  while kill -0 "$fg_pid" 2>/dev/null; do
+    sleep 1
+    tick
+  done
+  rc=0
+  wait "$fg_pid" || rc=$?
+  fg_pid=
+  read -r cpu end _ <"$logs/$name.end" || { cpu=0 end=$SECONDS; }
+  alone_running=0
+  record "$name" "$cpu" "$end" "$rc"
+  tick
 done
-for name in "${!pid_of[@]}"; do wait_for "$name"; done
+wait_until every_chosen_passed
 
 summary

@@ -64,6 +64,20 @@ test('a beside stage runs while the next start; after and alone wait for it', ()
   assert.match(r.err, /\d+ s +\d+ cpu s +slow +passed/);
 });
 
+test('a beside stage starts once what it needs has passed, during a foreground stage before it', () => {
+  const r = run([
+    `need rust beside - ${mark('need')}`,
+    `long rust cpu - sleep 3; ${mark('long-end')}`,
+    `early rust beside need ${mark('early')}`,
+    `last e2e alone - ${mark('last')}`,
+    `after-alone rust beside long ${mark('after-alone')}`,
+  ]);
+  assert.equal(r.status, 0, r.err);
+  const at = (w) => r.lines.indexOf(w);
+  assert.ok(at('early') < at('long-end'), `early started during long: ${r.lines}`);
+  assert.ok(at('early') < at('last') && at('last') < at('after-alone'), `nothing beside the alone stage: ${r.lines}`);
+});
+
 test('a failing foreground stage stops the run: no later stage, the count line says so', () => {
   const r = run([`one rust cpu - ${mark('one')}`, 'two rust cpu - exit 3', `three rust cpu - ${mark('three')}`]);
   assert.equal(r.status, 3);
