@@ -5,7 +5,6 @@
 // editor's entries and drafts (editor/menu-section.js), and a lesson carried by the page's
 // address (a lesson link, link.js).
 import { MAX_LESSON_BYTES } from './format.js';
-import { createWriteSection, openLinkedLesson } from './editor/menu-section.js';
 import { readProgress } from './progress.js';
 import { BASE } from './urls.js';
 import { el } from './dom.js';
@@ -62,8 +61,18 @@ export function createMenu(app, { open, openText, current }) {
   // The player, whole: the editor previews through it and edits the lesson it shows (main.js
   // exposes it once it has started, which is before the menu is first used).
   const player = () => /** @type {any} */ (window).screwbender?.lessons ?? Promise.resolve(null);
-  const write = createWriteSection(app, { hideMenu: () => (menu.hidden = true), pasted: () => paste.value, player });
-  mcard.append(el('h2', '', 'Lessons'), list, lmsRow, paste, mrow, write.element, mnote, fileInput);
+  // The editor's entries and drafts (editor/menu-section.js) are fetched when the menu first
+  // opens: a student following a lesson link needs none of them.
+  const writeBox = el('div');
+  /** @type {Promise<any> | null} */
+  let write = null;
+  const writeSection = () =>
+    (write ??= import('./editor/menu-section.js').then((m) => {
+      const w = m.createWriteSection(app, { hideMenu: () => (menu.hidden = true), pasted: () => paste.value, player });
+      writeBox.replaceWith(w.element);
+      return w;
+    }));
+  mcard.append(el('h2', '', 'Lessons'), list, lmsRow, paste, mrow, writeBox, mnote, fileInput);
   menu.append(mcard);
   document.body.append(menu);
 
@@ -99,7 +108,7 @@ export function createMenu(app, { open, openText, current }) {
     tour.append(el('b', '', 'Tour of the page'), el('span', '', 'Six stops: handles, gizmo, levels, scheme, play, Analyse'));
     tour.addEventListener('click', () => open('tour', { resume: false }));
     list.append(tour);
-    write.refresh();
+    (await writeSection()).refresh();
     menu.hidden = false;
     list.querySelector('button')?.focus();
   }
@@ -146,7 +155,10 @@ export function createMenu(app, { open, openText, current }) {
     e.preventDefault();
   });
 
-  player().then((p) => openLinkedLesson(app, openText, p?.ready));
+  // A lesson carried by the page's address (`#lesson=…`, editor/menu-section.js reads it).
+  if (location.hash.startsWith('#lesson=')) {
+    player().then(async (p) => (await import('./editor/menu-section.js')).openLinkedLesson(app, openText, p?.ready));
+  }
 
   return {
     open: openMenu,
