@@ -3,7 +3,11 @@
 // whether the first-visit tour has been seen. Storage that is broken, full or disabled never
 // throws: progress then lasts for this page only.
 
-import { isSeed } from './variants.js';
+/**
+ * Whether `v` is a seed: a whole number from 0 to 2³² − 1. Here, not in variants.js, as every
+ * visit reads the progress (for the tour) and a plain visit fetches nothing else of the lessons.
+ */
+export const isSeed = (v) => Number.isInteger(v) && v >= 0 && v <= 0xffffffff;
 
 const PROGRESS_PREFIX = 'screwbender.lesson.';
 const TOUR_SEEN_KEY = 'screwbender.tour.seen';

@@ -48,8 +48,7 @@ export function newSeed() {
   return Math.floor(Math.random() * 4294967296) >>> 0;
 }
 
-/** Whether `v` is a seed: a whole number from 0 to 2³² − 1. */
-export const isSeed = (v) => Number.isInteger(v) && v >= 0 && v <= 0xffffffff;
+export { isSeed } from './progress.js';
 
 /** Decimals of a number written in JSON (`0.25` → 2), at most 10. */
 function decimals(x) {
