@@ -44,8 +44,15 @@ pub(crate) fn run_widest<Op: LanesOp>(op: Op) -> Op::Output {
 
 /// The widest lanes the batches may use: all of them, except inside tests' `with_max_width`, so
 /// that the narrower routes are covered on machines with wider ones, and in a build with the
-/// feature `lane-cap`, where `SCREWBENDER_MAX_LANES` says (see [`lane_cap`]).
-#[cfg(lanes)]
+/// feature `lane-cap`, where `SCREWBENDER_MAX_LANES` says (see [`lane_cap`]). Only where there is
+/// a choice of width (x86-64, wasm32 with SIMD); elsewhere the two lanes are the only ones.
+#[cfg(all(
+    lanes,
+    any(
+        target_arch = "x86_64",
+        all(target_arch = "wasm32", target_feature = "simd128")
+    )
+))]
 #[inline(always)]
 fn max_width() -> usize {
     #[cfg(test)]
@@ -59,7 +66,15 @@ fn max_width() -> usize {
 /// The cap that `SCREWBENDER_MAX_LANES` sets (`8`, `4` or `2`; unset or empty: none), read once. A
 /// measuring build's switch, so a value it cannot honour stops the program with a message
 /// rather than measuring something else than asked.
-#[cfg(all(lanes, not(test), feature = "lane-cap"))]
+#[cfg(all(
+    lanes,
+    not(test),
+    feature = "lane-cap",
+    any(
+        target_arch = "x86_64",
+        all(target_arch = "wasm32", target_feature = "simd128")
+    )
+))]
 fn lane_cap() -> usize {
     static CAP: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
     *CAP.get_or_init(|| match std::env::var("SCREWBENDER_MAX_LANES") {
