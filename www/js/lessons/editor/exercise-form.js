@@ -1,21 +1,9 @@
 // A step's exercise in the editor, built from forms: the task, a multiple-choice question (each
 // answer with an optional `why`, the right one picked by its radio button, which writes the
 // exercise's `choice` check), the checks (check-form.js), the hints and the success text.
-import { el } from '../dom.js';
+import { button, el } from '../dom.js';
 import { checksForm } from './check-form.js';
 import { textField } from './text-field.js';
-
-/** A small button of the editor. */
-function button(text, title, onClick, cls = '') {
-  const b = el('button', cls, text);
-  b.type = 'button';
-  if (title) {
-    b.title = title;
-    b.setAttribute('aria-label', title);
-  }
-  b.addEventListener('click', onClick);
-  return b;
-}
 
 /** The index of the exercise's `choice` check, or -1. */
 const choiceCheck = (x) => (x.checks ?? []).findIndex((c) => c.kind === 'choice');

@@ -1,20 +1,8 @@
 // The lesson's steps in the editor: one row each (its number and title; a click opens it in the
 // step editor and shows its setup on the page), with Move up, Move down, Duplicate and Delete,
 // and "Add a step from the page now", which takes the page's setup (capture.js) in one action.
-import { el } from '../dom.js';
+import { button, el } from '../dom.js';
 import { capture } from './capture.js';
-
-/** A small button of the step list. */
-function button(text, title, onClick, cls = '') {
-  const b = el('button', cls, text);
-  b.type = 'button';
-  if (title) {
-    b.title = title;
-    b.setAttribute('aria-label', title);
-  }
-  b.addEventListener('click', onClick);
-  return b;
-}
 
 /** Moves item `from` of `list` to `to`. */
 const move = (list, from, to) => list.splice(to, 0, ...list.splice(from, 1));
