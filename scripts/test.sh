@@ -10,8 +10,9 @@
 #
 # The stages are declared in scripts/stages.txt: name, lane, how it runs (in the foreground, beside
 # the others, or alone) and the stages it needs. A stage fails by exiting non-zero, and the run
-# stops at the first failure it sees. At the end a table gives each stage's wall time and CPU
-# seconds, then the slowest tests, and the last line is `stages: N passed, M failed`.
+# stops at the first failure it sees. At the end a table gives each stage's wall time, CPU
+# seconds and how busy the cores were, then the slowest tests, and the last line is
+# `stages: N passed, M failed`.
 set -euo pipefail
 # shellcheck source=scripts/lib.sh
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
@@ -24,7 +25,7 @@ for arg in "$@"; do
     --list) list_only=1 ;;
     rust | web | python | e2e) lanes+=("$arg") ;;
     -h | --help)
-      sed -n '2,14p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+      sed -n '2,15p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
       exit 0
       ;;
     *) die "unknown lane or option '$arg' (lanes: rust web python e2e; options: --list)" ;;
@@ -86,32 +87,45 @@ fi
 mkdir -p artifacts
 logs=$(mktemp -d)
 trap 'rm -rf "$logs"' EXIT
-declare -A state pid_of start_of end_of cpu_of
+declare -A state pid_of start_of end_of cpu_of busy_of
 passed=0
 failed=0
 clk_tck=$(getconf CLK_TCK)
 
+# machine_ticks: the machine's busy and total CPU ticks since boot (/proc/stat, all cores; idle
+# and waiting for I/O count as not busy).
+machine_ticks() {
+  local -a c
+  read -r -a c </proc/stat
+  echo "$((c[1] + c[2] + c[3] + c[6] + c[7] + c[8])) $((c[1] + c[2] + c[3] + c[4] + c[5] + c[6] + c[7] + c[8]))"
+}
+
 # run_wrapped NAME OUT: runs a stage's command in this (sub)shell's child and writes to OUT the
-# CPU seconds (user + system) of its processes, the clock and the exit status. With two cores, a
-# stage whose CPU time is near twice its wall time cannot go faster beside another one, while a
-# stage far below it waits on something. Call it in a subshell, so that /proc counts only it.
+# CPU seconds (user + system) of its processes, the clock, the exit status and how busy the
+# machine's cores were meanwhile (percent). With two cores, a stage whose CPU time is near twice
+# its wall time cannot go faster beside another one, while a stage far below it waits on
+# something. A browser's processes escape the first count (they are not reaped by the stage's
+# shell), so for a stage that runs alone the second is the one to read: well under 100 % means
+# idle cores. Call it in a subshell, so that /proc counts only it.
 run_wrapped() {
-  local name=$1 out=$2 rc=0
+  local name=$1 out=$2 rc=0 b0 t0 b1 t1
+  read -r b0 t0 < <(machine_ticks)
   bash -c "${cmd_of[$name]}" || rc=$?
+  read -r b1 t1 < <(machine_ticks)
   local -a t
   read -r -a t <"/proc/$BASHPID/stat"
-  echo "$(((t[15] + t[16]) / clk_tck)) $SECONDS $rc" >"$out"
+  echo "$(((t[15] + t[16]) / clk_tck)) $SECONDS $rc $(((b1 - b0) * 100 / (t1 - t0 > 0 ? t1 - t0 : 1)))" >"$out"
   return "$rc"
 }
 
 # summary: the per-stage table, the slowest tests, then the closing count line.
 summary() {
   local name
-  header "stage times (wall, and CPU of the stage's processes)"
+  header "stage times (wall; CPU of the stage's own processes; how busy both cores were meanwhile)"
   for name in "${names[@]}"; do
     [[ -n ${start_of[$name]:-} ]] || continue
-    printf '%6d s %6d cpu s  %-20s %s\n' "$((${end_of[$name]:-$SECONDS} - ${start_of[$name]}))" \
-      "${cpu_of[$name]:-0}" "$name" "${state[$name]:-running}" >&2
+    printf '%6d s %6d cpu s %4s %% busy  %-20s %s\n' "$((${end_of[$name]:-$SECONDS} - ${start_of[$name]}))" \
+      "${cpu_of[$name]:-0}" "${busy_of[$name]:-?}" "$name" "${state[$name]:-running}" >&2
   done
   printf '%6d s  total\n' "$SECONDS" >&2
   python3 scripts/slowest-tests.py >&2 || true
@@ -120,11 +134,12 @@ summary() {
 
 # finish NAME: collect a background stage that has ended (its output printed whole).
 finish() {
-  local name=$1 cpu end rc=0
+  local name=$1 cpu end rc=0 busy
   wait "${pid_of[$name]}" || true
   header "stage $name (ran beside the others)"
   cat "$logs/$name.log" >&2
-  read -r cpu end rc <"$logs/$name.end" || { cpu=0 end=$SECONDS rc=1; }
+  read -r cpu end rc busy <"$logs/$name.end" || { cpu=0 end=$SECONDS rc=1 busy=?; }
+  busy_of[$name]=$busy
   record "$name" "$cpu" "$end" "$rc"
 }
 
@@ -243,7 +258,8 @@ for name in "${names[@]}"; do
   rc=0
   wait "$fg_pid" || rc=$?
   fg_pid=
-  read -r cpu end _ <"$logs/$name.end" || { cpu=0 end=$SECONDS; }
+  read -r cpu end _ busy <"$logs/$name.end" || { cpu=0 end=$SECONDS busy=?; }
+  busy_of[$name]=$busy
   alone_running=0
   record "$name" "$cpu" "$end" "$rc"
   tick

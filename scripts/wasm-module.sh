@@ -83,6 +83,11 @@ WASM_OPT_FEATURES=(--enable-bulk-memory --enable-reference-types --enable-nontra
   --enable-sign-ext --enable-mutable-globals --enable-multivalue --enable-simd)
 
 cache=$target_dir/wasm-modules/$stamp
+# Two stages may ask for the same module at once (the npm package's build and the page's, beside
+# it): the first makes it under the module's own lock, the other waits and copies it, rather than
+# running the same minutes of wasm-opt a second time.
+exec 8>"$cache.lock"
+flock 8
 if [[ ! -f $cache/screwbender_bg.wasm ]]; then
   tmp=$cache.tmp.$$
   rm -rf "$tmp"
@@ -108,6 +113,8 @@ if [[ ! -f $cache/screwbender_bg.wasm ]]; then
 else
   log "$(basename "$out"): unchanged since the last build (wasm-modules/${stamp:0:12}): copied"
 fi
+flock -u 8
+exec 8>&-
 if [[ -n $started ]]; then
   echo "$stamp ${compiler// /_}" >"$started"
   mv "$started" "$marker"

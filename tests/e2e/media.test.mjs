@@ -19,6 +19,7 @@ let blank;
 before(async () => {
   ({ play, page, problems } = await playgroundPage({ acceptDownloads: true }));
   blank = await play.context.newPage();
+  await page.bringToFront();
   await page.evaluate(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
   // The first-visit hint moves with the layout; it is not what these tests are about.
   await page.evaluate(() => document.querySelector('#hint .close')?.click());

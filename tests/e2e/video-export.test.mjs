@@ -23,6 +23,7 @@ const LIGHT = [232, 236, 241];
 before(async () => {
   ({ play, page, problems } = await playgroundPage({ acceptDownloads: true }));
   blank = await play.context.newPage();
+  await page.bringToFront();
   await page.evaluate(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
   await page.evaluate(() => document.querySelector('#hint .close')?.click());
   // A small view: software encoding on a loaded machine takes its time.

@@ -61,7 +61,7 @@ test('a beside stage runs while the next start; after and alone wait for it', ()
   assert.ok(at('slow-end') < at('needs-slow'), `after waited: ${r.lines}`);
   assert.ok(at('other-end') < at('last') && at('slow-end') < at('last'), `alone waited: ${r.lines}`);
   assert.match(r.out, /stages: 5 passed, 0 failed/);
-  assert.match(r.err, /\d+ s +\d+ cpu s +slow +passed/);
+  assert.match(r.err, /\d+ s +\d+ cpu s +\d+ % busy +slow +passed/);
 });
 
 test('a beside stage starts once what it needs has passed, during a foreground stage before it', () => {
