@@ -12,12 +12,13 @@
 # bundle; without it they skip, and with CI=true a skipped test fails the stage:
 # python/tests/conftest.py).
 #
-# Then the same wheel in clean virtual environments of the oldest CPython the package supports
-# (3.9) and the newest one on the machine (pyenv's, part of the machine image, or pythonX.Y on
-# PATH), with python/requirements-compat.txt: the package's tests on each but the notebook and
-# browser ones (they test the Jupyter stack and the JS bundle, the same on every CPython). Last,
-# the sdist builds a wheel in the newest one (cargo offline, its dependencies from this build's
-# target directory) and that wheel is imported and used. With CI=true a missing interpreter fails
+# Beside that pytest, the same wheel in clean virtual environments of the oldest CPython the
+# package supports (3.9) and the newest one on the machine (pyenv's, part of the machine image, or
+# pythonX.Y on PATH), made with python/requirements-compat.txt while the wheel builds: the
+# package's tests on each but the notebook and browser ones (they test the Jupyter stack and the
+# JS bundle, the same on every CPython). Last, the sdist builds a wheel in the newest one (cargo
+# offline, its dependencies from this build's target directory) and that wheel is imported and
+# used. With CI=true a missing interpreter fails
 # the stage; elsewhere it is a warning and that interpreter is left out.
 #
 #   PYTHON=python3.12 scripts/test.d/python.sh    # another interpreter for .venv (default python3)
@@ -53,15 +54,25 @@ check_wheel_tag() {
   log "wheel tag: $name (the newest glibc symbol it needs: $newest_glibc)"
 }
 
-# test_wheel_on PYTHON: the wheel and requirements-compat.txt in a clean venv of PYTHON;
-# then the tests, not notebook ones.
-test_wheel_on() {
+# prepare_venv PYTHON: a clean venv of PYTHON in $compat with requirements-compat.txt (a download
+# and an install, mostly waiting: done at the start, beside the builds).
+prepare_venv() {
   local py=$1 label dir
   label=$("$py" -c 'import platform; print(platform.python_version())')
   dir=$compat/$label
   timed "venv of CPython $label" "$py" -m venv "$dir"
+  timed "pip install requirements-compat.txt (CPython $label)" "$dir/bin/pip" install --quiet \
+    --disable-pip-version-check -r python/requirements-compat.txt
+}
+
+# test_wheel_on PYTHON: the wheel into PYTHON's venv (prepare_venv's); then the tests, not
+# notebook ones.
+test_wheel_on() {
+  local py=$1 label dir
+  label=$("$py" -c 'import platform; print(platform.python_version())')
+  dir=$compat/$label
   timed "pip install the wheel (CPython $label)" "$dir/bin/pip" install --quiet \
-    --disable-pip-version-check "$wheel" -r python/requirements-compat.txt
+    --disable-pip-version-check --no-deps "$wheel"
   (
     cd python/tests
     timed "pytest (CPython $label)" "$dir/bin/python" -m pytest -q -p no:cacheprovider \
@@ -93,6 +104,23 @@ print("from the sdist:", sb.__file__, rows.shape)')
   log "sdist: $(basename "$built") built from $(basename "$sdist") and imported"
 }
 ./scripts/python-env.sh
+
+# The clean venvs of the oldest and the newest CPython, made beside the builds below (their
+# downloads and installs wait on the network and the disk); compat_pid is waited for before the
+# wheel goes into them.
+compat=$(mktemp -d)
+compat_log=$(mktemp)
+trap 'rm -rf "$compat" "$compat_log"' EXIT
+oldest=$(python_at 3.9) || missing_python "3.9 (the oldest that python/pyproject.toml allows)"
+newest_version=$(newest_python_version)
+newest=
+if [[ -n $newest_version && $newest_version != 3.9 ]]; then
+  newest=$(python_at "$newest_version")
+else
+  missing_python "newer than 3.9"
+fi
+(for py in $oldest $newest; do prepare_venv "$py"; done) >"$compat_log" 2>&1 &
+compat_pid=$!
 
 SCREWBENDER_CLI=$(timed "the CLI (the reference)" test_cli)
 export SCREWBENDER_CLI
@@ -126,28 +154,31 @@ timed "pip install the wheel" "$venv/bin/pip" install --quiet --disable-pip-vers
 module=$(cd / && "$venv/bin/python" -c 'import screwbender._screwbender as m; print(m.__file__)')
 ./scripts/check-lanes-inlined.sh "$module"
 
+# The wheel on the oldest and the newest CPython, and the sdist's build, beside the main pytest
+# (whose notebook and browser tests leave a core idle most of the time); their output follows it.
+wait "$compat_pid" || { cat "$compat_log" >&2; die "the clean venvs could not be made"; }
+(
+  for py in $oldest $newest; do
+    test_wheel_on "$py"
+  done
+  if [[ -n $newest ]]; then test_sdist_on "$newest"; fi
+) >>"$compat_log" 2>&1 &
+compat_pid=$!
+
 header "pytest python/tests"
 # From a directory outside python/, so `import screwbender` is the installed wheel and not the
 # source folder.
 cd "$REPO_ROOT/python/tests"
+rc=0
 timed "pytest" "$venv/bin/python" -m pytest -q -p no:cacheprovider \
-  --junit-xml="$REPO_ROOT/artifacts/python/pytest.xml" --rootdir="$REPO_ROOT/python/tests" .
+  --junit-xml="$REPO_ROOT/artifacts/python/pytest.xml" --rootdir="$REPO_ROOT/python/tests" . || rc=$?
 cd "$REPO_ROOT"
 
 header "the wheel on the oldest and the newest CPython, and the sdist"
-compat=$(mktemp -d)
-trap 'rm -rf "$compat"' EXIT
-oldest=$(python_at 3.9) || missing_python "3.9 (the oldest that python/pyproject.toml allows)"
-newest_version=$(newest_python_version)
-newest=
-if [[ -n $newest_version && $newest_version != 3.9 ]]; then
-  newest=$(python_at "$newest_version")
-else
-  missing_python "newer than 3.9"
-fi
-for py in $oldest $newest; do
-  test_wheel_on "$py"
-done
-[[ -n $newest ]] && test_sdist_on "$newest"
+compat_rc=0
+wait "$compat_pid" || compat_rc=$?
+cat "$compat_log" >&2
+((rc == 0)) || die "pytest python/tests failed"
+((compat_rc == 0)) || die "the wheel on the oldest or the newest CPython, or the sdist, failed"
 log "python: $(basename "$wheel") and $(basename "$sdist") built and tested" \
   "(wheel $(stat -c %s "$wheel") B, sdist $(stat -c %s "$sdist") B)"
