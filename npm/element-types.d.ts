@@ -3,8 +3,8 @@
 // scripts/element-api.mjs from the element's declarations (www/js/element/features.js and
 // the files it names): edit those, not this file. Names follow HTMLMediaElement where they
 // apply. Every member is optional here: a framework may set any of them.
-import type { MotionDocumentInput, SubdivisionOptions } from './screwbender.js';
-import type { CameraState, ScrewBenderElement } from './viewer.js';
+import type { Motion, MotionDocumentInput, SubdivisionOptions } from './screwbender.js';
+import type { CameraState, PictureOptions, ScrewBenderElement } from './viewer.js';
 
 /** A boolean attribute: present (`true`, `''`, any string but `'false'`) or absent. */
 export type BooleanAttribute = boolean | '' | 'true' | 'false';
@@ -102,7 +102,7 @@ export interface SelectDetail {
 /** The detail of `camera-change`: who moved the camera, and where it is now. */
 export interface CameraChangeDetail {
   source: 'user' | 'api';
-  camera?: CameraState;
+  camera: CameraState;
 }
 /** The detail of `time`: seconds `t` in [start, end] and the motion's parameter `u`. */
 export interface TimeDetail {
@@ -125,7 +125,7 @@ export interface ScrewBenderEvents {
   /** The playhead moved: seconds t in [start, end] and the motion's parameter u. */
   time: CustomEvent<TimeDetail>;
   /** The playhead moved (as `time`, in HTMLMediaElement's name). */
-  timeupdate: Event;
+  timeupdate: CustomEvent<TimeDetail>;
   /** Playback started. */
   play: Event;
   /** Playback stopped. */
@@ -148,6 +148,53 @@ export type ScrewBenderHandler<K extends keyof ScrewBenderEvents> = (this: Screw
 export type ScrewBenderEventProps = {
   [K in keyof ScrewBenderEvents as `on${K}`]?: (event: ScrewBenderEvents[K]) => void;
 };
+
+/** The options of mount(): the attributes (by their names) and those a script alone gives. */
+export interface ScrewBenderOptions extends ScrewBenderAttributes {
+  /** `webgl2` skips WebGPU (mount() only; without it WebGPU where the browser has a usable adapter, else WebGL2). */
+  backend?: 'webgl2';
+}
+
+/**
+ * A figure's script API: what mount() returns and what <screw-bender> has (its properties and
+ * methods). Playback follows HTMLMediaElement: times are seconds of the motion's own timing.
+ */
+export interface ScrewBenderHandle {
+  /** The options given, with the motion's subdivision options; set a partial object to change some. */
+  options: Partial<Record<keyof ScrewBenderAttributes, unknown>> & Partial<SubdivisionOptions>;
+  /** The renderer's backend, null before the start or without graphics. */
+  readonly backend: 'WebGPU' | 'WebGL2' | null;
+  /** The viewer (for tests and advanced use): camera, picking, renderer. */
+  readonly viewer: unknown;
+  /** The motion document shown (null before it loads); set to show another. */
+  document: MotionDocumentInput | object | null;
+  /** The Motion handle of the math module (read-only). */
+  readonly motion: Motion | null;
+  /** The camera; set any of its fields (fires `camera-change` with source `'api'`). Null before the start. */
+  camera: CameraState | null;
+  /** The playhead in seconds; set it to seek (works while paused; fires `seeked`). */
+  currentTime: number;
+  /** The playback interval's length in seconds (NaN before the motion loads). */
+  readonly duration: number;
+  /** True unless playing. */
+  readonly paused: boolean;
+  /** Motion seconds per real second, −100 to 100 (negative plays backwards); starts as `speed`. */
+  playbackRate: number;
+  /** An open motion wraps at its end while playing (a cycle always does); the `loop` attribute. */
+  loop: boolean;
+  /** Resolves when the figure is drawn (a lazy one: once near the viewport) or has shown its error; never rejects. */
+  readonly ready: Promise<void>;
+  /** Plays; with `repetitions` (a whole number ≥ 1), that many passes and then `ended`. */
+  play(options?: { repetitions?: number }): void;
+  /** Stops playback. */
+  pause(): void;
+  /** Shows the moving object at time `t` in seconds (the `currentTime` setter). */
+  seek(t: number): void;
+  /** A picture of the figure, drawn at the asked size. */
+  toBlob(options?: PictureOptions): Promise<Blob>;
+  /** The same picture as a data: URL (synchronous). */
+  toDataURL(options?: PictureOptions): string;
+}
 
 /** Everything a framework may set on <screw-bender>: attributes, properties and handlers. */
 export type ScrewBenderProps = ScrewBenderAttributes & ScrewBenderProperties & ScrewBenderEventProps;

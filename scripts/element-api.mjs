@@ -62,8 +62,8 @@ function elementTypes() {
 // scripts/element-api.mjs from the element's declarations (${SOURCE} and
 // the files it names): edit those, not this file. Names follow HTMLMediaElement where they
 // apply. Every member is optional here: a framework may set any of them.
-import type { MotionDocumentInput, SubdivisionOptions } from './screwbender.js';
-import type { CameraState, ScrewBenderElement } from './viewer.js';
+import type { Motion, MotionDocumentInput, SubdivisionOptions } from './screwbender.js';
+import type { CameraState, PictureOptions, ScrewBenderElement } from './viewer.js';
 
 /** A boolean attribute: present (\`true\`, \`''\`, any string but \`'false'\`) or absent. */
 export type BooleanAttribute = boolean | '' | 'true' | 'false';
@@ -100,7 +100,9 @@ export interface ScrewBenderProperties {
     out += `  ${p.name}?: ${p.ts};\n`;
   }
   out += '}\n';
-  for (const e of events.filter((e) => e.detail)) {
+  // One interface per detail type (time and timeupdate share theirs).
+  const details = [...new Map(events.filter((e) => e.detail).map((e) => [e.detail.type, e])).values()];
+  for (const e of details) {
     out += `${doc(e.detail.doc)}export interface ${e.detail.type} {\n`;
     for (const [k, t] of Object.entries(e.detail.fields)) out += `  ${k}: ${t};\n`;
     out += '}\n';
@@ -125,6 +127,19 @@ export type ScrewBenderHandler<K extends keyof ScrewBenderEvents> = (this: Screw
 export type ScrewBenderEventProps = {
   [K in keyof ScrewBenderEvents as \`on\${K}\`]?: (event: ScrewBenderEvents[K]) => void;
 };
+
+/** The options of mount(): the attributes (by their names) and those a script alone gives. */
+export interface ScrewBenderOptions extends ScrewBenderAttributes {
+${OPTIONS.filter((o) => o.attribute === false).map((o) => `${doc(o.doc, '  ')}  ${o.name}?: ${tsType(o)};\n`).join('')}}
+
+/**
+ * A figure's script API: what mount() returns and what <screw-bender> has (its properties and
+ * methods). Playback follows HTMLMediaElement: times are seconds of the motion's own timing.
+ */
+export interface ScrewBenderHandle {
+${properties.map((p) => `${doc(p.doc, '  ')}  ${p.set ? '' : 'readonly '}${p.name}: ${p.ts};\n`).join('')}${methods
+  .map((m) => `${doc(m.doc, '  ')}  ${m.name}(${m.params.map((a) => `${a.name}${a.optional ? '?' : ''}: ${a.ts}`).join(', ')}): ${m.returns};\n`)
+  .join('')}}
 
 /** Everything a framework may set on <screw-bender>: attributes, properties and handlers. */
 export type ScrewBenderProps = ScrewBenderAttributes & ScrewBenderProperties & ScrewBenderEventProps;

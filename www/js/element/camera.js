@@ -95,7 +95,7 @@ export const cameraFeature = {
       name: 'camera-change', doc: 'The camera moved, by the reader (`user`) or by code (`api`).',
       detail: {
         type: 'CameraChangeDetail', doc: 'The detail of `camera-change`: who moved the camera, and where it is now.',
-        fields: { source: '\'user\' | \'api\'', 'camera?': 'CameraState' },
+        fields: { source: '\'user\' | \'api\'', camera: 'CameraState' },
       },
     },
   ],

@@ -6,7 +6,8 @@ import { picture } from '../view/picture.js';
 const TYPES = ['image/png', 'image/jpeg', 'image/webp'];
 /** Largest picture scale (times the drawing buffer); the device's texture limit also applies. */
 const MAX_SCALE = 8;
-const PICTURE_OPTIONS = '{ type?: string; quality?: number; scale?: number; transparent?: boolean; gizmo?: boolean }';
+/** The options' type in the typings (npm/viewer.d.ts declares it, field by field). */
+const PICTURE_OPTIONS = 'PictureOptions';
 
 /**
  * A 2-D canvas of the current view of `fig`: `scale` times the drawing buffer (drawn at that

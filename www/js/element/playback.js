@@ -59,7 +59,7 @@ export const playbackFeature = {
   ],
   events: [
     { name: 'time', doc: 'The playhead moved: seconds t in [start, end] and the motion\'s parameter u.', detail: TIME_DETAIL },
-    { name: 'timeupdate', doc: 'The playhead moved (as `time`, in HTMLMediaElement\'s name).' },
+    { name: 'timeupdate', doc: 'The playhead moved (as `time`, in HTMLMediaElement\'s name).', detail: TIME_DETAIL },
     { name: 'play', doc: 'Playback started.' },
     { name: 'pause', doc: 'Playback stopped.' },
     { name: 'ended', doc: 'An open motion that does not loop reached its end.' },

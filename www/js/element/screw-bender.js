@@ -30,7 +30,10 @@ export { LAYERS } from './options.js';
 export { configure } from '../assets.js';
 
 /** The declared event types: a figure fires no other. */
-const DECLARED_EVENTS = new Set(EVENTS);
+/** Each declared event's detail fields (none: an empty detail), as the typings give them. */
+const DECLARED_EVENTS = new Map(
+  FEATURES.flatMap((f) => f.events ?? []).map((e) => [e.name, Object.keys(e.detail?.fields ?? {}).map((k) => k.replace(/\?$/, ''))]),
+);
 
 /** Options from an element's attributes (and its inline JSON child). */
 function optionsOf(el) {
@@ -66,7 +69,11 @@ export function mount(element, options = {}) {
  */
 const emitter = (target) => (type, detail) => {
   // An event no feature declares would be missing from the typings and the manifest.
-  if (!DECLARED_EVENTS.has(type)) throw new Error(`the figure fires "${type}", which no feature declares (element/features.js)`);
+  const fields = DECLARED_EVENTS.get(type);
+  if (!fields) throw new Error(`the figure fires "${type}", which no feature declares (element/features.js)`);
+  // A detail field the declaration lacks would be missing from the typings too.
+  const extra = Object.keys(detail ?? {}).filter((k) => !fields.includes(k));
+  if (extra.length) throw new Error(`the figure's "${type}" event carries ${extra.join(', ')}, which its declaration lacks`);
   target.dispatchEvent(new CustomEvent(type, { detail, bubbles: type === 'change' }));
 };
 
