@@ -194,7 +194,7 @@ if [[ ${VIEWER:-1} == 1 ]]; then
   rm -rf "$viewer/js" "$viewer/css"
   header "viewer: sources"
   mkdir -p "$viewer/js" "$viewer/css"
-  # The element and the view it is built on (www/js/element/, www/js/view/), bundled by esbuild
+  # The element and the view it is built on (www/js/element/, www/js/figure/), bundled by esbuild
   # (Vite's) into one minified module, viewer/js/screw-bender.js, with the share-link decoder in
   # a chunk of its own (share-link.js beside it, imported only for a `share` payload): a figure
   # downloads all of them, and one file gzips smaller than the files one by one. The bundle sits

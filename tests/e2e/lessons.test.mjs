@@ -203,7 +203,7 @@ test('schema.json names what the page accepts; index.json lists every lesson', a
   const page_ = await page.evaluate(async () => {
     const wasm = await window.screwbender.app.analysis();
     const fmt = await import('./js/lessons/format.js');
-    const { VIEW_IDS } = await import('./js/views/index.js');
+    const { VIEW_IDS } = await import('./js/dock/index.js');
     return {
       scenes: wasm.presets().map((s) => s.id),
       views: VIEW_IDS,

@@ -29,7 +29,7 @@ after(async () => {
   await play?.close();
 });
 
-/** The light and dark backgrounds as displayed (www/js/view/slots.js BACKGROUND), 0..255. */
+/** The light and dark backgrounds as displayed (www/js/figure/slots.js BACKGROUND), 0..255. */
 const LIGHT = [232, 236, 241];
 const DARK = [27, 31, 39];
 /** Per-channel tolerance on a background pixel (8-bit rounding, the encoders). */

@@ -343,7 +343,7 @@ test(`${BACKEND}: the Top view frames the poses below the header, above the time
     await waitFrames(page, 2);
     const g = await sb(async () => {
       const { app } = window.screwbender;
-      const { toPage } = await import('./js/view/picking.js');
+      const { toPage } = await import('./js/figure/picking.js');
       // The body points' trajectories (what the view draws of the motion), 120 samples each.
       const traj = [];
       for (const b of app.bodyPoints()) {

@@ -1,5 +1,5 @@
 // e2e-backends: webgpu (computed on the CPU, the same on either backend: once)
-// End-to-end tests of the teaching views of the analysis dock (www/js/views/axes.js, steps.js,
+// End-to-end tests of the teaching views of the analysis dock (www/js/dock/axes.js, steps.js,
 // polygon.js, frame.js) in headless Chromium:
 //
 //   E2E_BACKEND=webgpu|webgl2 node --test tests/e2e/teaching.test.mjs

@@ -17,7 +17,7 @@ let problems;
 /** A blank page (no content security policy) where the videos are played. */
 let blank;
 
-/** The light background as displayed (www/js/view/slots.js BACKGROUND), 0..255. */
+/** The light background as displayed (www/js/figure/slots.js BACKGROUND), 0..255. */
 const LIGHT = [232, 236, 241];
 
 before(async () => {

@@ -2,7 +2,7 @@
 // display settings, playback, the selection, the imported mesh): the rest of the page reads it
 // and changes it only through the App's commands (editor/commands.js, each one labelled undo
 // step: `app.run(name, …)`) and setters,
-// and follows it through `app.on(topic, fn)`. It runs the 3-D view (view/viewer.js) with that
+// and follows it through `app.on(topic, fn)`. It runs the 3-D view (figure/viewer.js) with that
 // state as the view's model, and puts the editor around it: panel, toolbar and timeline
 // (editor/ui.js), the analysis dock (editor/dock.js) and the parts below.
 //
@@ -14,7 +14,7 @@
 //
 // The first frame needs only the renderer's wasm module (editor/modules.js): the dock, its views
 // and the analysis module are fetched when a view is first opened (editor/dock-host.js).
-import { Viewer } from './view/viewer.js';
+import { Viewer } from './figure/viewer.js';
 import { buildUi } from './editor/ui.js';
 import { renderModule, glModule, analysisModule } from './editor/modules.js';
 import notices from './editor/notices.js';
@@ -59,7 +59,7 @@ const DEFAULT_SCENE = 'l_cycle_rotated';
  */
 
 /**
- * Playback (app.anim; view/viewer.js advances it while playing): u the parameter shown, t its
+ * Playback (app.anim; figure/viewer.js advances it while playing): u the parameter shown, t its
  * time in seconds (unknown until derived from u: tu is the u that t belongs to).
  * @typedef {object} Playback
  * @property {boolean} playing
@@ -132,7 +132,7 @@ export class App {
     theme: 'auto',
     dock: '',
   };
-  /** @type {Playback} (t is unknown until the first motion: view/viewer.js playTime derives it from u) */
+  /** @type {Playback} (t is unknown until the first motion: figure/viewer.js playTime derives it from u) */
   #anim = { playing: false, u: 0, t: undefined, tu: undefined, speed: 1, loop: true, visible: false };
   #selected = -1;
   /** @type {'translate' | 'rotate'} */
@@ -193,9 +193,9 @@ export class App {
   }
 
   /**
-   * The model the viewer draws (view/viewer.js): the same state, with playback writable, since
+   * The model the viewer draws (figure/viewer.js): the same state, with playback writable, since
    * the viewer's frame loop is what advances the playhead.
-   * @returns {import('./view/viewer.js').Model}
+   * @returns {import('./figure/viewer.js').Model}
    */
   viewerModel() {
     const app = this;
@@ -275,7 +275,7 @@ export class App {
   /**
    * Sets playback fields (u, speed, loop, visible; `playing` only as a flag, as a chart's
    * preview pauses: `setPlaying` starts and stops playback) without drawing; `updateAnim` or
-   * `seekTime` shows them. The time in seconds follows a new u by itself (view/viewer.js playTime);
+   * `seekTime` shows them. The time in seconds follows a new u by itself (figure/viewer.js playTime);
    * `t: undefined` forgets it also where u stays.
    * @param {Partial<Pick<Playback, 'u' | 't' | 'speed' | 'loop' | 'visible' | 'playing'>>} patch
    */

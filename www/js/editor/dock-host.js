@@ -10,7 +10,7 @@ const loadDockModule = lazy('the analysis dock', (a) => import(a ? `./dock.js?re
 // The views' charts are uPlot's: its stylesheet comes with them.
 const loadViewModules = lazy('the analysis views', async (a) => {
   const [views] = await Promise.all([
-    import(a ? `../views/index.js?retry=${a}` : '../views/index.js').then((m) => m.loadViews(a)),
+    import(a ? `../dock/index.js?retry=${a}` : '../dock/index.js').then((m) => m.loadViews(a)),
     stylesheet(new URL('../../vendor/uPlot.min.css', import.meta.url)),
   ]);
   return views;

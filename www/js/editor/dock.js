@@ -1,6 +1,6 @@
 // The analysis dock: a tabbed panel of teaching and analysis views beside the 3-D view.
 //
-// A view module (www/js/views/*.js) default-exports a descriptor
+// A view module (www/js/dock/*.js) default-exports a descriptor
 //   { id, title, hint, live, create(app, el, wasm) => instance }
 // where `el` is the view's own <section> (the view owns everything inside it), `wasm` the
 // analysis module (the initialised wasm-bindgen module with the teaching and comparison
@@ -11,7 +11,7 @@
 // options or the view settings (reason 'edit'), during drags (reason 'drag', only for views
 // with `live: true`; the Motion then already holds the dragged pose), and when the view is
 // shown (reason 'show'). `show(false)` must remove the view's 3-D overlays (its LAYER / SLOT
-// entries of view/slots.js), so a hidden view costs nothing. No inline `style` attributes in
+// entries of figure/slots.js), so a hidden view costs nothing. No inline `style` attributes in
 // markup (the page's CSP refuses them): set styles through `element.style`, or give colour
 // swatches a `data-color` attribute.
 //
@@ -19,10 +19,10 @@
 // tab is always in the row); arrow keys move between views in the tab list. While the dock
 // covers part of the window, the 3-D view's canvas takes the largest free part beside it, less
 // the toolbar where the toolbar stands in that part (fitView: phones on their side), so the
-// scene is framed where it can be seen. Charts (views/plot.js) get their
+// scene is framed where it can be seen. Charts (dock/plot.js) get their
 // playhead from playback, and hovering a chart shows that instant's pose (preview).
 /**
- * An analysis view of the dock: a module's default export in www/js/views/ (the contract above).
+ * An analysis view of the dock: a module's default export in www/js/dock/ (the contract above).
  * @typedef {object} DockView
  * @property {string} id
  * @property {string} title
@@ -40,14 +40,14 @@
  * @property {(step: number) => void} [goTo] the steps view: show step `step`
  */
 
-import { setPlayheadSource } from '../views/plot.js';
+import { setPlayheadSource } from '../dock/plot.js';
 import { without, stage } from './rects.js';
 
 /** The smallest free part of the window (CSS px) the 3-D view moves into beside the dock. */
 const MIN_FREE = { width: 200, height: 100 };
 
 export class Dock {
-  /** `views`: the view descriptors in tab order (views/index.js loadViews); `wasm`: the analysis module. */
+  /** `views`: the view descriptors in tab order (dock/index.js loadViews); `wasm`: the analysis module. */
   constructor(app, views, wasm) {
     this.app = app;
     this.wasm = wasm;

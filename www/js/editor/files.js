@@ -6,8 +6,8 @@
 // (Motion.exportFile, importMotionFile), so a file written here equals the CLI's. Every import
 // is one undoable edit, and a failed one changes nothing. The functions take the app; the
 // default export is the app's part (see app.js for the part contract).
-import { IMPORT_SIZE, BUNNY_PRESET, fetchBunny } from '../view/drawing.js';
-import { SLOT } from '../view/slots.js';
+import { IMPORT_SIZE, BUNNY_PRESET, fetchBunny } from '../figure/drawing.js';
+import { SLOT } from '../figure/slots.js';
 import { MAX_SAVED_MESH } from './session.js';
 import { SESSION_VERSION } from '../share-link.js';
 import { askReduction, MANY_POSES } from './reduce-dialog.js';

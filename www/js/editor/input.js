@@ -1,12 +1,12 @@
-// Editing with the pointer and the keyboard. The viewer turns the camera itself (view/pointer.js);
+// Editing with the pointer and the keyboard. The viewer turns the camera itself (figure/pointer.js);
 // this part is its `tool`: a press on a handle selects the pose, a press on a gizmo part (or a
 // handle) drags the pose, hovering highlights what a press would grab. Keys are the editor's
 // shortcuts (listed in the help overlay of index.html); they act only while the canvas or the
 // page itself has the focus, never inside a control. The part contract is in app.js.
 import { qaxis, qmul, qnormalize } from '../math.js';
-import { SNAP_ROTATE, SNAP_TRANSLATE, gizmoAxes } from '../view/gizmo.js';
-import { pickPoses } from '../view/picking.js';
-import { beginPoseDrag, dragTarget, hoverPoseTool, redrawPoseDrag, setDragPose } from '../view/pose-drag.js';
+import { SNAP_ROTATE, SNAP_TRANSLATE, gizmoAxes } from '../figure/gizmo.js';
+import { pickPoses } from '../figure/picking.js';
+import { beginPoseDrag, dragTarget, hoverPoseTool, redrawPoseDrag, setDragPose } from '../figure/pose-drag.js';
 
 /** @type {import('../app.js').Part} */
 export default {

@@ -3,7 +3,7 @@
 //
 // PNG: the view drawn again at 1× or 2× its drawing buffer (2× is drawn at twice the size, lines
 // twice as wide, not scaled up) and copied in the same task (Viewer.snapshot: a WebGPU canvas is
-// readable only until its frame is presented); a transparent background as view/picture.js
+// readable only until its frame is presented); a transparent background as figure/picture.js
 // makes it.
 //
 // Video: one cycle of the motion at FPS frames per second of the motion's own time (the
@@ -22,7 +22,7 @@
 // draw the pose numbers (page elements over the view, not part of its frames) when they are
 // shown.
 import { download } from './files.js';
-import { picture } from '../view/picture.js';
+import { picture } from '../figure/picture.js';
 
 /** The muxer, fetched with the first video (it is not needed for the page's first frame). */
 const loadMuxer = () => import('../../vendor/mediabunny.min.mjs');
@@ -75,7 +75,7 @@ export function fileBase(title) {
 
 /**
  * The motion's playback for the recorder: its duration in seconds (the timeline's interval) and
- * show(t), the object at t seconds from the start (app.seekTime, view/viewer.js).
+ * show(t), the object at t seconds from the start (app.seekTime, figure/viewer.js).
  */
 function cycle(app) {
   const { start, end } = app.viewer.playhead();

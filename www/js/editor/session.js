@@ -4,7 +4,7 @@
 //
 // The pure helpers (History, storage) come first (the hash coding is ../share-link.js); the part (default export, see
 // app.js for the part contract) applies sessions to the app and records its edits.
-import { SLOT } from '../view/slots.js';
+import { SLOT } from '../figure/slots.js';
 import { SESSION_VERSION, decodeHash, encodeHash } from '../share-link.js';
 /** Undo steps kept. */
 export const MAX_UNDO = 200;

@@ -23,7 +23,7 @@ const OFFLINE_INFO = 'pkg-offline/figure.json';
 const SLOT_FIGURE = '<!--screwbender:figure-->';
 const SLOT_TITLE = '<!--screwbender:title-->';
 const SLOT_BUNNY = '<!--screwbender:bunny-->';
-/** The preset whose object is the Stanford bunny (view/drawing.js), and where its mesh is. */
+/** The preset whose object is the Stanford bunny (figure/drawing.js), and where its mesh is. */
 const BUNNY_PRESET = 'bunny6';
 const BUNNY_URL = 'vendor/bunny.obj';
 /** What the Web page form gives (more is said when the object shown is not the bar). */

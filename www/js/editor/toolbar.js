@@ -1,6 +1,6 @@
 // The toolbar: gizmo mode, insert / delete, undo / redo, frame, help, snap, the dock's button,
 // and the View menu's Share entry; its buttons show the state (pressed, disabled).
-import { VIEW_IDS } from '../views/index.js';
+import { VIEW_IDS } from '../dock/index.js';
 import { openShare } from './modules.js';
 
 /**

@@ -1,5 +1,5 @@
 // Where the 3-D view looks from and how it fills the screen: the named camera views (front, top,
-// side, iso: view/camera.js CAMERA_PRESETS), the orthographic projection, fullscreen, and the
+// side, iso: figure/camera.js CAMERA_PRESETS), the orthographic projection, fullscreen, and the
 // toolbar's View menu that holds them with the theme toggle (editor/theme.js) and the picture
 // exports (editor/media.js, which binds its entries after this part). Keys, with the
 // view focused: Shift+F / Shift+T / Shift+S / Shift+I the named views, O orthographic

@@ -31,7 +31,7 @@
 //     'check'   the exercise of step `step` was checked: `ok`, `answer` (the chosen answer or
 //               null), `results` (checks.js)
 //     'finish'  the summary after the last step is shown: `solved`, `total`
-import { VIEW_IDS } from '../views/index.js';
+import { VIEW_IDS } from '../dock/index.js';
 import { hasParams, lessonVariant, parseLesson } from './format.js';
 import { isSeed, newSeed } from './variants.js';
 import { readProgress, writeProgress, markTourSeen, tourSeen } from './progress.js';

@@ -10,7 +10,7 @@
 // student (the lesson player; the progress a student had under the lesson's id is put back
 // after it), the .json file, the lesson link (lessons/link.js), and a SCORM
 // package (package-dialog.js).
-import { VIEW_IDS } from '../../views/index.js';
+import { VIEW_IDS } from '../../dock/index.js';
 import { History } from '../../editor/session.js';
 import { applyStep } from '../apply.js';
 import { el } from '../dom.js';

@@ -1,8 +1,8 @@
 // Pointing a step's highlight by clicking what it should point at: the next press on the page
 // names it — a gizmo part of the selected pose or a pose's handle in the 3-D view (the view's own
-// picking, view/picking.js), a control of the panel by its label, or any other page element by
+// picking, figure/picking.js), a control of the panel by its label, or any other page element by
 // its id — instead of being pressed. Esc, or a press on the editor itself, cancels.
-import { gizmoHit, local, pickPose } from '../../view/picking.js';
+import { gizmoHit, local, pickPose } from '../../figure/picking.js';
 
 /**
  * What a press at event `e` points at, as a step's highlight ({gizmo}, {pose}, {panel},

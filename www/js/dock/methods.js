@@ -2,7 +2,7 @@
 // (trajectories of the body points in distinct colours), their metrics side by side, and for
 // Ramamoorthi–Barr the variable frames and the Euler–Lagrange error before/after optimisation;
 // for Chaudhry–Cameron the triangle's vertices x/y/z against time, with end condition (18) or (19).
-import { LAYER, Segments, track, poseOf } from '../view/slots.js';
+import { LAYER, Segments, track, poseOf } from '../figure/slots.js';
 import { hexLinear, poseMatrix, add, scale } from '../math.js';
 import { lineChart, fmt } from './plot.js';
 import { el } from './dom.js';

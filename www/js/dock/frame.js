@@ -4,7 +4,7 @@
 // same rules on rotation-only poses; crates/screwbender/src/subdivision/componentwise.rs). The trajectories of the same body
 // points are drawn: the screw ones do not move when c changes, the decoupled ones do.
 import { el as h } from './dom.js';
-import { LAYER, Segments, poseOf } from '../view/slots.js';
+import { LAYER, Segments, poseOf } from '../figure/slots.js';
 import { add, sub, length, qrot, hexLinear } from '../math.js';
 
 /** The wasm functions of this view, from the analysis module the dock hands to create(). */

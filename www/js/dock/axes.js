@@ -3,7 +3,7 @@
 // (right-hand rule), and listed with angle, slide, pitch and kind. Hovering a row highlights that
 // span's axis and labels it in the 3-D view.
 import { el as h } from './dom.js';
-import { LAYER, Segments, mix, poseOf } from '../view/slots.js';
+import { LAYER, Segments, mix, poseOf } from '../figure/slots.js';
 import { add, sub, scale, cross, normalize, length, hexLinear } from '../math.js';
 
 /** The wasm functions of this view, from the analysis module the dock hands to create(). */

@@ -2,7 +2,7 @@
 // a level, (a) the split — the screw midpoint of every span inserted — then (b) the tweak of each
 // pose, drawn as arrows from before to after (origins), with the object before the tweak (pale
 // ghosts) and after it. The core's splitTweakStep computes both (crates/screwbender/src/subdivision/split_tweak.rs).
-import { LAYER, SLOT, Segments, instances, matricesOf, poseOf } from '../view/slots.js';
+import { LAYER, SLOT, Segments, instances, matricesOf, poseOf } from '../figure/slots.js';
 import { add, sub, scale, cross, normalize, length, hexLinear } from '../math.js';
 
 /** The wasm functions of this view, from the analysis module the dock hands to create(). */
