@@ -38,7 +38,7 @@ async function open(route) {
 
 const LATER = [
   /^\/pkg-full\//,
-  /^\/js\/dock\/(?!index\.js|dom\.js)/,
+  /^\/js\/dock\/(?!index\.js)/,
   /^\/js\/editor\/dock\.js/,
   /uPlot\.(esm\.js|min\.css)$/,
   // The lesson player (all of js/lessons/ but progress.js, which says whether the tour is due), its

@@ -2,7 +2,7 @@
 // its axis in 3-D with a colour gradient and arrow ticks pointing along the rotation direction
 // (right-hand rule), and listed with angle, slide, pitch and kind. Hovering a row highlights that
 // span's axis and labels it in the 3-D view.
-import { el as h } from './dom.js';
+import { el as h } from '../dom.js';
 import { LAYER, Segments, mix, poseOf } from '../figure/slots.js';
 import { add, sub, scale, cross, normalize, length, hexLinear } from '../math.js';
 

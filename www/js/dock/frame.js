@@ -3,7 +3,7 @@
 // and subdivided twice — by screws, and decoupled (origins by the point rule, rotations by the
 // same rules on rotation-only poses; crates/screwbender/src/subdivision/componentwise.rs). The trajectories of the same body
 // points are drawn: the screw ones do not move when c changes, the decoupled ones do.
-import { el as h } from './dom.js';
+import { el as h } from '../dom.js';
 import { LAYER, Segments, poseOf } from '../figure/slots.js';
 import { add, sub, length, qrot, hexLinear } from '../math.js';
 

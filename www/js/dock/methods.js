@@ -5,7 +5,7 @@
 import { LAYER, Segments, track, poseOf } from '../figure/slots.js';
 import { hexLinear, poseMatrix, add, scale } from '../math.js';
 import { lineChart, fmt } from './plot.js';
-import { el } from './dom.js';
+import { el } from '../dom.js';
 
 /** The wasm functions of this view, from the analysis module the dock hands to create(). */
 let listMethods;

@@ -1,7 +1,7 @@
 // Metrics view: smoothness and fidelity numbers of the current motion (its scheme, rules and
 // levels), measured on the refined poses, for the body points of the object.
 import { fmt } from './plot.js';
-import { el } from './dom.js';
+import { el } from '../dom.js';
 
 /** Human names of the schemes and rule sets (the panel's words). */
 export const SCHEME_NAMES = { bspline: 'cubic B-spline', fourpoint: '4-point', jarek: 'Jarek', j: 'J_s', polyscrew: 'polyscrew' };

@@ -4,7 +4,7 @@
 // velocities live in the Motion (its document, the session, share links, undo); 3-D playback,
 // the timeline, the Plots view and glTF / CSV export all follow them.
 import { lineChart, fmt } from './plot.js';
-import { el } from './dom.js';
+import { el } from '../dom.js';
 
 /** The wasm functions of this view, from the analysis module the dock hands to create(). */
 let timingMap;

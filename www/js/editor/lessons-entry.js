@@ -6,7 +6,7 @@
 // Lessons button; the player's own button takes its place once the player has started.
 import { lazy, stylesheet } from './modules.js';
 import { tourSeen } from '../lessons/progress.js';
-import { el } from '../dock/dom.js';
+import { el } from '../dom.js';
 
 /**
  * Sets up the lessons of `app`, whose first frame `ready` resolves to. Returns `player()`: a

@@ -5,7 +5,7 @@
 // its container's scrolling hides (the panel, a toolbar kept to one row) is scrolled into view,
 // and a button that something still covers is offered on the card as a button standing in for
 // it.
-import { el } from './dom.js';
+import { el } from '../dom.js';
 import { foldPanelOnSmallScreens } from '../editor/fold.js';
 
 /**
@@ -117,10 +117,10 @@ export function createHighlight(app, { card, proxy }) {
       return;
     }
     const name = node.getAttribute('aria-label') || node.querySelector('span')?.textContent || node.textContent.trim() || node.title;
-    const b = el('button', 'use', name);
+    const b = el('button', { class: 'use' }, name);
     b.title = node.title;
     b.addEventListener('click', () => node.click());
-    proxy.replaceChildren(el('span', '', 'Use here: '), b);
+    proxy.replaceChildren(el('span', {}, 'Use here: '), b);
     proxy.hidden = false;
   }
 
