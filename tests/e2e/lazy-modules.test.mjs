@@ -120,7 +120,7 @@ test(`${BACKEND}: a module that cannot load is named, and the editor works on`, 
   await page.evaluate(() => {
     const { app } = window.screwbender;
     app.select(1);
-    app.edit(() => app.motion.setPose(1, { origin: [0.5, 0.25, 0], rotation: [1, 0, 0, 0] }));
+    app.parts.session.edit(() => app.motion.setPose(1, { origin: [0.5, 0.25, 0], rotation: [1, 0, 0, 0] }));
   });
   const moved = await page.evaluate(() => Array.from(window.screwbender.poses()));
   assert.deepEqual(moved.slice(7, 10), [0.5, 0.25, 0]);

@@ -38,7 +38,7 @@ class MetricsView {
   update() {
     const app = this.app;
     const m = app.motion;
-    const points = app.bodyPoints().slice(0, 4);
+    const points = app.viewer.bodyPoints().slice(0, 4);
     const t0 = performance.now();
     const { row, fourPointGap } = m.motionMetrics(points);
     const ms = performance.now() - t0;

@@ -180,7 +180,7 @@ class PlotsView {
     if (p.every(Number.isFinite)) {
       this.point = p;
       this.update('edit');
-    } else this.app.showError('Plots: the body point needs three numbers.');
+    } else this.app.parts.notices.show('Plots: the body point needs three numbers.');
   }
 
   /** Sets the body point (tests). */

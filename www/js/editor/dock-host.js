@@ -55,7 +55,7 @@ export default {
         const [{ Dock }, views, analysis] = await Promise.all([loadDockModule(), loadViewModules(), app.analysis()]);
         app.dock = new Dock(app, views, analysis);
       } catch (e) {
-        app.showError(`${e.message}. The editor works on without the analysis views.`);
+        app.parts.notices.show(`${e.message}. The editor works on without the analysis views.`);
         app.updateView({ dock: '' });
         wanted = '';
         app.ui?.refresh();
@@ -76,14 +76,14 @@ export default {
         if (wasOpen !== !!dock.active) {
           foldPanel(!!dock.active);
           app.viewer.invalidateSize();
-          app.frameAll();
+          app.parts.viewpoint.fit();
         }
         app.updateView({ dock: id || '' });
       } catch (e) {
         app.updateView({ dock: '' });
-        app.showError(e.message);
+        app.parts.notices.show(e.message);
       }
-      app.autosave();
+      app.parts.session.autosave();
       app.ui?.refresh();
       return inst;
     }

@@ -70,8 +70,8 @@ export function createHighlight(app, { card, proxy }) {
     }
     let p = null;
     try {
-      if (target.pose !== undefined && target.pose < app.motion.poseCount) p = app.screenOfPose(target.pose);
-      if (target.gizmo !== undefined && app.selected >= 0) p = app.screenOfGizmo(target.gizmo);
+      if (target.pose !== undefined && target.pose < app.motion.poseCount) p = app.viewer.screenOfPose(target.pose);
+      if (target.gizmo !== undefined && app.selected >= 0) p = app.viewer.screenOfGizmo(target.gizmo);
     } catch {
       p = null;
     }

@@ -48,7 +48,7 @@ export function createMenu(app, { open, openText, current }) {
       (await packageDialog).open();
     } catch (e) {
       packageDialog = null;
-      app.showError(`Could not load the package dialog (${e.message}).`);
+      app.parts.notices.show(`Could not load the package dialog (${e.message}).`);
     }
   });
   mrow.append(chooseBtn, pasteBtn, mclose);
@@ -85,7 +85,7 @@ export function createMenu(app, { open, openText, current }) {
       if (!r.ok) throw new Error(`HTTP ${r.status}`);
       index = await r.json();
     } catch (e) {
-      app.showError(`Could not load the list of lessons (${e.message}).`);
+      app.parts.notices.show(`Could not load the list of lessons (${e.message}).`);
       index = { lessons: [] };
     }
     return index;
@@ -114,7 +114,7 @@ export function createMenu(app, { open, openText, current }) {
   }
 
   async function openFile(file) {
-    if (file.size > MAX_LESSON_BYTES) return app.showError(`${file.name} is too large for a lesson (${file.size} bytes). Nothing was changed.`, 'error', 'lesson');
+    if (file.size > MAX_LESSON_BYTES) return app.parts.notices.show(`${file.name} is too large for a lesson (${file.size} bytes). Nothing was changed.`, 'error', 'lesson');
     openText(await file.text(), file.name);
   }
 
@@ -146,7 +146,7 @@ export function createMenu(app, { open, openText, current }) {
   // the page (inside a control keys keep their own meaning); Esc closes the menu from anywhere.
   window.addEventListener('keydown', (e) => {
     const t = e.target;
-    const onPage = !t || t === app.canvas || t === document.body || t === document.documentElement;
+    const onPage = !t || t === app.viewer.canvas || t === document.body || t === document.documentElement;
     if (e.key === 'Escape' && !menu.hidden) menu.hidden = true;
     else if (onPage && (e.key === 'l' || e.key === 'L') && !e.ctrlKey && !e.metaKey && !e.altKey) {
       if (menu.hidden) openMenu();

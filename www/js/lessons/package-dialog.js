@@ -147,7 +147,7 @@ export function createPackageDialog(app, current) {
       if (!r.ok) throw new Error(`HTTP ${r.status}`);
       index = await r.json();
     } catch (e) {
-      return app.showError(`Could not load the list of lessons (${e.message}).`);
+      return app.parts.notices.show(`Could not load the list of lessons (${e.message}).`);
     }
     const lessons = index.lessons ?? [];
     const now = current();

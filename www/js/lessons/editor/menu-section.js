@@ -54,7 +54,7 @@ export function createWriteSection(app, { hideMenu, pasted, player }) {
       return await editor;
     } catch (e) {
       editor = null;
-      app.showError(`Could not load the lesson editor (${e.message}).`);
+      app.parts.notices.show(`Could not load the lesson editor (${e.message}).`);
       return null;
     }
   }
@@ -131,13 +131,13 @@ export function createWriteSection(app, { hideMenu, pasted, player }) {
   });
   pasteBtn.addEventListener('click', async () => {
     const text = pasted().trim();
-    if (!text) return app.showError('Paste a lesson file or a lesson link into the field first.', 'warn', 'lesson');
+    if (!text) return app.parts.notices.show('Paste a lesson file or a lesson link into the field first.', 'warn', 'lesson');
     let lesson = text;
     if (!text.startsWith('{')) {
       try {
         lesson = (await linkModule()).lessonFromLink(text);
       } catch (e) {
-        return app.showError(`The pasted text is neither a lesson file nor a lesson link: ${e.message}.`, 'error', 'lesson');
+        return app.parts.notices.show(`The pasted text is neither a lesson file nor a lesson link: ${e.message}.`, 'error', 'lesson');
       }
     }
     const ed = await getEditor();
@@ -162,6 +162,6 @@ export async function openLinkedLesson(app, openText, ready) {
   try {
     openText((await linkModule()).lessonFromLink(location.hash), 'from the link', { resume: true });
   } catch (e) {
-    app.showError(`This page's lesson link cannot be opened: ${e.message}.`, 'error', 'lesson');
+    app.parts.notices.show(`This page's lesson link cannot be opened: ${e.message}.`, 'error', 'lesson');
   }
 }

@@ -318,7 +318,7 @@ export function createLessonEditor(app, player) {
     app.emit('layout');
     requestAnimationFrame(() => {
       app.viewer.invalidateSize();
-      app.frameAll();
+      app.parts.viewpoint.fit();
     });
   }
 

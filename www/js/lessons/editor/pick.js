@@ -12,7 +12,7 @@ import { gizmoHit, local, pickPose } from '../../figure/picking.js';
  */
 export function targetOf(app, e) {
   const t = /** @type {Element} */ (e.target);
-  if (t === app.canvas || t?.id === 'view') {
+  if (t === app.viewer.canvas || t?.id === 'view') {
     const pt = local(app.viewer, e);
     const part = gizmoHit(app.viewer, pt);
     if (part && part !== 'view') return { gizmo: part };
