@@ -207,7 +207,7 @@ if [[ ${VIEWER:-1} == 1 ]]; then
   # The Stanford bunny of the bunny6 preset (viewer.js names it), with its origin and terms;
   # fetched only when a figure shows that preset.
   mkdir -p "$viewer/vendor"
-  cp www/vendor/bunny.obj www/vendor/bunny.NOTICE "$viewer/vendor/"
+  cp crates/screwbender/assets/bunny.obj crates/screwbender/assets/bunny.NOTICE "$viewer/vendor/"
   # The figure's stylesheet too (its comments are for readers of www/css/).
   "$REPO_ROOT/node_modules/.bin/esbuild" "$viewer/css/screw-bender.css" --minify --log-level=warning --outfile="$viewer/css/screw-bender.css.min"
   mv "$viewer/css/screw-bender.css.min" "$viewer/css/screw-bender.css"
