@@ -9,8 +9,7 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../scripts/lib.sh"
 cd "$REPO_ROOT"
 www_lock
-if [[ ! -f www/pkg-webgpu/screwbender_bg.wasm || ! -f www/pkg-gl/screwbender_bg.wasm ||
-  ! -f www/vendor/bunny.obj ]]; then
+if [[ ! -f www/pkg-webgpu/screwbender_bg.wasm || ! -f www/pkg-gl/screwbender_bg.wasm ]]; then
   www_unlock
   BUILD_ONLY=1 scripts/serve.sh
   www_lock

@@ -194,7 +194,7 @@ if [[ ${VIEWER:-1} == 1 ]]; then
   rm -rf "$viewer/js" "$viewer/css"
   header "viewer: sources"
   mkdir -p "$viewer/js" "$viewer/css"
-  # The element and the view it is built on (www/js/element/, www/js/view/), bundled by esbuild
+  # The element and the view it is built on (www/js/element/, www/js/figure/), bundled by esbuild
   # (Vite's) into one minified module, viewer/js/screw-bender.js, with the share-link decoder in
   # a chunk of its own (share-link.js beside it, imported only for a `share` payload): a figure
   # downloads all of them, and one file gzips smaller than the files one by one. The bundle sits
@@ -207,7 +207,7 @@ if [[ ${VIEWER:-1} == 1 ]]; then
   # The Stanford bunny of the bunny6 preset (viewer.js names it), with its origin and terms;
   # fetched only when a figure shows that preset.
   mkdir -p "$viewer/vendor"
-  cp www/vendor/bunny.obj www/vendor/bunny.NOTICE "$viewer/vendor/"
+  cp crates/screwbender/assets/bunny.obj crates/screwbender/assets/bunny.NOTICE "$viewer/vendor/"
   # The figure's stylesheet too (its comments are for readers of www/css/).
   "$REPO_ROOT/node_modules/.bin/esbuild" "$viewer/css/screw-bender.css" --minify --log-level=warning --outfile="$viewer/css/screw-bender.css.min"
   mv "$viewer/css/screw-bender.css.min" "$viewer/css/screw-bender.css"

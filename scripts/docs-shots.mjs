@@ -49,10 +49,10 @@ function denseCsv(n) {
 async function timedLCycle(page) {
   await page.evaluate(async (times) => {
     const { app } = window.screwbender;
-    app.setTimes(times);
-    app.setVelocities([null, 0.25, null, null, null, null]);
-    await app.openView('timing');
-    app.seekTime(3.5);
+    app.run('setTimes', times);
+    app.run('setVelocities', [null, 0.25, null, null, null, null]);
+    await app.parts.dockHost.open('timing');
+    app.viewer.seekTime(3.5);
   }, TIMELINE_TIMES);
   await page.evaluate(() => window.screwbender.flushViews());
 }
@@ -92,7 +92,7 @@ const SCENES = [
       await page.click('#m-ortho');
       await page.click('[data-camera=top]');
       await page.keyboard.press('Escape');
-      await page.evaluate(() => window.screwbender.app.frameAll());
+      await page.evaluate(() => window.screwbender.app.parts.viewpoint.fit());
     },
   },
   {
@@ -111,7 +111,7 @@ const SCENES = [
     },
   },
   { name: 'analysis-1280', viewport: LAPTOP, preset: 'l_cycle_rotated', view: 'plots' },
-  { name: 'analysis-dark-1280', viewport: LAPTOP, preset: 'l_cycle_rotated', theme: 'dark', view: 'plots', actions: (page) => page.evaluate(() => window.screwbender.app.seekTime(2.5)) },
+  { name: 'analysis-dark-1280', viewport: LAPTOP, preset: 'l_cycle_rotated', theme: 'dark', view: 'plots', actions: (page) => page.evaluate(() => window.screwbender.app.viewer.seekTime(2.5)) },
   { name: 'analysis-390', viewport: PHONE, preset: 'l_cycle_rotated', view: 'plots' },
   { name: 'analysis-dark-390', viewport: PHONE, preset: 'l_cycle_rotated', theme: 'dark', view: 'plots' },
   {
@@ -134,8 +134,8 @@ const SCENES = [
     actions: async (page) => {
       await timedLCycle(page);
       await page.evaluate(() => {
-        window.screwbender.app.openView('');
-        window.screwbender.app.frameAll();
+        window.screwbender.app.parts.dockHost.open('');
+        window.screwbender.app.parts.viewpoint.fit();
       });
     },
   },
@@ -176,7 +176,7 @@ async function shoot(browser, url, backend, scene, out) {
       ({ page } = await openPage(context, url, backend));
       await page.evaluate(({ preset, theme, view }) => {
         const { app } = window.screwbender;
-        if (preset) app.loadPreset(preset);
+        if (preset) app.run('loadPreset', preset);
         if (theme) app.updateView({ theme });
         if (view) window.screwbender.openView(view);
       }, { preset: scene.preset, theme: scene.theme, view: scene.view });

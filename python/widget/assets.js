@@ -9,7 +9,7 @@ import initGl, * as glueGl from '../../www/pkg-gl/screwbender.js';
 import bytes from '../../www/pkg-webgpu/screwbender_bg.wasm';
 import bytesGl from '../../www/pkg-gl/screwbender_bg.wasm';
 import css from '../../www/css/screw-bender.css';
-import bunny from '../../www/vendor/bunny.obj';
+import bunny from '../../crates/screwbender/assets/bunny.obj';
 
 configure({
   modules: {

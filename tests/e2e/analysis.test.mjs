@@ -50,7 +50,7 @@ async function noticeAbout(file) {
 }
 
 test(`${BACKEND}: a CSV of 200 poses asks how to import it; Esc changes nothing; every 4th keeps 50; a fit keeps fewer`, async () => {
-  await sb(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  await sb(() => window.screwbender.app.run('loadPreset', 'l_cycle_rotated'));
   const s0 = await session();
   // Esc: the dialog closes, nothing changed.
   await chooseDense();
@@ -71,7 +71,7 @@ test(`${BACKEND}: a CSV of 200 poses asks how to import it; Esc changes nothing;
   assert.match(await noticeAbout('kept 50 of 200'), /dense\.csv: kept 50 of 200 poses \(every 4th\)/);
   assert.equal(await sb(() => window.screwbender.app.motion.poseCount), 50);
   // One undo brings the previous motion back: the import was one edit.
-  await sb(() => window.screwbender.app.undo());
+  await sb(() => window.screwbender.app.parts.session.undo());
   assert.equal(await sb(() => window.screwbender.app.motion.poseCount), 6);
   // A fit within a tolerance: fewer poses, and the count is shown.
   await chooseDense();
@@ -111,12 +111,12 @@ test(`${BACKEND}: a CSV of 200 poses asks how to import it; Esc changes nothing;
 });
 
 test(`${BACKEND}: a dropped glTF sets the title and brings its mesh`, async () => {
-  await sb(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  await sb(() => window.screwbender.app.run('loadPreset', 'l_cycle_rotated'));
   const bytes = await sb(async () => {
     const { exportMotion } = await import('./js/editor/files.js');
     return [...(await exportMotion(window.screwbender.app, 'glb', {}, { save: false })).data];
   });
-  await sb(() => window.screwbender.app.loadPreset('cylinder5'));
+  await sb(() => window.screwbender.app.run('loadPreset', 'cylinder5'));
   assert.doesNotMatch(await page.locator('#scene-title').textContent(), /L cycle/);
   await page.locator('#any-file').setInputFiles({ name: 'walk-motion.glb', mimeType: 'model/gltf-binary', buffer: Buffer.from(bytes) });
   await page.waitForFunction(() => window.screwbender.app.view.object === 'obj');
@@ -144,7 +144,7 @@ test(`${BACKEND}: a dropped glTF sets the title and brings its mesh`, async () =
 
 /** Opens the Plots view on preset A2 and returns nothing; the charts are drawn. */
 async function openPlots() {
-  await sb(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  await sb(() => window.screwbender.app.run('loadPreset', 'l_cycle_rotated'));
   await sb(() => window.screwbender.openView('plots'));
   await sb(() => window.screwbender.flushViews());
   await waitFrames(page, 1);
@@ -238,7 +238,7 @@ test(`${BACKEND}: by default |α| is the limit motion's, non-zero where |ω| cha
 test(`${BACKEND}: the playhead of every plot follows the time; hovering a plot shows that pose in 3-D, leaving restores it`, async () => {
   await openPlots();
   const heads = () => sb(() => window.screwbender.app.dock.current.charts.map((c) => c.playheadX));
-  const seek = (t) => sb((x) => window.screwbender.app.seekTime(x), t);
+  const seek = (t) => sb((x) => window.screwbender.app.viewer.seekTime(x), t);
   await seek(1.5);
   await page.waitForFunction(() => window.screwbender.app.dock.current.charts.every((c) => c.playheadX !== null && Math.abs(c.playheadX - 1.5) < 1e-9));
   const x1 = await sb(() => document.querySelector('#dock .plot-grid .playhead').getBoundingClientRect().x);
@@ -250,7 +250,7 @@ test(`${BACKEND}: the playhead of every plot follows the time; hovering a plot s
   // Hover the speed chart at a quarter of its width.
   await seek(0);
   await waitFrames(page, 2);
-  const before = await sb(() => ({ ...window.screwbender.app.playhead(), visible: window.screwbender.app.anim.visible }));
+  const before = await sb(() => ({ ...window.screwbender.app.viewer.playhead(), visible: window.screwbender.app.anim.visible }));
   const pixels0 = await page.locator('#view').screenshot();
   const over = await page.locator('#dock .plot-grid .chart').nth(1).locator('.u-over').boundingBox();
   await page.mouse.move(over.x + over.width * 0.25, over.y + over.height / 2);
@@ -258,9 +258,9 @@ test(`${BACKEND}: the playhead of every plot follows the time; hovering a plot s
     const c = window.screwbender.app.dock.current.charts[1];
     return c.plot.posToVal(x - c.plot.over.getBoundingClientRect().left, 'x');
   }, { x: over.x + over.width * 0.25 });
-  await page.waitForFunction((t) => Math.abs(window.screwbender.app.playhead().t - t) < 1e-6, want);
+  await page.waitForFunction((t) => Math.abs(window.screwbender.app.viewer.playhead().t - t) < 1e-6, want);
   assert.ok(want > 0.5, `hovered t = ${want}`);
-  const during = await sb(() => ({ ...window.screwbender.app.playhead(), visible: window.screwbender.app.anim.visible }));
+  const during = await sb(() => ({ ...window.screwbender.app.viewer.playhead(), visible: window.screwbender.app.anim.visible }));
   assert.equal(during.visible, true);
   assert.ok(Math.abs(during.u - before.u) > 0.1, `u ${before.u} → ${during.u}`);
   await waitFrames(page, 2);
@@ -270,7 +270,7 @@ test(`${BACKEND}: the playhead of every plot follows the time; hovering a plot s
   const undo = await sb(() => window.screwbender.app.history.undoStack.length);
   await page.mouse.move(over.x + over.width * 0.25, over.y - 60);
   await page.waitForFunction((u) => window.screwbender.app.anim.u === u, before.u);
-  const afterLeave = await sb(() => ({ ...window.screwbender.app.playhead(), visible: window.screwbender.app.anim.visible }));
+  const afterLeave = await sb(() => ({ ...window.screwbender.app.viewer.playhead(), visible: window.screwbender.app.anim.visible }));
   assert.equal(afterLeave.u, before.u);
   assert.equal(afterLeave.visible, before.visible);
   assert.equal(await sb(() => window.screwbender.app.history.undoStack.length), undo, 'a hover is no edit');
@@ -281,7 +281,7 @@ test(`${BACKEND}: dark theme (D key): the charts switch to light ink live, keepi
   await page.setViewportSize({ width: 1280, height: 800 });
   await sb(() => (window.screwbender.app.updateView({ theme: 'light' })));
   await openPlots();
-  await sb((t) => window.screwbender.app.seekTime(t), 2.5);
+  await sb((t) => window.screwbender.app.viewer.seekTime(t), 2.5);
   await page.waitForFunction(() => window.screwbender.app.dock.current.charts.every((c) => c.playheadX !== null && Math.abs(c.playheadX - 2.5) < 1e-9));
   /**
    * Chart k's state and ink: its x zoom, data length, playhead, the colour uPlot's options give
@@ -320,7 +320,7 @@ test(`${BACKEND}: dark theme (D key): the charts switch to light ink live, keepi
   assert.ok(light.pixels > 30, `${light.pixels} label pixels`);
   assert.ok(lum(light.ink) < 0.25 && hexLum(light.axisInk) < 0.25, `light theme: dark tick labels ${light.ink} (${light.axisInk})`);
   // D with the 3-D view focused (a real key press).
-  await sb(() => window.screwbender.app.canvas.focus());
+  await sb(() => window.screwbender.app.viewer.canvas.focus());
   await page.keyboard.press('d');
   await page.waitForFunction(() => document.documentElement.dataset.theme === 'dark');
   const dark = await look(1);
@@ -345,7 +345,7 @@ test(`${BACKEND}: dark theme (D key): the charts switch to light ink live, keepi
   // And back (D again): dark ink, zoom still kept.
   await sb(() => window.screwbender.openView('plots'));
   await sb(() => window.screwbender.flushViews());
-  await sb(() => window.screwbender.app.canvas.focus());
+  await sb(() => window.screwbender.app.viewer.canvas.focus());
   await page.keyboard.press('d');
   await page.waitForFunction(() => document.documentElement.dataset.theme === 'light');
   const back = await look(1);
@@ -455,7 +455,7 @@ test(`${BACKEND}: every series line has at least 3:1 against the dock in both th
   // The light theme keeps the paper's colours (they pass): B-spline red, Jarek green, 4-point blue.
   assert.deepEqual(light.plots.slice(0, 3), ['#d1202f', '#2f9e44', '#1f5fd1']);
   // D with the 3-D view focused (a real key press): the lines change live, in the same charts.
-  await sb(() => window.screwbender.app.canvas.focus());
+  await sb(() => window.screwbender.app.viewer.canvas.focus());
   await page.keyboard.press('d');
   await page.waitForFunction(() => document.documentElement.dataset.theme === 'dark');
   const dark = await check('dark');
@@ -464,7 +464,7 @@ test(`${BACKEND}: every series line has at least 3:1 against the dock in both th
   assert.equal(dark.plots[1], '#2f9e44');
   assert.notEqual(dark.plots[2], '#1f5fd1');
   // And back: the light colours again.
-  await sb(() => window.screwbender.app.canvas.focus());
+  await sb(() => window.screwbender.app.viewer.canvas.focus());
   await page.keyboard.press('d');
   await page.waitForFunction(() => document.documentElement.dataset.theme === 'light');
   assert.deepEqual(await check('light'), light);
@@ -473,7 +473,7 @@ test(`${BACKEND}: every series line has at least 3:1 against the dock in both th
 });
 
 test(`${BACKEND}: Metrics and Methods speak in human names, with units and "lower is better"`, async () => {
-  await sb(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  await sb(() => window.screwbender.app.run('loadPreset', 'l_cycle_rotated'));
   await sb(() => window.screwbender.openView('metrics'));
   await sb(() => window.screwbender.flushViews());
   const metrics = await page.locator('#dock section[data-view=metrics]').textContent();
@@ -483,7 +483,7 @@ test(`${BACKEND}: Metrics and Methods speak in human names, with units and "lowe
   const head = await page.locator('#dock section[data-view=metrics] table tr').first().textContent();
   assert.match(head, /unit/);
   assert.match(await page.locator('#dock section[data-view=metrics] table').textContent(), /units\/span/);
-  await sb(() => window.screwbender.app.loadPreset('triangle7'));
+  await sb(() => window.screwbender.app.run('loadPreset', 'triangle7'));
   await sb(() => window.screwbender.openView('methods'));
   await sb(() => window.screwbender.flushViews());
   const cols = await page.locator('#dock section[data-view=methods] table.metrics tr').first().locator('th').allTextContents();
@@ -512,7 +512,7 @@ const tabRow = () =>
 for (const [w, h] of [[1280, 800], [390, 844], [844, 390]]) {
   test(`${BACKEND}: ${w}x${h}: the dock's tabs are one row; the overflow menu and the arrow keys reach every view`, async () => {
     await page.setViewportSize({ width: w, height: h });
-    await sb(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+    await sb(() => window.screwbender.app.run('loadPreset', 'l_cycle_rotated'));
     await sb(() => window.screwbender.openView('plots'));
     await sb(() => window.screwbender.flushViews());
     const row = await tabRow();
@@ -571,7 +571,7 @@ for (const [w, h] of [[1280, 800], [1000, 800], [700, 800], [390, 844], [844, 39
   test(`${BACKEND}: ${w}x${h}: with the dock open the scene is framed in the part of the window the dock leaves free`, async () => {
     await page.setViewportSize({ width: w, height: h });
     await sb(() => window.screwbender.openView(''));
-    await sb(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+    await sb(() => window.screwbender.app.run('loadPreset', 'l_cycle_rotated'));
     await sb(() => window.screwbender.openView('metrics'));
     await sb(() => window.screwbender.flushViews());
     await waitFrames(page, 2);
@@ -667,13 +667,13 @@ for (const [w, h] of [[390, 844], [844, 390]]) {
       assert.ok(s.legendIn, `${label}: the legend is out of the dock`);
     }
     // The playhead follows the time on the chart shown.
-    await sb(() => window.screwbender.app.seekTime(1.5));
+    await sb(() => window.screwbender.app.viewer.seekTime(1.5));
     await page.waitForFunction(() => {
       const c = window.screwbender.app.dock.current.charts.find((k) => k.box.offsetParent !== null);
       return c.playheadX !== null && Math.abs(c.playheadX - 1.5) < 1e-9;
     });
     await pick.selectOption({ label: 'position x' });
-    await sb(() => window.screwbender.app.seekTime(0));
+    await sb(() => window.screwbender.app.viewer.seekTime(0));
     await sb(() => window.screwbender.flushViews());
     assert.deepEqual(problems, []);
   });

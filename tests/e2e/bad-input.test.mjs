@@ -37,7 +37,7 @@ const errorCount = () => sb(() => window.screwbender.errors().length);
 
 async function fresh(preset = 'l_cycle_rotated') {
   await sb((id) => {
-    window.screwbender.app.loadPreset(id);
+    window.screwbender.app.run('loadPreset', id);
     window.screwbender.app.select(-1);
   }, preset);
   await waitFrames(page, 1);
@@ -192,7 +192,7 @@ test(`${BACKEND}: text from files is shown as text, never as HTML`, async () => 
   const imgs = await sb(() => document.images.length);
   // A document name, a bad option value and a file name carrying markup.
   const named = docWith(GOOD_POSE, `"name":${JSON.stringify(html)},`);
-  assert.equal(await sb((t) => window.screwbender.app.importJson(t), named), true);
+  assert.equal(await sb((t) => window.screwbender.app.parts.files.importJson(t), named), true);
   assert.equal(await sb(() => window.screwbender.app.motion.name), html);
   const msg = await nextError(() =>
     page.locator('#json-file').setInputFiles({
@@ -203,7 +203,7 @@ test(`${BACKEND}: text from files is shown as text, never as HTML`, async () => 
   );
   assert.ok(msg.includes(html), msg);
   assert.equal(await page.locator('#banner .msg').evaluate((e) => e.children.length), 0);
-  await sb(() => window.screwbender.app.exportJson());
+  await sb(() => window.screwbender.app.parts.files.exportJson());
   await waitFrames(page, 2);
   assert.equal(await sb(() => document.images.length), imgs);
   assert.equal(await sb(() => document.getElementById('xss')), null);
@@ -215,7 +215,7 @@ test(`${BACKEND}: bad share links show a message and keep the saved session`, as
   await fresh('bunny6');
   await page.keyboard.press('2');
   const saved = await session();
-  const good = await sb(() => window.screwbender.app.shareLink());
+  const good = await sb(() => window.screwbender.app.parts.session.shareLink());
   const payload = good.split('#s=')[1];
   const b64 = (obj) => Buffer.from(JSON.stringify(obj)).toString('base64url');
   const s = JSON.parse(saved);

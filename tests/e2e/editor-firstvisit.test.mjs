@@ -129,9 +129,9 @@ test(`${BACKEND}: two tabs: the work of each is kept, and offered again after bo
   const context = await play.browser.newContext({ viewport: { width: 1280, height: 800 } });
   try {
     const a = await openPage(context, play.url, BACKEND);
-    await a.page.evaluate(() => window.screwbender.app.loadPreset('pendulum'));
+    await a.page.evaluate(() => window.screwbender.app.run('loadPreset', 'pendulum'));
     const b = await openPage(context, play.url, BACKEND);
-    await b.page.evaluate(() => window.screwbender.app.loadPreset('circle4'));
+    await b.page.evaluate(() => window.screwbender.app.run('loadPreset', 'circle4'));
     const [workA, workB] = [await posesOf(a.page), await posesOf(b.page)];
     assert.notEqual(workA, workB);
     // Tab A closes first, tab B last: B's work is the latest, A's must not be lost.
@@ -147,7 +147,7 @@ test(`${BACKEND}: two tabs: the work of each is kept, and offered again after bo
     await offer.locator('button', { hasText: 'Open' }).click();
     assert.equal(await posesOf(c.page), workA, 'the offered draft holds tab A\'s work');
     // Opening it is an edit: the work shown before is one Undo away.
-    await c.page.evaluate(() => window.screwbender.app.undo());
+    await c.page.evaluate(() => window.screwbender.app.parts.session.undo());
     assert.equal(await posesOf(c.page), workB);
     assert.ok(!(await c.page.locator('#drafts').isVisible()), 'the list closes once its drafts are taken');
     assert.deepEqual([...a.problems, ...b.problems, ...c.problems], []);
@@ -167,9 +167,9 @@ test(`${BACKEND}: a sandboxed frame without storage says once, in words, that wo
     // Edits autosave: each would have failed before.
     await frame.evaluate(() => {
       const { app } = window.screwbender;
-      app.loadPreset('pendulum');
-      app.setOption('levels', 3);
-      app.setOption('levels', 4);
+      app.run('loadPreset', 'pendulum');
+      app.run('setOption', 'levels', 3);
+      app.run('setOption', 'levels', 4);
     });
     const seen = await frame.evaluate(() => ({
       text: document.body.innerText,

@@ -30,13 +30,13 @@ async function setup({ preset = 'l_cycle_rotated', i = 2, origin, rotation, mode
   await sb(
     ({ preset, i, origin, rotation, mode, snap, camera }) => {
       const app = window.screwbender.app;
-      app.loadPreset(preset, false);
+      app.parts.session.openPreset(preset);
       if (origin || rotation) {
         const p = app.motion.pose(i);
         app.motion.setPose(i, { origin: origin ?? p.origin, rotation: rotation ?? p.rotation });
       }
       app.updateView({ snap });
-      if (camera) Object.assign(app.camera, camera);
+      if (camera) Object.assign(app.viewer.camera, camera);
       app.viewer.cameraMoved();
       app.changed(false);
       app.setMode(mode);
@@ -85,8 +85,8 @@ test(`${BACKEND}: parts seen edge-on are hidden`, async () => {
   const hit = await sb(() => {
     const app = window.screwbender.app;
     const c = app.motion.pose(2).origin;
-    const s = app.toPage([c[0], c[1] + 0.4 * 1, c[2] + 0.4]);
-    const r = app.canvas.getBoundingClientRect();
+    const s = app.viewer.toPage([c[0], c[1] + 0.4 * 1, c[2] + 0.4]);
+    const r = app.viewer.canvas.getBoundingClientRect();
     return app.viewer.gizmoHit([s.x - r.left, s.y - r.top]);
   });
   assert.notEqual(hit, 'plane-x');
@@ -99,7 +99,7 @@ test(`${BACKEND}: a handle drag moves in the plane facing the view, shown, never
     await setup({ origin: o, camera });
     await sb(() => window.screwbender.app.select(-1));
     await waitFrames(page, 1);
-    const f = await sb(() => window.screwbender.app.camera.forward);
+    const f = await sb(() => window.screwbender.app.viewer.camera.forward);
     // The plane whose normal is closest to the view direction.
     const axis = [0, 1, 2].reduce((b, k) => (Math.abs(f[k]) > Math.abs(f[b]) ? k : b), 0);
     assert.equal(axis, want);
@@ -144,7 +144,7 @@ test(`${BACKEND}: pose numbers are drawn beside the handles and follow the camer
       for (const e of labels) {
         const k = Number(e.textContent);
         const r = e.getBoundingClientRect();
-        const h = app.screenOfPose(k);
+        const h = app.viewer.screenOfPose(k);
         out.push({ k, d: Math.hypot(r.left + r.width / 2 - h.x, r.top + r.height / 2 - h.y), on: e.classList.contains('on') });
       }
       return { out, n: app.motion.poseCount, layerHidden: document.getElementById('pose-labels').hidden };
@@ -161,9 +161,9 @@ test(`${BACKEND}: pose numbers are drawn beside the handles and follow the camer
   s = await near();
   for (const l of s.out) assert.ok(l.d > 8 && l.d < 40, `after the orbit, label ${l.k} is ${l.d.toFixed(1)} px from its handle`);
   // Display › Pose numbers off hides them.
-  await sb(() => window.screwbender.app.setView('showPoseNumbers', false));
+  await sb(() => window.screwbender.app.run('setView', 'showPoseNumbers', false));
   assert.equal((await near()).layerHidden, true);
-  await sb(() => window.screwbender.app.setView('showPoseNumbers', true));
+  await sb(() => window.screwbender.app.run('setView', 'showPoseNumbers', true));
 });
 
 test(`${BACKEND}: the gizmo in the pose's own axes (Q) moves and nudges along them`, async () => {

@@ -32,7 +32,7 @@ const state = () =>
 async function heavy() {
   await sb(() => {
     const app = window.screwbender.app;
-    app.loadPreset('l_cycle_rotated', false);
+    app.parts.session.openPreset('l_cycle_rotated');
     app.updateView({ strobe: 10000 });
     app.motion.setOptions({ levels: 8 });
     app.changed();

@@ -44,7 +44,7 @@ const focused = () =>
 async function fresh() {
   await sb(() => {
     window.screwbender.app.ui.toggleHelp(false);
-    window.screwbender.app.loadPreset('l_cycle_rotated', false);
+    window.screwbender.app.parts.session.openPreset('l_cycle_rotated');
     window.screwbender.app.history.clear?.();
     document.activeElement?.blur();
   });
@@ -191,6 +191,8 @@ const COMMAND_CASES = [
   ['insertPose', [], 'Insert a pose after pose 0', 0],
   ['deletePose', [], 'Delete pose 1', 1],
   ['setPose', [0, { origin: [0.5, 0.25, 0], rotation: [1, 0, 0, 0] }], 'Move pose 0'],
+  ['setTimes', [], 'Retime the keys'],
+  ['setVelocities', [], 'Set the key velocities'],
   ['lessonStep', [{ title: 'Fewer copies', display: { strobe: 7 } }], 'Lesson: Fewer copies'],
   ['openSession', ['circle4'], 'Open kept work'],
 ];
@@ -198,10 +200,10 @@ const COMMAND_CASES = [
 test(`${BACKEND}: every command is done, undone and redone through the Undo menu, which names it`, async () => {
   const names = await sb(async () => Object.keys((await import('./js/editor/commands.js')).COMMANDS));
   assert.deepEqual(COMMAND_CASES.map((c) => c[0]).sort(), [...names].sort(), 'a case for every command');
-  await sb(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  await sb(() => window.screwbender.app.run('loadPreset', 'l_cycle_rotated'));
   /** The edited state: motion, options and display (undo keeps the camera and the playhead). */
   const state = () => sb(() => {
-    const s = JSON.parse(window.screwbender.app.snapshot());
+    const s = JSON.parse(window.screwbender.app.parts.session.snapshot());
     return JSON.stringify([s.document, s.options, s.view]);
   });
   /** Opens the Undo menu with a right click on `button`; returns the labels listed under `side`. */
@@ -223,12 +225,15 @@ test(`${BACKEND}: every command is done, undone and redone through the Undo menu
       const { app } = window.screwbender;
       // openSession takes a whole session: another preset's, as a draft of another tab holds.
       if (n === 'openSession') {
-        const keep = app.snapshot();
-        app.loadPreset(a[0], false);
-        const other = app.session(false);
-        app.applySession(JSON.parse(keep));
+        const keep = app.parts.session.snapshot();
+        app.parts.session.openPreset(a[0]);
+        const other = app.parts.session.session(false);
+        app.parts.session.applySession(JSON.parse(keep));
         a = [other];
       }
+      // The timing commands take one value per key of the motion at hand.
+      if (n === 'setTimes') a = [app.keyTimes().map((t) => 2 * t)];
+      if (n === 'setVelocities') a = [Array.from({ length: app.motion.poseCount }, (_, i) => (i === 1 ? 0.25 : null))];
       app.run(n, ...a);
     }, [name, args]);
     const after = await state();

@@ -74,7 +74,7 @@ function bigEnough(list, what) {
 }
 
 /** Distance of the camera from its target, and the target. */
-const cam = (page) => page.evaluate(() => ({ d: window.screwbender.app.camera.distance, t: [...window.screwbender.app.camera.target] }));
+const cam = (page) => page.evaluate(() => ({ d: window.screwbender.app.viewer.camera.distance, t: [...window.screwbender.app.viewer.camera.target] }));
 
 /** Two fingers from a1, b1 to a2, b2 in `steps` moves (CDP touch events: real pointer events in the page). */
 async function twoFingers(page, a1, b1, a2, b2, steps = 8) {

@@ -49,7 +49,7 @@ async function type(label, text) {
 
 async function fresh(select = 2) {
   await sb((k) => {
-    window.screwbender.app.loadPreset('l_cycle_rotated', false);
+    window.screwbender.app.parts.session.openPreset('l_cycle_rotated');
     window.screwbender.app.select(k);
   }, select);
   await waitFrames(page, 1);

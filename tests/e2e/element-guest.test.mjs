@@ -1,5 +1,5 @@
 // e2e-backends: webgpu (one WebGPU device per page for many figures)
-// <screw-bender> as a guest in a page (www/js/element/chrome.js, showing.js, view/pointer.js):
+// <screw-bender> as a guest in a page (www/js/element/chrome.js, showing.js, figure/pointer.js):
 // a focused figure takes only the keys it acts on (on a page that listens to keys on document as
 // reveal.js does: arrows, Space, Escape, O, F) and Tab and Escape get a keyboard user out; many
 // figures start lazily near the viewport (loading="lazy", a poster until then, "eager" at once)

@@ -12,7 +12,7 @@ let problems;
 
 before(async () => {
   ({ play, page, problems } = await playgroundPage({ acceptDownloads: true }));
-  await page.evaluate(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  await page.evaluate(() => window.screwbender.app.run('loadPreset', 'l_cycle_rotated'));
 });
 
 after(async () => {
@@ -73,14 +73,14 @@ test(`${BACKEND}: Export glTF (.glb) downloads a GLB named for what it holds (â€
   const toast = await page.locator('#toast').textContent();
   assert.match(toast, /l_cycle_rotated-motion\.glb: \d+ keyframes \(tolerance 0\.0001\)/);
   // Change the motion, then drop the exported file: the control poses come back.
-  await page.evaluate(() => window.screwbender.app.loadPreset('cylinder5'));
+  await page.evaluate(() => window.screwbender.app.run('loadPreset', 'cylinder5'));
   await drop([{ name: 'l_cycle_rotated-motion.glb', bytes }]);
   assertPosesClose(await poses(), before, 1e-6);
   assert.deepEqual(problems, []);
 });
 
 test(`${BACKEND}: Export glTF (.gltf + .bin) downloads both; dropping them together imports`, async () => {
-  await page.evaluate(() => window.screwbender.app.loadPreset('cylinder5'));
+  await page.evaluate(() => window.screwbender.app.run('loadPreset', 'cylinder5'));
   const before = await poses();
   const [g, b] = await clickExport('Export glTF (.gltf + .bin)', 2);
   assert.equal(g.suggestedFilename(), 'cylinder5-motion.gltf');
@@ -89,7 +89,7 @@ test(`${BACKEND}: Export glTF (.gltf + .bin) downloads both; dropping them toget
   const json = JSON.parse(gltf.toString());
   assert.equal(json.buffers[0].uri, 'cylinder5-motion.bin');
   assert.ok(json.animations.length >= 1);
-  await page.evaluate(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  await page.evaluate(() => window.screwbender.app.run('loadPreset', 'l_cycle_rotated'));
   const sBefore = await session();
   // The .gltf alone cannot be read: its buffer is missing. Nothing changes.
   await drop([{ name: 'cylinder5-motion.gltf', bytes: gltf }]);
@@ -105,10 +105,10 @@ test(`${BACKEND}: Export glTF (.gltf + .bin) downloads both; dropping them toget
 test(`${BACKEND}: Export CSV (control poses) writes the design, times and velocities, and its drop gives the same document`, async () => {
   await page.evaluate(() => {
     const app = window.screwbender.app;
-    app.loadPreset('cylinder5');
+    app.run('loadPreset', 'cylinder5');
     // A cycle of 5 poses: 6 key times (pose 0 again at the end).
-    app.setTimes([0, 0.5, 2, 2.5, 4, 5]);
-    app.setVelocities([0, null, 1.5, null, 0]);
+    app.run('setTimes', [0, 0.5, 2, 2.5, 4, 5]);
+    app.run('setVelocities', [0, null, 1.5, null, 0]);
   });
   const before = await page.evaluate(() => window.screwbender.app.motion.toDocument());
   assert.equal(before.closed, true);
@@ -120,7 +120,7 @@ test(`${BACKEND}: Export CSV (control poses) writes the design, times and veloci
   assert.equal(lines[0], 'x,y,z,qw,qx,qy,qz,time,velocity');
   assert.equal(lines.length, 1 + before.poses.length + 1, 'one row per control pose, and pose 0 again at the end of the cycle');
   assert.match(await page.locator('#toast').textContent(), /5 control poses/);
-  await page.evaluate(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  await page.evaluate(() => window.screwbender.app.run('loadPreset', 'l_cycle_rotated'));
   await drop([{ name: 'cylinder5-control-poses.csv', bytes: text }]);
   const after = await page.evaluate(() => window.screwbender.app.motion.toDocument());
   assert.equal(after.poses.length, before.poses.length);
@@ -137,7 +137,7 @@ test(`${BACKEND}: Export CSV (control poses) writes the design, times and veloci
 });
 
 test(`${BACKEND}: Export CSV (samples of the motion) gives sampled poses; a dropped pose CSV sets the control poses`, async () => {
-  await page.evaluate(() => window.screwbender.app.loadPreset('circle4'));
+  await page.evaluate(() => window.screwbender.app.run('loadPreset', 'circle4'));
   const [d] = await clickExport('Export CSV (samples of the motion)');
   const text = fs.readFileSync(await d.path(), 'utf8');
   const lines = text.trim().split('\n');
@@ -157,7 +157,7 @@ test(`${BACKEND}: Export CSV (samples of the motion) gives sampled poses; a drop
 });
 
 test(`${BACKEND}: bad dropped files name the problem and change nothing`, async () => {
-  await page.evaluate(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  await page.evaluate(() => window.screwbender.app.run('loadPreset', 'l_cycle_rotated'));
   const s0 = await session();
   const cases = [
     [{ name: 'bad.csv', bytes: 'x,y,z,qw,qx,qy,qz\n0,0,0,1,0,0,0\n1,2,abc,1,0,0,0\n' }, /bad\.csv: .*line 3/],

@@ -38,7 +38,7 @@ async function open(route) {
 
 const LATER = [
   /^\/pkg-full\//,
-  /^\/js\/views\/(?!index\.js|dom\.js)/,
+  /^\/js\/dock\/(?!index\.js)/,
   /^\/js\/editor\/dock\.js/,
   /uPlot\.(esm\.js|min\.css)$/,
   // The lesson player (all of js/lessons/ but progress.js, which says whether the tour is due), its
@@ -120,7 +120,7 @@ test(`${BACKEND}: a module that cannot load is named, and the editor works on`, 
   await page.evaluate(() => {
     const { app } = window.screwbender;
     app.select(1);
-    app.edit(() => app.motion.setPose(1, { origin: [0.5, 0.25, 0], rotation: [1, 0, 0, 0] }));
+    app.parts.session.edit(() => app.motion.setPose(1, { origin: [0.5, 0.25, 0], rotation: [1, 0, 0, 0] }));
   });
   const moved = await page.evaluate(() => Array.from(window.screwbender.poses()));
   assert.deepEqual(moved.slice(7, 10), [0.5, 0.25, 0]);

@@ -64,12 +64,12 @@ function inspectStep() {
     let point = null;
     if (h.control) node = document.querySelector(h.control);
     else if (h.panel) node = app.ui.gui.controllersRecursive().find((c) => c._name === h.panel)?.domElement ?? null;
-    else if (h.pose !== undefined) point = app.screenOfPose(h.pose);
-    else if (h.gizmo !== undefined) point = app.selected >= 0 ? app.screenOfGizmo(h.gizmo) : null;
+    else if (h.pose !== undefined) point = app.viewer.screenOfPose(h.pose);
+    else if (h.gizmo !== undefined) point = app.selected >= 0 ? app.viewer.screenOfGizmo(h.gizmo) : null;
     out.found = !!(node && rectOf(node).w > 0) || !!(point && Number.isFinite(point.x) && Number.isFinite(point.y));
     out.ring = !!L.spot();
     if (node) out.hittable = centreHits(node);
-    else if (point) out.hittable = hitsAt(app.canvas, point.x, point.y);
+    else if (point) out.hittable = hitsAt(app.viewer.canvas, point.x, point.y);
     // What lies there instead (for the message).
     const c = node ? rectOf(node) : null;
     const at = c ? { x: c.x + c.w / 2, y: c.y + c.h / 2 } : point;
@@ -133,13 +133,13 @@ for (const size of SIZES) {
           const L = window.__player;
           if (L.step !== k) L.go(k);
           const sb = window.screwbender;
-          while (sb.app.loadingDock) await sb.app.loadingDock;
+          while (sb.app.parts.dockHost.loading) await sb.app.parts.dockHost.loading;
           sb.app.dock?.flush();
           const frame = () => new Promise((r) => requestAnimationFrame(r));
           await frame();
           await frame();
           const f0 = sb.frames();
-          sb.app.requestDraw();
+          sb.app.viewer.requestDraw();
           while (sb.frames() <= f0) await frame();
         }, i);
         const at = `${label} ${name} step ${i + 1}`;

@@ -44,7 +44,7 @@ async function answer(page, h) {
   return page.evaluate(async (d) => {
     const L = await window.screwbender.lessons;
     const app = window.screwbender.app;
-    app.edit(() => {
+    app.parts.session.edit(() => {
       const p = app.motion.pose(1);
       app.motion.setPose(1, { origin: [p.origin[0], p.origin[1], d], rotation: p.rotation });
     });

@@ -47,7 +47,7 @@ async function openLesson(name) {
 const ANSWERS = {
   'screw:2': {
     wrong: () => {},
-    right: (L, app) => app.edit(() => {
+    right: (L, app) => app.parts.session.edit(() => {
       const p = app.motion.pose(1);
       app.motion.setPose(1, { origin: [p.origin[0], p.origin[1], 0], rotation: p.rotation });
     }),
@@ -55,14 +55,14 @@ const ANSWERS = {
   // The randomised pitch: pose 1 raised by h·π/2 for this student's h (its variant).
   'screw:3': {
     wrong: () => {},
-    right: (L, app) => app.edit(() => {
+    right: (L, app) => app.parts.session.edit(() => {
       const p = app.motion.pose(1);
       app.motion.setPose(1, { origin: [p.origin[0], p.origin[1], (L.variant.values[L.step].h * Math.PI) / 2], rotation: p.rotation });
     }),
   },
   'screw:4': {
     wrong: () => {},
-    right: (L, app) => app.edit(() => app.motion.setPose(1, { origin: app.motion.pose(1).origin, rotation: [1, 0, 0, 0] })),
+    right: (L, app) => app.parts.session.edit(() => app.motion.setPose(1, { origin: app.motion.pose(1).origin, rotation: [1, 0, 0, 0] })),
   },
   'screw:5': { wrong: (L) => L.choose(0), right: (L) => L.choose(1) },
   'polyscrew:2': {
@@ -70,29 +70,29 @@ const ANSWERS = {
     // Pose 1 at the screw midpoint of poses 0 and 2: both spans are halves of one screw.
     right: async (L, app) => {
       const wasm = app.wasm;
-      app.edit(() => app.motion.setPose(1, wasm.screw(app.motion.pose(0), 0.5, app.motion.pose(2))));
+      app.parts.session.edit(() => app.motion.setPose(1, wasm.screw(app.motion.pose(0), 0.5, app.motion.pose(2))));
     },
   },
   'polyscrew:3': {
-    wrong: (L, app) => app.setOption('levels', 2),
+    wrong: (L, app) => app.run('setOption', 'levels', 2),
     right: (L, app) => {
-      app.setScheme('bspline');
-      app.setOption('levels', 5);
+      app.run('setScheme', 'bspline');
+      app.run('setOption', 'levels', 5);
     },
   },
   'split-tweak:3': {
-    wrong: (L, app) => app.setScheme('jarek') || app.setOption('rules', 'direct'),
-    right: (L, app) => app.setOption('rules', 'split') || app.setScheme('jarek'),
+    wrong: (L, app) => app.run('setScheme', 'jarek') || app.run('setOption', 'rules', 'direct'),
+    right: (L, app) => app.run('setOption', 'rules', 'split') || app.run('setScheme', 'jarek'),
   },
   'split-tweak:4': { wrong: (L) => L.choose(0), right: (L) => L.choose(1) },
-  'schemes:1': { wrong: (L, app) => app.setScheme('jarek'), right: (L, app) => app.setScheme('fourpoint') },
-  'schemes:3': { wrong: (L, app) => app.setS(0.9), right: (L, app) => app.setS(1) },
+  'schemes:1': { wrong: (L, app) => app.run('setScheme', 'jarek'), right: (L, app) => app.run('setScheme', 'fourpoint') },
+  'schemes:3': { wrong: (L, app) => app.run('setS', 0.9), right: (L, app) => app.run('setS', 1) },
   'schemes:4': { wrong: (L) => L.choose(1), right: (L) => L.choose(2) },
   'frames:2': { wrong: (L) => L.choose(2), right: (L) => L.choose(1) },
   'frames:3': { wrong: (L) => L.choose(1), right: (L) => L.choose(3) },
   'methods:1': { wrong: (L) => L.choose(2), right: (L) => L.choose(1) },
   'methods:2': { wrong: (L) => L.choose(0), right: (L) => L.choose(3) },
-  'methods:3': { wrong: (L, app) => app.setScheme('bspline'), right: (L, app) => app.setScheme('fourpoint') },
+  'methods:3': { wrong: (L, app) => app.run('setScheme', 'bspline'), right: (L, app) => app.run('setScheme', 'fourpoint') },
 };
 
 test('every lesson opens and every step applies without errors; math is MathML', async () => {
@@ -203,7 +203,7 @@ test('schema.json names what the page accepts; index.json lists every lesson', a
   const page_ = await page.evaluate(async () => {
     const wasm = await window.screwbender.app.analysis();
     const fmt = await import('./js/lessons/format.js');
-    const { VIEW_IDS } = await import('./js/views/index.js');
+    const { VIEW_IDS } = await import('./js/dock/index.js');
     return {
       scenes: wasm.presets().map((s) => s.id),
       views: VIEW_IDS,
@@ -354,11 +354,11 @@ test("a teacher's dropped lesson: pose checks, hints one at a time, feedback on 
     assert.equal(await page.locator('#lesson .hint-text').count(), Math.min(k, 2));
   }
   // Wrong: pose 2 moved and turned; each attempt rewrites the feedback.
-  await inPage((L, app) => app.edit(() => app.motion.setPose(2, { origin: [1.5, 2, 0], rotation: [Math.cos(0.1), 0, 0, Math.sin(0.1)] })));
+  await inPage((L, app) => app.parts.session.edit(() => app.motion.setPose(2, { origin: [1.5, 2, 0], rotation: [Math.cos(0.1), 0, 0, Math.sin(0.1)] })));
   await page.locator('#lesson button.check').click();
   let fb = await page.locator('#lesson .feedback').textContent();
   assert.match(fb, /Not yet: pose 2: origin 0\.5 from the target, rotation 11\.46° from the target; wanted within 0\.01, within 0\.5°\./);
-  await inPage((L, app) => app.edit(() => app.motion.setPose(2, { origin: [1.005, 2, 0], rotation: [Math.cos(0.002), 0, 0, Math.sin(0.002)] })));
+  await inPage((L, app) => app.parts.session.edit(() => app.motion.setPose(2, { origin: [1.005, 2, 0], rotation: [Math.cos(0.002), 0, 0, Math.sin(0.002)] })));
   await page.locator('#lesson button.check').click();
   fb = await page.locator('#lesson .feedback').textContent();
   assert.match(fb, /Correct/);
@@ -467,7 +467,7 @@ test('screenshots of each lesson (docs/screenshots/lessons/ with DOCS_SHOTS=1)',
     await openLesson(name);
     await inPage((L, app, k) => {
       L.go(k);
-      app.setPlaying(false);
+      app.viewer.setPlaying(false);
       app.dock?.flush();
     }, step);
     await waitFrames(page, 3);

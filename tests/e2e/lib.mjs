@@ -198,12 +198,12 @@ export async function openViewMenu(page) {
 /** Waits until at least `n` more frames were drawn. */
 export async function waitFrames(page, n = 2) {
   const start = await page.evaluate(() => {
-    window.screwbender.app.requestDraw();
+    window.screwbender.app.viewer.requestDraw();
     return window.screwbender.frames();
   });
   for (let k = 0; k < n; k++) {
     await page.waitForFunction((s) => window.screwbender.frames() > s, start + k, { timeout: 30000 });
-    await page.evaluate(() => window.screwbender.app.requestDraw());
+    await page.evaluate(() => window.screwbender.app.viewer.requestDraw());
   }
 }
 

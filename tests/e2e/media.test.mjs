@@ -20,7 +20,7 @@ before(async () => {
   ({ play, page, problems } = await playgroundPage({ acceptDownloads: true }));
   blank = await play.context.newPage();
   await page.bringToFront();
-  await page.evaluate(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  await page.evaluate(() => window.screwbender.app.run('loadPreset', 'l_cycle_rotated'));
   // The first-visit hint moves with the layout; it is not what these tests are about.
   await page.evaluate(() => document.querySelector('#hint .close')?.click());
   await waitFrames(page, 2);
@@ -30,7 +30,7 @@ after(async () => {
   await play?.close();
 });
 
-/** The light and dark backgrounds as displayed (www/js/view/slots.js BACKGROUND), 0..255. */
+/** The light and dark backgrounds as displayed (www/js/figure/slots.js BACKGROUND), 0..255. */
 const LIGHT = [232, 236, 241];
 const DARK = [27, 31, 39];
 /** Per-channel tolerance on a background pixel (8-bit rounding, the encoders). */
@@ -79,7 +79,7 @@ function decodePng(bytes, bg) {
   }, { b64: Buffer.from(bytes).toString('base64'), bg });
 }
 
-const drawingBuffer = () => page.evaluate(() => window.screwbender.app.pixelSize());
+const drawingBuffer = () => page.evaluate(() => window.screwbender.app.viewer.pixelSize());
 const readBytes = async (download) => fs.readFileSync(await download.path());
 
 test('PNG at 1×: a real download of the drawing buffer, named after the preset, not blank', async () => {
@@ -94,7 +94,7 @@ test('PNG at 1×: a real download of the drawing buffer, named after the preset,
   assert.equal(px.opaque, 1, 'an opaque picture');
   for (let k = 0; k < 3; k++) assert.ok(Math.abs(px.corner[k] - LIGHT[k]) <= BG_TOL, `background corner ${px.corner}`);
   // The view is drawn at its own size again afterwards.
-  const canvas = await page.evaluate(() => [window.screwbender.app.canvas.width, window.screwbender.app.canvas.height]);
+  const canvas = await page.evaluate(() => [window.screwbender.app.viewer.canvas.width, window.screwbender.app.viewer.canvas.height]);
   assert.deepEqual(canvas, [w, h]);
 });
 
@@ -170,7 +170,7 @@ function examine(spots, bg) {
 const near = (a, b, tol) => b.every((x, k) => Math.abs(a[k] - x) <= tol);
 
 test('dark theme: the toggle darkens the page and the canvas, and is kept in the session', async () => {
-  await page.evaluate(() => window.screwbender.app.frameAll());
+  await page.evaluate(() => window.screwbender.app.parts.viewpoint.fit());
   await waitFrames(page, 2);
   // Points of the view showing the light background (nothing drawn there, off the chrome).
   const { spots } = await examine(null, LIGHT);
@@ -256,7 +256,7 @@ function pngDiff(a, b) {
 test('PNG leaves out the gizmo and the selection by default, keeps the pose numbers, and says so in the menu', async () => {
   await page.evaluate(() => {
     const app = window.screwbender.app;
-    app.loadPreset('cylinder5');
+    app.run('loadPreset', 'cylinder5');
     app.updateView({ showPoseNumbers: true });
     app.setMode?.('rotate');
   });
@@ -294,7 +294,7 @@ test('PNG leaves out the gizmo and the selection by default, keeps the pose numb
   assert.ok(numbers > 1e-4, `the pose numbers are in the picture (${(numbers * 100).toFixed(4)} % of the pixels)`);
   await page.evaluate(() => {
     window.screwbender.app.updateView({ showPoseNumbers: true });
-    window.screwbender.app.loadPreset('l_cycle_rotated');
+    window.screwbender.app.run('loadPreset', 'l_cycle_rotated');
   });
   assert.deepEqual(problems, []);
 });

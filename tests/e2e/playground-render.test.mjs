@@ -30,9 +30,9 @@ const sb = (f, arg) => page.evaluate(f, arg);
 const show = (preset) =>
   sb((id) => {
     const { app } = window.screwbender;
-    app.loadPreset(id);
+    app.run('loadPreset', id);
     app.select(-1);
-    app.frameAll();
+    app.parts.viewpoint.fit();
   }, preset);
 
 test(`${BACKEND}: page loads without console errors and reports the backend`, async () => {

@@ -48,7 +48,7 @@ async function openFileFolder() {
 
 async function fresh(preset = 'l_cycle_rotated') {
   await sb((id) => {
-    window.screwbender.app.loadPreset(id);
+    window.screwbender.app.run('loadPreset', id);
     window.screwbender.app.select(-1);
     window.screwbender.app.setMode('translate');
   }, preset);
@@ -195,7 +195,7 @@ test(`${BACKEND}: reload restores the autosaved session exactly`, async () => {
 test(`${BACKEND}: a share link reproduces the session in a fresh browser context`, async () => {
   await fresh('bunny6');
   await page.keyboard.press('2');
-  const link = await sb(() => window.screwbender.app.shareLink());
+  const link = await sb(() => window.screwbender.app.parts.session.shareLink());
   const session = await sb(() => window.screwbender.session());
   const other = await play.browser.newContext({ viewport: VIEWPORT });
   const p2 = await other.newPage();
@@ -223,7 +223,7 @@ test(`${BACKEND}: bad JSON and OBJ input show a message and change nothing`, asy
   ];
   for (const text of bad) {
     const n0 = (await sb(() => window.screwbender.errors())).length;
-    const ok = await sb((t) => window.screwbender.app.importJson(t), text);
+    const ok = await sb((t) => window.screwbender.app.parts.files.importJson(t), text);
     assert.ok(!ok);
     const errs = await sb(() => window.screwbender.errors());
     assert.equal(errs.length, n0 + 1, `no message for ${text.slice(0, 40)}`);
@@ -239,7 +239,7 @@ test(`${BACKEND}: bad JSON and OBJ input show a message and change nothing`, asy
   assert.ok(await page.locator('#paste').isVisible(), 'the dialog stays open to fix the input');
   await page.locator('#paste [data-act=cancel]').click();
   for (const obj of ['v 0 0 0\nf 1 2 3\n', 'v 1 2 nan\n', 'hello']) {
-    assert.equal(await sb((t) => window.screwbender.app.importObj(t), obj), false);
+    assert.equal(await sb((t) => window.screwbender.app.parts.files.importMesh('obj', t), obj), false);
   }
   assert.equal(await sb(() => JSON.stringify(window.screwbender.session())), before);
   // A valid OBJ through the file input becomes the object.
@@ -277,7 +277,7 @@ test(`${BACKEND}: bad JSON and OBJ input show a message and change nothing`, asy
   await page.keyboard.press('Control+z');
   // A good document then loads.
   const good = '{"closed":true,"poses":[{"origin":[0,0,0],"rotation":[1,0,0,0]},{"origin":[3,0,0],"rotation":[0.7071067811865476,0,0,0.7071067811865476]},{"origin":[3,3,0],"rotation":[0,0,0,1]}]}';
-  assert.equal(await sb((t) => window.screwbender.app.importJson(t), good), true);
+  assert.equal(await sb((t) => window.screwbender.app.parts.files.importJson(t), good), true);
   assert.equal((await poses()).length / 7, 3);
 });
 
@@ -298,19 +298,19 @@ test(`${BACKEND}: Export JSON downloads the motion document`, async () => {
 test(`${BACKEND}: touch: one finger orbits, two fingers pinch-zoom`, async () => {
   await fresh();
   const cdp = await context.newCDPSession(page);
-  const cam0 = await sb(() => window.screwbender.app.camera.toJSON());
+  const cam0 = await sb(() => window.screwbender.app.viewer.camera.toJSON());
   const touch = (type, points) => cdp.send('Input.dispatchTouchEvent', { type, touchPoints: points.map(([x, y], id) => ({ x, y, id })) });
   // One finger on empty ground (bottom left), dragged sideways.
   await touch('touchStart', [[200, 650]]);
   for (let k = 1; k <= 5; k++) await touch('touchMove', [[200 + 20 * k, 650]]);
   await touch('touchEnd', []);
-  const cam1 = await sb(() => window.screwbender.app.camera.toJSON());
+  const cam1 = await sb(() => window.screwbender.app.viewer.camera.toJSON());
   assert.ok(Math.abs(cam1.yaw - cam0.yaw) > 0.2, `yaw ${cam0.yaw} -> ${cam1.yaw}`);
   // Two fingers moving apart zoom in.
   await touch('touchStart', [[200, 650], [260, 650]]);
   for (let k = 1; k <= 5; k++) await touch('touchMove', [[200 - 10 * k, 650], [260 + 10 * k, 650]]);
   await touch('touchEnd', []);
-  const cam2 = await sb(() => window.screwbender.app.camera.toJSON());
+  const cam2 = await sb(() => window.screwbender.app.viewer.camera.toJSON());
   assert.ok(cam2.distance < cam1.distance * 0.8, `distance ${cam1.distance} -> ${cam2.distance}`);
   await cdp.detach();
 });

@@ -75,8 +75,8 @@ test(`${BACKEND}: ?preset=bunny6 opens the bunny preset with the Stanford bunny 
 test(`${BACKEND}: over an autosaved session, ?preset= is one undo step`, async () => {
   const first = await open('');
   try {
-    await first.page.evaluate(() => window.screwbender.app.loadPreset('pendulum'));
-    await first.page.evaluate(() => window.screwbender.app.autosave());
+    await first.page.evaluate(() => window.screwbender.app.run('loadPreset', 'pendulum'));
+    await first.page.evaluate(() => window.screwbender.app.parts.session.autosave());
     await first.page.close();
     const { page, problems } = await open('?preset=cylinder5', first.context);
     assert.equal(await page.evaluate(() => window.screwbender.app.view.scene), 'cylinder5');

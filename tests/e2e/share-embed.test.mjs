@@ -36,15 +36,15 @@ before(async () => {
   // A motion unlike the defaults: scheme, levels, strobe, layers and camera all changed.
   await page.evaluate(() => {
     const { app } = window.screwbender;
-    app.loadPreset('l_cycle_rotated');
-    app.setScheme('fourpoint');
-    app.setOption('levels', 3);
-    app.setView('strobe', 24);
-    app.setView('showGrid', false);
-    app.setView('showPolyscrew', true);
-    app.camera.yaw = 0.4;
-    app.camera.pitch = 0.6;
-    app.camera.distance *= 1.25;
+    app.run('loadPreset', 'l_cycle_rotated');
+    app.run('setScheme', 'fourpoint');
+    app.run('setOption', 'levels', 3);
+    app.run('setView', 'strobe', 24);
+    app.run('setView', 'showGrid', false);
+    app.run('setView', 'showPolyscrew', true);
+    app.viewer.camera.yaw = 0.4;
+    app.viewer.camera.pitch = 0.6;
+    app.viewer.camera.distance *= 1.25;
     app.viewer.cameraMoved();
   });
   await waitFrames(page, 2);
@@ -484,7 +484,7 @@ test('Download .html: one file that works from file:// with the network blocked 
 });
 
 test('Download .html of the bunny preset: the Stanford bunny travels inside the file', async () => {
-  await page.evaluate(() => window.screwbender.app.loadPreset('bunny6'));
+  await page.evaluate(() => window.screwbender.app.run('loadPreset', 'bunny6'));
   await page.waitForFunction(() => window.screwbender.app.viewer.drawing.bunny);
   await openDialog();
   const got = page.waitForEvent('download', { timeout: 60000 });
@@ -507,15 +507,15 @@ test('Download .html of the bunny preset: the Stanford bunny travels inside the 
     await context.close();
   }
   // Without the bunny, the file holds no mesh.
-  await page.evaluate(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  await page.evaluate(() => window.screwbender.app.run('loadPreset', 'l_cycle_rotated'));
   const other = page.waitForEvent('download', { timeout: 60000 });
   await openDialog();
   await page.click('#share-download');
   const d2 = await other;
   await page.keyboard.press('Escape');
   assert.doesNotMatch(fs.readFileSync(await d2.path(), 'utf8'), /id="screwbender-bunny"/);
-  await page.evaluate(() => window.screwbender.app.undo());
-  await page.evaluate(() => window.screwbender.app.undo());
+  await page.evaluate(() => window.screwbender.app.parts.session.undo());
+  await page.evaluate(() => window.screwbender.app.parts.session.undo());
 });
 
 test('the dialog changes nothing in the playground', async () => {

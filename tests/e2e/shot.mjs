@@ -6,7 +6,7 @@ const browser = await launch(backend);
 const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
 const { page, problems } = await openPage(context, url, backend);
 if (preset) {
-  await page.evaluate((id) => window.screwbender.app.loadPreset(id), preset);
+  await page.evaluate((id) => window.screwbender.app.run('loadPreset', id), preset);
   await waitFrames(page, 2);
 }
 if (view) {

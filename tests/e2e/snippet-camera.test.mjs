@@ -22,7 +22,7 @@ after(async () => {
 });
 
 /** The playground's camera. */
-const pageCamera = () => page.evaluate(() => window.screwbender.app.camera.toJSON());
+const pageCamera = () => page.evaluate(() => window.screwbender.app.viewer.camera.toJSON());
 
 /** Serves `html` at `name` on the test server's origin. */
 async function hostPage(name, html) {

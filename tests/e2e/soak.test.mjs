@@ -106,7 +106,7 @@ function randomOps({ seed, count }) {
             d[0] * y - d[1] * z + d[2] * w + d[3] * x,
             d[0] * z + d[1] * y - d[2] * x + d[3] * w,
           ];
-          app.edit(() => app.motion.setPose(i, { origin, rotation: unit(q) }), rand() < 0.3 ? 'soak' : null);
+          app.parts.session.edit(() => app.motion.setPose(i, { origin, rotation: unit(q) }), rand() < 0.3 ? 'soak' : null);
           break;
         }
         case 'select':
@@ -114,38 +114,38 @@ function randomOps({ seed, count }) {
           break;
         case 'insert':
           if (app.selected < 0) app.select(Math.floor(rand() * n));
-          app.insertAfterSelected();
+          app.run('insertPose');
           break;
         case 'delete':
           if (app.selected < 0) app.select(Math.floor(rand() * n));
-          app.deleteSelected();
+          app.run('deletePose');
           break;
         case 'undo':
-          app.undo();
+          app.parts.session.undo();
           break;
         case 'redo':
-          app.redo();
+          app.parts.session.redo();
           break;
         case 'levels':
-          app.setOption('levels', Math.floor(rand() * 7));
+          app.run('setOption', 'levels', Math.floor(rand() * 7));
           break;
         case 'scheme':
-          app.setScheme(pick(['bspline', 'fourpoint', 'jarek']));
+          app.run('setScheme', pick(['bspline', 'fourpoint', 'jarek']));
           break;
         case 'j':
-          app.setS(Math.round(rand() * 100) / 100);
+          app.run('setS', Math.round(rand() * 100) / 100);
           break;
         case 'rules':
-          app.setOption('rules', pick(['direct', 'split']));
+          app.run('setOption', 'rules', pick(['direct', 'split']));
           break;
         case 'closed':
-          app.setClosed(rand() < 0.5);
+          app.run('setClosed', rand() < 0.5);
           break;
         case 'mode':
           app.setMode(pick(['translate', 'rotate']));
           break;
         case 'preset':
-          app.loadPreset(pick(presets));
+          app.run('loadPreset', pick(presets));
           break;
       }
     } catch (e) {
@@ -201,7 +201,7 @@ test(`${BACKEND}: soak: random edits and drags keep the page healthy (seed ${SEE
         from = { x: 100 + rand() * 600, y: 150 + rand() * 400 };
       }
       if (!onScreen(from)) {
-        await sb(() => window.screwbender.app.frameAll());
+        await sb(() => window.screwbender.app.parts.viewpoint.fit());
         continue;
       }
       await drag(from, (rand() - 0.5) * 160, (rand() - 0.5) * 160);
@@ -226,7 +226,7 @@ test(`${BACKEND}: soak: random edits and drags keep the page healthy (seed ${SEE
   // Export → import gives the same session (the camera is not part of an import).
   const noCamera = (s) => JSON.stringify({ ...JSON.parse(s), camera: undefined });
   const exported = await sb(() => JSON.stringify(window.screwbender.session()));
-  assert.equal(await sb((t) => window.screwbender.app.importJson(t), exported), true, `${where()}: re-import failed`);
+  assert.equal(await sb((t) => window.screwbender.app.parts.files.importJson(t), exported), true, `${where()}: re-import failed`);
   const reimported = await sb(() => JSON.stringify(window.screwbender.session()));
   assert.equal(noCamera(reimported), noCamera(exported), `${where()}: the re-imported session differs`);
 

@@ -33,7 +33,7 @@ test(`${BACKEND}: the methods table on the L cycle: C¹ jumps are 0, SLERP + lin
   await page.setViewportSize({ width: 1280, height: 800 });
   const r = await sb(async () => {
     const { app } = window.screwbender;
-    app.loadPreset('l_cycle_rotated');
+    app.run('loadPreset', 'l_cycle_rotated');
     await window.screwbender.openView('methods');
     app.dock.current.select(['fourpoint', 'decoupled', 'slerp']);
     window.screwbender.flushViews();
@@ -64,7 +64,7 @@ test(`${BACKEND}: the methods table on the L cycle: C¹ jumps are 0, SLERP + lin
       const L = span(i + n - 1);
       const R = span(i);
       wj = Math.max(wj, Math.hypot(...R.w.map((x, k) => x - L.w[k])));
-      for (const p of app.bodyPoints().slice(0, 2)) {
+      for (const p of app.viewer.bodyPoints().slice(0, 2)) {
         const rp = rot(P[i].rotation, p);
         const vl = L.d.map((x, k) => x + cross(L.w, rp)[k]);
         const vr = R.d.map((x, k) => x + cross(R.w, rp)[k]);
@@ -109,8 +109,8 @@ test(`${BACKEND}: Ease in / out gives du/dt = 0 at both ends, keeps the times, s
   await page.setViewportSize({ width: 1280, height: 800 });
   await sb(async () => {
     const { app } = window.screwbender;
-    app.loadPreset('cylinder5');
-    app.setTimes([0, 1, 3, 4, 6, 7]);
+    app.run('loadPreset', 'cylinder5');
+    app.run('setTimes', [0, 1, 3, 4, 6, 7]);
     await window.screwbender.openView('timing');
     window.screwbender.flushViews();
   });
@@ -128,7 +128,7 @@ test(`${BACKEND}: Ease in / out gives du/dt = 0 at both ends, keeps the times, s
   assert.deepEqual(await sb(() => window.screwbender.app.keyTimes()), [0, 1, 3, 4, 6, 7]);
   // An open motion: both end poses.
   await sb(() => {
-    window.screwbender.app.setClosed(false);
+    window.screwbender.app.run('setClosed', false);
     window.screwbender.flushViews();
   });
   await page.locator('#dock section[data-view=timing] button', { hasText: 'Ease in / out' }).click();
@@ -163,7 +163,7 @@ test(`${BACKEND}: the lesson card never covers the step's highlight, the open do
           };
           const card = box(document.getElementById('lesson'));
           const dock = document.querySelector('#dock.open');
-          const sel = app.selected >= 0 ? app.screenOfPose(app.selected) : null;
+          const sel = app.selected >= 0 ? app.viewer.screenOfPose(app.selected) : null;
           return {
             card,
             spot: L.spot(),
@@ -278,7 +278,7 @@ test(`${BACKEND}: every toolbar state (off, on, hover on either, disabled) reads
   await page.setViewportSize({ width: 1280, height: 800 });
   await sb(() => {
     const { app } = window.screwbender;
-    app.loadPreset('cylinder5');
+    app.run('loadPreset', 'cylinder5');
     app.select(-1);
     app.setMode('translate');
   });
@@ -333,7 +333,7 @@ test(`${BACKEND}: the Top view frames the poses below the header, above the time
     await waitFrames(page, 1);
     await sb(() => {
       const { app } = window.screwbender;
-      app.loadPreset('l_cycle_rotated');
+      app.run('loadPreset', 'l_cycle_rotated');
       app.select(-1);
       app.ui.gui.open();
     });
@@ -343,10 +343,10 @@ test(`${BACKEND}: the Top view frames the poses below the header, above the time
     await waitFrames(page, 2);
     const g = await sb(async () => {
       const { app } = window.screwbender;
-      const { toPage } = await import('./js/view/picking.js');
+      const { toPage } = await import('./js/figure/picking.js');
       // The body points' trajectories (what the view draws of the motion), 120 samples each.
       const traj = [];
-      for (const b of app.bodyPoints()) {
+      for (const b of app.viewer.bodyPoints()) {
         const d = app.motion.timedKinematics(120, b);
         for (let k = 0; k < 120; k++) traj.push(toPage(app.viewer, [d[16 * k + 1], d[16 * k + 2], d[16 * k + 3]]));
       }
@@ -357,7 +357,7 @@ test(`${BACKEND}: the Top view frames the poses below the header, above the time
         return r.width > 0 ? { left: r.left, top: r.top, right: r.right, bottom: r.bottom } : null;
       };
       return {
-        pts: [...Array.from({ length: app.motion.poseCount }, (_, k) => app.screenOfPose(k)), ...traj],
+        pts: [...Array.from({ length: app.motion.poseCount }, (_, k) => app.viewer.screenOfPose(k)), ...traj],
         title: rect('title'),
         hint: rect('hint'),
         timeline: rect('timeline'),
@@ -383,16 +383,16 @@ test(`${BACKEND}: a preset is framed clear of the panel and the dock: pose 2's r
     app.ui.gui.open();
     await window.screwbender.openView('axes');
     window.screwbender.flushViews();
-    app.loadPreset('cylinder5');
+    app.run('loadPreset', 'cylinder5');
     app.select(2);
     app.setMode('rotate');
   });
   await waitFrames(page, 2);
   const g = await sb(() => {
     const { app } = window.screwbender;
-    const c = app.screenOfPose(2);
+    const c = app.viewer.screenOfPose(2);
     const radius = Math.max(...['ring-x', 'ring-y', 'ring-z'].map((n) => {
-      const p = app.screenOfGizmo(n);
+      const p = app.viewer.screenOfGizmo(n);
       return Math.hypot(p.x - c.x, p.y - c.y);
     }));
     const panel = document.getElementById('panel').getBoundingClientRect();

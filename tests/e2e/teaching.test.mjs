@@ -1,5 +1,5 @@
 // e2e-backends: webgpu (computed on the CPU, the same on either backend: once)
-// End-to-end tests of the teaching views of the analysis dock (www/js/views/axes.js, steps.js,
+// End-to-end tests of the teaching views of the analysis dock (www/js/dock/axes.js, steps.js,
 // polygon.js, frame.js) in headless Chromium:
 //
 //   E2E_BACKEND=webgpu|webgl2 node --test tests/e2e/teaching.test.mjs
@@ -32,7 +32,7 @@ const sb = (f, arg) => page.evaluate(f, arg);
 
 async function preset(id) {
   await sb((p) => {
-    window.screwbender.app.loadPreset(p);
+    window.screwbender.app.run('loadPreset', p);
     window.screwbender.app.select(-1);
   }, id);
   await waitFrames(page, 1);
@@ -52,7 +52,7 @@ async function editPose(dx, dy) {
   await sb(([x, y]) => {
     const app = window.screwbender.app;
     const p = app.motion.pose(1);
-    app.edit(() => app.motion.setPose(1, { origin: [p.origin[0] + x, p.origin[1] + y, p.origin[2]], rotation: p.rotation }));
+    app.parts.session.edit(() => app.motion.setPose(1, { origin: [p.origin[0] + x, p.origin[1] + y, p.origin[2]], rotation: p.rotation }));
     window.screwbender.flushViews();
   }, [dx, dy]);
   await waitFrames(page, 1);
@@ -118,7 +118,7 @@ test(`${BACKEND}: screw axes view lists every span and follows edits and drags`,
     for (let i = 0; i < ends.length; i++) {
       if (!ends[i]) continue;
       const mid = ends[i][0].map((v, a) => (v + ends[i][1][a]) / 2);
-      const p = app.toPage(mid);
+      const p = app.viewer.toPage(mid);
       if (p && p.x > dock.right + 10 && p.x < 1000 && p.y > 150 && p.y < 740) return { i, ...p };
     }
     return null;
@@ -176,7 +176,7 @@ test(`${BACKEND}: split/tweak view steps with buttons and keys and follows the s
   await page.keyboard.press('[');
   assert.equal((await st()).index, 2);
   // Changing the rule set shows the V1 helper poses and changes the caption.
-  await sb(() => window.screwbender.app.setOption('rules', 'split'));
+  await sb(() => window.screwbender.app.run('setOption', 'rules', 'split'));
   await sb(() => window.screwbender.flushViews());
   await page.keyboard.press(']');
   s = await st();
@@ -186,7 +186,7 @@ test(`${BACKEND}: split/tweak view steps with buttons and keys and follows the s
   const beforeEdit = s.out;
   await editPose(1, 0);
   assert.notDeepEqual((await st()).out, beforeEdit);
-  await sb(() => window.screwbender.app.setOption('rules', 'direct'));
+  await sb(() => window.screwbender.app.run('setOption', 'rules', 'direct'));
   await sb(() => window.screwbender.app.dock.current.goTo(1));
   await waitFrames(page, 2);
   await shot('steps');
@@ -309,7 +309,7 @@ test(`${BACKEND}: frame view: screw trajectories ignore the local origin, decoup
   await sb(() => window.screwbender.app.dock.current.setOffset([1.5, 0, 0]));
   r = await res();
   assert.ok(r.ds < 1e-9 && r.dd > 0.1);
-  await sb(() => window.screwbender.app.frameAll());
+  await sb(() => window.screwbender.app.parts.viewpoint.fit());
   await waitFrames(page, 2);
   await shot('frame');
   noProblems();
@@ -332,7 +332,7 @@ test(`${BACKEND}: every preset in every teaching view (open, 2-pose, J_s, V1 rul
   }
   await preset('bunny6');
   for (const options of [{ scheme: 'j', j: 0.3 }, { scheme: 'jarek', rules: 'split' }, { scheme: 'bspline', rules: 'split' }]) {
-    await sb((o) => window.screwbender.app.edit(() => window.screwbender.app.motion.setOptions(o)), options);
+    await sb((o) => window.screwbender.app.parts.session.edit(() => window.screwbender.app.motion.setOptions(o)), options);
     for (const view of ['axes', 'steps', 'frame']) {
       await open(view);
       if (view === 'steps') await sb(() => window.screwbender.app.dock.current.goTo(3));

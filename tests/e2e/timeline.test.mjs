@@ -33,11 +33,16 @@ const banner = () => sb(() => (document.getElementById('banner').hidden ? '' : d
 async function timed() {
   await sb(() => {
     const { app } = window.screwbender;
-    app.loadPreset('l_cycle_rotated');
-    if (app.view.dock) app.openView('');
+    app.run('loadPreset', 'l_cycle_rotated');
+    if (app.view.dock) app.parts.dockHost.open('');
     document.getElementById('banner').hidden = true;
   });
-  assert.equal(await sb((t) => window.screwbender.app.setTimes(t), TIMES), null);
+  assert.equal(await sb((t) => {
+    const { app } = window.screwbender;
+    const shown = app.errors.length;
+    app.run('setTimes', t);
+    return app.errors.slice(shown).join(' ');
+  }, TIMES), '', 'setTimes applied without a message');
   assert.deepEqual(await times(), TIMES);
   await waitFrames(page, 1);
 }
@@ -65,9 +70,9 @@ async function drag(from, dx, steps = 10) {
 
 test(`${BACKEND}: timed playback reaches the key poses at the key times; the footer shows t and u`, async () => {
   // Uniform timing: pose i at i s, u = t exactly (as before the timeline was in seconds).
-  await sb(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  await sb(() => window.screwbender.app.run('loadPreset', 'l_cycle_rotated'));
   for (const t of [0, 0.5, 2.25, 5.75]) {
-    const ph = await sb((x) => (window.screwbender.app.seekTime(x), window.screwbender.app.playhead()), t);
+    const ph = await sb((x) => (window.screwbender.app.viewer.seekTime(x), window.screwbender.app.viewer.playhead()), t);
     assert.equal(ph.t, t);
     assert.equal(ph.u, t, `uniform: u at t = ${t}`);
   }
@@ -75,34 +80,34 @@ test(`${BACKEND}: timed playback reaches the key poses at the key times; the foo
   // Seeked to each key time, the view shows that key's pose (to 1e-9 in u; the cycle's last
   // time is pose 0 again).
   for (let i = 0; i < TIMES.length; i++) {
-    const ph = await sb((x) => (window.screwbender.app.seekTime(x), window.screwbender.app.playhead()), TIMES[i]);
+    const ph = await sb((x) => (window.screwbender.app.viewer.seekTime(x), window.screwbender.app.viewer.playhead()), TIMES[i]);
     assert.ok(Math.abs(ph.u - (i % 6)) < 1e-9, `u = ${ph.u} at t = ${TIMES[i]}, want ${i % 6}`);
   }
   // Between keys the pose is the retimed one: halfway through the long span 1 → 3 s, not u = 1.5
   // of the uniform timing but p(2) of the motion's own map.
   const mid = await sb(() => {
     const { app } = window.screwbender;
-    app.seekTime(2);
-    return { ph: app.playhead(), p: app.motion.parameterAt(2), text: document.getElementById('time').textContent };
+    app.viewer.seekTime(2);
+    return { ph: app.viewer.playhead(), p: app.motion.parameterAt(2), text: document.getElementById('time').textContent };
   });
   assert.equal(mid.ph.u, mid.p);
   assert.ok(mid.ph.u > 1 && mid.ph.u < 2);
   assert.equal(mid.text, `t = 2.00 s · u = ${mid.p.toFixed(2)}`);
   // The scrubber runs in seconds: its middle is t = 4.5 s.
   await page.locator('#scrub').fill('500');
-  const scrubbed = await sb(() => window.screwbender.app.playhead());
+  const scrubbed = await sb(() => window.screwbender.app.viewer.playhead());
   assert.ok(Math.abs(scrubbed.t - 4.5) < 1e-9, `scrubbed to t = ${scrubbed.t}`);
   // Playing advances t in seconds, and the pose shown is always p(t) (no duration asserted).
   const start = await sb(() => {
-    window.screwbender.app.seekTime(0.2);
-    window.screwbender.app.setPlaying(true);
-    return window.screwbender.app.playhead().t;
+    window.screwbender.app.viewer.seekTime(0.2);
+    window.screwbender.app.viewer.setPlaying(true);
+    return window.screwbender.app.viewer.playhead().t;
   });
-  await page.waitForFunction((t0) => window.screwbender.app.playhead().t > t0 + 0.05, start, { timeout: 60000 });
+  await page.waitForFunction((t0) => window.screwbender.app.viewer.playhead().t > t0 + 0.05, start, { timeout: 60000 });
   const during = await sb(() => {
     const { app } = window.screwbender;
-    const ph = app.playhead();
-    app.setPlaying(false);
+    const ph = app.viewer.playhead();
+    app.viewer.setPlaying(false);
     return { ph, p: app.motion.parameterAt(ph.t) };
   });
   assert.equal(during.ph.u, during.p, `playing: u = ${during.ph.u} at t = ${during.ph.t}`);
@@ -122,13 +127,13 @@ test(`${BACKEND}: a key marker dragged with the mouse retimes the key as one und
   assert.deepEqual(after.filter((_, i) => i !== 2), TIMES.filter((_, i) => i !== 2));
   assert.equal(await sb(() => window.screwbender.app.history.undoStack.length), undoBefore + 1, 'one undo step per drag');
   // The playback follows: at the new key time the view shows pose 2.
-  const ph = await sb((t) => (window.screwbender.app.seekTime(t), window.screwbender.app.playhead()), after[2]);
+  const ph = await sb((t) => (window.screwbender.app.viewer.seekTime(t), window.screwbender.app.viewer.playhead()), after[2]);
   assert.ok(Math.abs(ph.u - 2) < 1e-9, `u = ${ph.u} at the dragged key`);
   // The marker's accessible value follows.
   assert.equal(await page.locator('#keys .key-marker[data-key="2"]').getAttribute('aria-valuenow'), String(after[2]));
-  await sb(() => window.screwbender.app.undo());
+  await sb(() => window.screwbender.app.parts.session.undo());
   assert.deepEqual(await times(), TIMES);
-  await sb(() => window.screwbender.app.redo());
+  await sb(() => window.screwbender.app.parts.session.redo());
   assert.deepEqual(await times(), after);
   assert.deepEqual(problems, []);
 });
@@ -198,9 +203,9 @@ test(`${BACKEND}: a run of arrow presses on one marker is one undo step; idle, b
   let want = await expectedSteps(0);
   assert.equal(want.count, 5);
   assert.equal((await undoLength()) - u0, want.steps, 'a quick run of presses on one marker: one undo step (unless the machine stalled a second)');
-  for (let k = 0; k < want.steps; k++) await sb(() => window.screwbender.app.undo());
+  for (let k = 0; k < want.steps; k++) await sb(() => window.screwbender.app.parts.session.undo());
   assert.deepEqual(await times(), TIMES, 'undoing the run gives the times before it');
-  await sb(() => window.screwbender.app.redo());
+  await sb(() => window.screwbender.app.parts.session.redo());
   // Another marker (Tab: the next one) starts a step; so does coming back (Shift+Tab).
   await sb(() => (window.__markerKeys = []));
   await m3.focus();
@@ -227,13 +232,13 @@ test(`${BACKEND}: a run of arrow presses on one marker is one undo step; idle, b
   assert.equal((await undoLength()) - u0, 1, 'a press after a blur: a new step');
   // An undo in the middle of a run: the next press is a new step (never folded into a step
   // that is no longer on the stack), and the redo stack is dropped.
-  await sb(() => window.screwbender.app.undo());
+  await sb(() => window.screwbender.app.parts.session.undo());
   const undone = await times();
   u0 = await undoLength();
   await page.keyboard.press('ArrowRight');
   assert.equal((await undoLength()) - u0, 1, 'a press after an undo: a new step');
   assert.equal(await sb(() => window.screwbender.app.history.canRedo), false);
-  await sb(() => window.screwbender.app.undo());
+  await sb(() => window.screwbender.app.parts.session.undo());
   assert.deepEqual(await times(), undone);
   assert.deepEqual(problems, []);
 });
@@ -245,11 +250,16 @@ test(`${BACKEND}: phone (390×844, touch): close markers split their 44 px hit a
     const ev = (f, arg) => phone.evaluate(f, arg);
     await ev(() => {
       const { app } = window.screwbender;
-      app.loadPreset('l_cycle_rotated');
-      app.openView('');
+      app.run('loadPreset', 'l_cycle_rotated');
+      app.parts.dockHost.open('');
       document.getElementById('banner').hidden = true;
     });
-    assert.equal(await ev((t) => window.screwbender.app.setTimes(t), TIMES), null);
+    assert.equal(await ev((t) => {
+    const { app } = window.screwbender;
+    const shown = app.errors.length;
+    app.run('setTimes', t);
+    return app.errors.slice(shown).join(' ');
+  }, TIMES), '', 'setTimes applied without a message');
     await waitFrames(phone, 1);
     const box = (k) =>
       ev((i) => document.querySelector(`#keys .key-marker[data-key="${i}"]`).getBoundingClientRect().toJSON(), k);
@@ -259,7 +269,12 @@ test(`${BACKEND}: phone (390×844, touch): close markers split their 44 px hit a
     const b6 = await box(6);
     const perSecond = (b6.x - b0.x) / 9;
     const close = [0, 1, 3, Number((3 + 30 / perSecond).toFixed(2)), 6, 7, 9];
-    assert.equal(await ev((t) => window.screwbender.app.setTimes(t), close), null);
+    assert.equal(await ev((t) => {
+    const { app } = window.screwbender;
+    const shown = app.errors.length;
+    app.run('setTimes', t);
+    return app.errors.slice(shown).join(' ');
+  }, close), '', 'setTimes applied without a message');
     await waitFrames(phone, 1);
     const [l, r] = [await box(2), await box(3)];
     assert.ok(l.width >= 44 - 0.5 && l.height >= 44 - 0.5, `marker ${l.width}×${l.height}`);
@@ -297,7 +312,7 @@ test(`${BACKEND}: phone (390×844, touch): close markers split their 44 px hit a
 
 test(`${BACKEND}: a key velocity edited in the Timing view holds in the playback; bad velocities are refused`, async () => {
   await timed();
-  await sb(() => window.screwbender.app.openView('timing'));
+  await sb(() => window.screwbender.app.parts.dockHost.open('timing'));
   await sb(() => window.screwbender.flushViews());
   const section = '#dock section[data-view=timing]';
   const vin = page.locator(`${section} input[aria-label^="velocity of pose"]`);
@@ -312,7 +327,7 @@ test(`${BACKEND}: a key velocity edited in the Timing view holds in the playback
   const h = 1e-6;
   const [lo, hi] = await sb((hh) => {
     const { app } = window.screwbender;
-    const at = (t) => (app.seekTime(t), app.playhead().u);
+    const at = (t) => (app.viewer.seekTime(t), app.viewer.playhead().u);
     return [at(1 - hh), at(1 + hh)];
   }, h);
   const rate = (hi - lo) / (2 * h);
@@ -331,13 +346,18 @@ test(`${BACKEND}: a key velocity edited in the Timing view holds in the playback
   await vin.nth(1).fill('');
   await vin.nth(1).dispatchEvent('change');
   assert.equal(await sb(() => window.screwbender.app.velocities()), null);
-  await sb(() => window.screwbender.app.openView(''));
+  await sb(() => window.screwbender.app.parts.dockHost.open(''));
   assert.deepEqual(problems, []);
 });
 
 test(`${BACKEND}: the CSV and glTF exports follow the motion's key times and velocities`, async () => {
   await timed();
-  assert.equal(await sb(() => window.screwbender.app.setVelocities([null, 0.25, null, 2, null, null])), null);
+  assert.equal(await sb(() => {
+    const { app } = window.screwbender;
+    const shown = app.errors.length;
+    app.run('setVelocities', [null, 0.25, null, 2, null, null]);
+    return app.errors.slice(shown).join(' ');
+  }), '', 'setVelocities applied without a message');
   const out = await sb(async () => {
     const { exportMotion } = await import('./js/editor/files.js');
     const { app } = window.screwbender;
@@ -366,11 +386,16 @@ test(`${BACKEND}: the CSV and glTF exports follow the motion's key times and vel
 
 test(`${BACKEND}: times and velocities survive a reload and a share link; old sessions' view.times load`, async () => {
   await timed();
-  assert.equal(await sb(() => window.screwbender.app.setVelocities([null, 0.5, null, null, null, null])), null);
+  assert.equal(await sb(() => {
+    const { app } = window.screwbender;
+    const shown = app.errors.length;
+    app.run('setVelocities', [null, 0.5, null, null, null, null]);
+    return app.errors.slice(shown).join(' ');
+  }), '', 'setVelocities applied without a message');
   const want = await json();
-  const link = await sb(() => window.screwbender.app.shareLink());
+  const link = await sb(() => window.screwbender.app.parts.session.shareLink());
   // Reload: the autosave restores the motion with its timing.
-  await sb(() => window.screwbender.app.autosave());
+  await sb(() => window.screwbender.app.parts.session.autosave());
   await page.reload();
   await sb(() => window.screwbender.ready);
   assert.equal(await json(), want);
@@ -447,15 +472,15 @@ test(`${BACKEND}: on a phone, a shared timed motion's key markers are touch targ
   await timed();
   await sb(async () => {
     const { app } = window.screwbender;
-    app.setVelocities([null, 0.25, null, null, null, null]);
-    await app.openView('timing');
-    app.seekTime(3.5);
+    app.run('setVelocities', [null, 0.25, null, null, null, null]);
+    await app.parts.dockHost.open('timing');
+    app.viewer.seekTime(3.5);
   });
-  const link = await sb(() => window.screwbender.app.shareLink());
+  const link = await sb(() => window.screwbender.app.parts.session.shareLink());
   const ctx = await play.browser.newContext({ viewport: { width: 390, height: 844 }, hasTouch: true, isMobile: true, deviceScaleFactor: 2 });
   try {
     const { page: phone, problems: phoneProblems } = await openPage(ctx, play.url, BACKEND, { path: link.slice(link.indexOf('#')) });
-    await phone.evaluate(() => window.screwbender.app.openView(''));
+    await phone.evaluate(() => window.screwbender.app.parts.dockHost.open(''));
     // Every marker is a touch target of at least 44 px, on screen.
     const boxes = await phone.evaluate(() => [...document.querySelectorAll('#keys .key-marker')].map((m) => m.getBoundingClientRect().toJSON()));
     assert.equal(boxes.length, 7);

@@ -17,20 +17,25 @@ let problems;
 /** A blank page (no content security policy) where the videos are played. */
 let blank;
 
-/** The light background as displayed (www/js/view/slots.js BACKGROUND), 0..255. */
+/** The light background as displayed (www/js/figure/slots.js BACKGROUND), 0..255. */
 const LIGHT = [232, 236, 241];
 
 before(async () => {
   ({ play, page, problems } = await playgroundPage({ acceptDownloads: true }));
   blank = await play.context.newPage();
   await page.bringToFront();
-  await page.evaluate(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  await page.evaluate(() => window.screwbender.app.run('loadPreset', 'l_cycle_rotated'));
   await page.evaluate(() => document.querySelector('#hint .close')?.click());
   // A small view: software encoding on a loaded machine takes its time.
   await page.setViewportSize({ width: 480, height: 320 });
   await waitFrames(page, 2);
   // Retimed (key times in seconds, 0.4 s per span): the video follows the timeline's seconds.
-  assert.equal(await page.evaluate(() => window.screwbender.app.setTimes([0, 0.4, 0.8, 1.2, 1.6, 2.0, 2.4])), null);
+  assert.equal(await page.evaluate(() => {
+    const { app } = window.screwbender;
+    const shown = app.errors.length;
+    app.run('setTimes', [0, 0.4, 0.8, 1.2, 1.6, 2.0, 2.4]);
+    return app.errors.slice(shown).join(' ');
+  }), '', 'setTimes applied without a message');
 });
 
 after(async () => {
@@ -89,7 +94,7 @@ const cycle = () =>
 
 /** Checks what a <video> makes of a recording of `want` frames at the view's size. */
 async function checkPlayback(bytes, type, want) {
-  const { w, h } = await page.evaluate(() => window.screwbender.app.pixelSize());
+  const { w, h } = await page.evaluate(() => window.screwbender.app.viewer.pixelSize());
   const video = await playVideo(bytes, type);
   assert.deepEqual([video.width, video.height], [w & ~1, h & ~1], "the view's size (even sides)");
   // The player's duration: the frames' span, to a frame.

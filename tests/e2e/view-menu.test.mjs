@@ -19,7 +19,7 @@ let problems;
 
 before(async () => {
   ({ play, page, problems } = await playgroundPage({ acceptDownloads: true }));
-  await page.evaluate(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  await page.evaluate(() => window.screwbender.app.run('loadPreset', 'l_cycle_rotated'));
   // The first-visit hint moves with the layout; it is not what these tests are about.
   await page.evaluate(() => document.querySelector('#hint .close')?.click());
   await waitFrames(page, 2);
@@ -35,7 +35,7 @@ async function menuClick(item) {
   await page.click(item);
 }
 
-const camera = () => page.evaluate(() => ({ ...window.screwbender.app.camera.toJSON() }));
+const camera = () => page.evaluate(() => ({ ...window.screwbender.app.viewer.camera.toJSON() }));
 
 test('camera presets by key and by menu set the view direction', async () => {
   const EPS = 1e-12;
@@ -73,12 +73,12 @@ test('orthographic: the projection changes, persists, and a real click still sel
   await waitFrames(page, 2);
   const s = await page.evaluate(() => {
     const { app } = window.screwbender;
-    const p = app.camera.proj();
-    return { ortho: app.camera.ortho, p11: p[11], p15: p[15], saved: app.session().camera.ortho };
+    const p = app.viewer.camera.proj();
+    return { ortho: app.viewer.camera.ortho, p11: p[11], p15: p[15], saved: app.parts.session.session().camera.ortho };
   });
   assert.deepEqual(s, { ortho: true, p11: 0, p15: 1, saved: true });
   assert.equal(await page.locator('#m-ortho').getAttribute('aria-pressed'), 'true');
-  await page.evaluate(() => window.screwbender.app.frameAll());
+  await page.evaluate(() => window.screwbender.app.parts.viewpoint.fit());
   await waitFrames(page, 2);
   for (const k of [1, 3]) {
     await page.evaluate(() => window.screwbender.app.select(-1));
@@ -96,8 +96,8 @@ test('orthographic: the projection changes, persists, and a real click still sel
   // O toggles back to perspective.
   await page.focus('#view');
   await page.keyboard.press('o');
-  assert.equal(await page.evaluate(() => window.screwbender.app.camera.ortho), false);
-  assert.equal(await page.evaluate(() => window.screwbender.app.camera.proj()[11]), -1);
+  assert.equal(await page.evaluate(() => window.screwbender.app.viewer.camera.ortho), false);
+  assert.equal(await page.evaluate(() => window.screwbender.app.viewer.camera.proj()[11]), -1);
 });
 
 test('the View menu at phone size and at 1280×800: on screen, by keyboard, Esc closes it', async () => {
@@ -183,7 +183,12 @@ test('without a video encoder: a clear message, nothing changes, no exception', 
 test('MP4 without an H.264 encoder: a WebM instead, and a message saying why', async () => {
   // A small view and a short cycle (0.4 s per span): encoding in software takes its time.
   await page.setViewportSize({ width: 480, height: 320 });
-  assert.equal(await page.evaluate(() => window.screwbender.app.setTimes([0, 0.4, 0.8, 1.2, 1.6, 2.0, 2.4])), null);
+  assert.equal(await page.evaluate(() => {
+    const { app } = window.screwbender;
+    const shown = app.errors.length;
+    app.run('setTimes', [0, 0.4, 0.8, 1.2, 1.6, 2.0, 2.4]);
+    return app.errors.slice(shown).join(' ');
+  }), '', 'setTimes applied without a message');
   // This browser's encoder is asked for H.264 and says no (as a browser without one does).
   await page.evaluate(() => {
     window.__isConfigSupported = VideoEncoder.isConfigSupported;

@@ -25,7 +25,7 @@ const sb = (f, arg) => page.evaluate(f, arg);
 
 /** Opens view `id` by clicking its tab (the dock opens with the toolbar button first). */
 async function openView(id, preset = 'l_cycle_rotated') {
-  await sb((p) => window.screwbender.app.loadPreset(p), preset);
+  await sb((p) => window.screwbender.app.run('loadPreset', p), preset);
   if (!(await sb(() => !!window.screwbender.app.view.dock))) await page.locator('#t-dock').click();
   const tab = page.locator(`#dock .tabs button[data-view=${id}]`);
   if (!(await tab.evaluate((b) => b.classList.contains('on')))) {
@@ -107,13 +107,13 @@ test(`${BACKEND}: Metrics of the current motion: 4-point interpolates, B-spline 
   const four = await last();
   assert.ok(four.fourPointGap < 1e-12, `4-point gap ${four.fourPointGap}`);
   assert.ok(four.row.interpolation_error < 1e-12);
-  await sb(() => window.screwbender.app.setScheme('bspline'));
+  await sb(() => window.screwbender.app.run('setScheme', 'bspline'));
   await sb(() => window.screwbender.flushViews());
   const bs = await last();
   assert.ok(bs.row.interpolation_error > 0.1, 'B-spline does not interpolate');
   assert.ok(bs.row.acceleration_jump < four.row.acceleration_jump / 5, `${bs.row.acceleration_jump} vs ${four.row.acceleration_jump}`);
   // More levels: smaller jumps (the limit is C²).
-  await sb(() => window.screwbender.app.setOption('levels', 7));
+  await sb(() => window.screwbender.app.run('setOption', 'levels', 7));
   await sb(() => window.screwbender.flushViews());
   const fine = await last();
   assert.ok(fine.row.acceleration_jump < bs.row.acceleration_jump, `${fine.row.acceleration_jump} < ${bs.row.acceleration_jump}`);
@@ -162,11 +162,11 @@ test(`${BACKEND}: Timing retimes the plots; bad times are refused and change not
   // Inserting a pose keeps the timing: the new key is reached halfway between its neighbours.
   await sb(() => {
     window.screwbender.app.select(2);
-    window.screwbender.app.insertAfterSelected();
+    window.screwbender.app.run('insertPose');
   });
   assert.deepEqual(await sb(() => window.screwbender.app.times()), [0, 1, 2, 2.5, 3, 4, 5, 12]);
   // Deleting it takes its time along.
-  await sb(() => window.screwbender.app.deleteSelected());
+  await sb(() => window.screwbender.app.run('deletePose'));
   assert.deepEqual(await sb(() => window.screwbender.app.times()), [0, 1, 2, 3, 4, 5, 12]);
   assert.deepEqual(problems, []);
 });
@@ -203,7 +203,7 @@ test(`${BACKEND}: Methods overlays three methods with metrics; the papers' claim
   await page.locator('#dock section[data-view=methods] select').nth(1).selectOption('kks');
   await sb(() => window.screwbender.flushViews());
   assert.deepEqual((await table()).rows.map((r) => r.method), ['rb', 'kks', 'jarek']);
-  await sb(() => window.screwbender.app.loadPreset('circle4'));
+  await sb(() => window.screwbender.app.run('loadPreset', 'circle4'));
   await sb(() => window.screwbender.flushViews());
   assert.equal(await page.locator('#dock section[data-view=methods] option[value=cc1]').first().evaluate((o) => o.disabled), true);
   await dragPose(40, 40);
@@ -227,16 +227,16 @@ test(`${BACKEND}: the open view survives a reload; V closes the dock`, async () 
 });
 
 test(`${BACKEND}: the morph scene (A8) strobes PIP morphs of the pose shapes`, async () => {
-  await sb(() => window.screwbender.app.loadPreset('pip_morph5'));
+  await sb(() => window.screwbender.app.run('loadPreset', 'pip_morph5'));
   await waitFrames(page, 2);
   const state = await sb(() => {
     const app = window.screwbender.app;
     // Triangle counts of morph meshes: at the star's pose its six convex pieces (a pentagonal
     // core prism, 16 triangles, and five triangular point prisms, 8 each); in between every
     // pair of pieces of the star and the block, combined.
-    const r = app.renderer;
+    const r = app.viewer.renderer;
     return {
-      morphing: app.morphing, slots: app.morphStrobeSlots, key: app.morphKey,
+      morphing: app.viewer.drawing.morphing, slots: app.viewer.drawing.morphStrobeSlots, key: app.viewer.drawing.morphKey,
       star: r.setMorphMesh(60, 'pip_morph5', true, 1), between: r.setMorphMesh(60, 'pip_morph5', true, 1.5),
     };
   });
@@ -247,8 +247,8 @@ test(`${BACKEND}: the morph scene (A8) strobes PIP morphs of the pose shapes`, a
   assert.ok(state.between > state.star, `${state.between} triangles between the star and the block`);
   // A drag rebuilds the strobe (meshes cached) without errors; bad input to the mesh is refused.
   await dragPose(30, 20);
-  await assert.rejects(sb(() => window.screwbender.app.renderer.setMorphMesh(60, 'nope', true, 0)), /unknown scene/);
-  await assert.rejects(sb(() => window.screwbender.app.renderer.setMorphMesh(60, 'pip_morph5', true, NaN)), /finite/);
+  await assert.rejects(sb(() => window.screwbender.app.viewer.renderer.setMorphMesh(60, 'nope', true, 0)), /unknown scene/);
+  await assert.rejects(sb(() => window.screwbender.app.viewer.renderer.setMorphMesh(60, 'pip_morph5', true, NaN)), /finite/);
   await page.screenshot({ path: path.join(ARTIFACTS, 'view-morph.png') });
   assert.deepEqual(problems, []);
 });

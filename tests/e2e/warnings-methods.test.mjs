@@ -26,10 +26,10 @@ after(async () => {
 const sb = (f, arg) => page.evaluate(f, arg);
 
 test(`${BACKEND}: a notice names the span where the split 4-point rule turns by half a turn`, async () => {
-  await sb(() => window.screwbender.app.loadPreset('circle4'));
+  await sb(() => window.screwbender.app.run('loadPreset', 'circle4'));
   const before = (await sb(() => window.screwbender.errors())).length;
-  await sb(() => window.screwbender.app.setScheme('fourpoint'));
-  await sb(() => window.screwbender.app.setOption('rules', 'split'));
+  await sb(() => window.screwbender.app.run('setScheme', 'fourpoint'));
+  await sb(() => window.screwbender.app.run('setOption', 'rules', 'split'));
   await waitFrames(page, 1);
   const errors = (await sb(() => window.screwbender.errors())).slice(before);
   assert.equal(errors.length, 1, errors.join('\n'));
@@ -40,18 +40,18 @@ test(`${BACKEND}: a notice names the span where the split 4-point rule turns by 
   await page.screenshot({ path: path.join(ARTIFACTS, 'warning-split-circle4.png') });
   // The direct rules are fine: no further notice; back to split, the same warning is not repeated
   // while it holds.
-  await sb(() => window.screwbender.app.setOption('rules', 'direct'));
-  await sb(() => window.screwbender.app.setOption('levels', 3));
+  await sb(() => window.screwbender.app.run('setOption', 'rules', 'direct'));
+  await sb(() => window.screwbender.app.run('setOption', 'levels', 3));
   assert.equal((await sb(() => window.screwbender.errors())).length, before + 1);
   // Five or more poses with the split rules: no notice.
-  await sb(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
-  await sb(() => window.screwbender.app.setOption('rules', 'split'));
+  await sb(() => window.screwbender.app.run('loadPreset', 'l_cycle_rotated'));
+  await sb(() => window.screwbender.app.run('setOption', 'rules', 'split'));
   assert.equal((await sb(() => window.screwbender.errors())).length, before + 1);
   assert.deepEqual(problems, []);
 });
 
 test(`${BACKEND}: Methods view plots Chaudhry–Cameron's vertices with end condition (18) or (19), and Barr et al. beside R–B`, async () => {
-  await sb(() => window.screwbender.app.loadPreset('triangle7'));
+  await sb(() => window.screwbender.app.run('loadPreset', 'triangle7'));
   await sb(() => window.screwbender.openView('methods'));
   await sb(() => window.screwbender.flushViews());
   const cc = () => sb(() => {
@@ -74,7 +74,7 @@ test(`${BACKEND}: Methods view plots Chaudhry–Cameron's vertices with end cond
   await waitFrames(page, 2);
   await page.screenshot({ path: path.join(ARTIFACTS, 'view-methods-cc19.png') });
   // Barr et al. beside R–B on scene C1.
-  await sb(() => window.screwbender.app.loadPreset('rb_sphere7'));
+  await sb(() => window.screwbender.app.run('loadPreset', 'rb_sphere7'));
   await sb(() => window.screwbender.flushViews());
   await sb(() => window.screwbender.app.dock.current.select(['rb', 'barr', 'jarek']));
   await sb(() => window.screwbender.flushViews());
@@ -92,7 +92,7 @@ test(`${BACKEND}: Methods view plots Chaudhry–Cameron's vertices with end cond
   await page.setViewportSize({ width: 390, height: 844 });
   await waitFrames(page, 3);
   await page.screenshot({ path: path.join(ARTIFACTS, 'view-methods-barr-phone.png') });
-  await sb(() => window.screwbender.app.loadPreset('triangle7'));
+  await sb(() => window.screwbender.app.run('loadPreset', 'triangle7'));
   await sb(() => window.screwbender.flushViews());
   await sb(() => document.querySelector('#dock section[data-view=methods] .cc h4').scrollIntoView({ block: 'start' }));
   await waitFrames(page, 2);

@@ -1,4 +1,4 @@
-// The analysis charts' series colours against the chart card (www/js/views/ink.js seriesInk,
+// The analysis charts' series colours against the chart card (www/js/dock/ink.js seriesInk,
 // WCAG 2.1 SC 1.4.11: graphical objects at least 3:1): every colour the chart views give their
 // series passes in both themes once drawn; colours that pass are drawn as they are, failing ones
 // keep their hue; other notations pass through; CHART_BG follows the dock's colours in
@@ -8,7 +8,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { describe, it } from 'node:test';
 import { fileURLToPath } from 'node:url';
-import { CHART_BG, CHART_INK, MIN_CONTRAST, PALETTE, contrast, seriesInk, seriesInkFor } from '../../www/js/views/ink.js';
+import { CHART_BG, CHART_INK, MIN_CONTRAST, PALETTE, contrast, seriesInk, seriesInkFor } from '../../www/js/dock/ink.js';
 
 const ROOT = path.join(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 const read = (p) => fs.readFileSync(path.join(ROOT, p), 'utf8');
@@ -20,10 +20,10 @@ const read = (p) => fs.readFileSync(path.join(ROOT, p), 'utf8');
 function seriesColours() {
   const out = new Set(PALETTE.map((c) => c.toLowerCase()));
   for (const f of ['plots.js', 'methods.js', 'timing.js']) {
-    for (const m of read(`www/js/views/${f}`).matchAll(/color: '(#[0-9a-fA-F]{6})'/g)) out.add(m[1].toLowerCase());
+    for (const m of read(`www/js/dock/${f}`).matchAll(/color: '(#[0-9a-fA-F]{6})'/g)) out.add(m[1].toLowerCase());
   }
   // methods.js's optimised Ramamoorthi–Barr curve takes a slot colour.
-  const slots = /const SLOT_COLORS = \[([^\]]*)\]/.exec(read('www/js/views/methods.js'));
+  const slots = /const SLOT_COLORS = \[([^\]]*)\]/.exec(read('www/js/dock/methods.js'));
   for (const m of slots[1].matchAll(/'(#[0-9a-fA-F]{6})'/g)) out.add(m[1].toLowerCase());
   return [...out];
 }
@@ -127,10 +127,10 @@ describe('chart series contrast (seriesInk)', () => {
   });
 });
 
-// The point-rules figure (www/js/views/polygon.js) draws on its own white canvas in both themes:
+// The point-rules figure (www/js/dock/polygon.js) draws on its own white canvas in both themes:
 // its lines, arrows, outlines and label are checked against that white.
 describe('point-rules figure contrast (polygon.js)', () => {
-  const src = read('www/js/views/polygon.js');
+  const src = read('www/js/dock/polygon.js');
 
   it('paints its canvas white before drawing', () => {
     assert.match(src, /g\.fillStyle = '#fff';\s*g\.fillRect\(0, 0, w, h\);/);

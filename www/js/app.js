@@ -1,20 +1,19 @@
-// The playground editor. The App is the one owner of the editing state (a wasm Motion, the
-// display settings, playback, the selection, the imported mesh): the rest of the page reads it
-// and changes it only through the App's commands (editor/commands.js, each one labelled undo
-// step: `app.run(name, …)`) and setters,
-// and follows it through `app.on(topic, fn)`. It runs the 3-D view (view/viewer.js) with that
-// state as the view's model, and puts the editor around it: panel, toolbar and timeline
-// (editor/ui.js), the analysis dock (editor/dock.js) and the parts below.
+// The playground's state and its signals, as the three.js editor's Editor keeps them. The App
+// is the one owner of the editing state (a wasm Motion, the display settings, playback, the
+// selection, the imported mesh): the rest of the page reads it and changes it only through the
+// named commands of editor/commands.js (`app.run(name, …)`, each one labelled undo step) and the
+// setters below, and follows it through `app.on(topic, fn)`. It starts the 3-D view
+// (figure/viewer.js) with that state as the view's model and the editor's parts around it; the
+// view, the chrome (editor/ui.js), the dock and the parts subscribe to the signals instead of
+// being called. Whatever belongs to the view is the viewer's (`app.viewer`), and whatever belongs
+// to a part is that part's (`app.parts[id]`).
 //
-// A part module default-exports a Part, { id, create(app) }, as the dock's views do (without an
-// element): `create` returns the part's instance, kept as app.parts[id]. A part reaches
-// everything through the app it is given (none imports app.js), and an instance with `bind()`
-// attaches its listeners once the view runs. The App methods that only forward to a part or to
-// the viewer are the API that ui.js, the analysis views, main.js and the tests use.
+// A part (typedef Part below) reaches everything through the app it is given (none imports
+// app.js).
 //
 // The first frame needs only the renderer's wasm module (editor/modules.js): the dock, its views
 // and the analysis module are fetched when a view is first opened (editor/dock-host.js).
-import { Viewer } from './view/viewer.js';
+import { Viewer } from './figure/viewer.js';
 import { buildUi } from './editor/ui.js';
 import { renderModule, glModule, analysisModule } from './editor/modules.js';
 import notices from './editor/notices.js';
@@ -22,7 +21,7 @@ import session, { History } from './editor/session.js';
 import files from './editor/files.js';
 import input from './editor/input.js';
 import pose from './editor/pose.js';
-import presets, { presetName } from './editor/presets.js';
+import presets, { DEFAULT_SCENE } from './editor/presets.js';
 import responsive from './editor/responsive.js';
 import labels from './editor/labels.js';
 import viewpoint from './editor/viewpoint.js';
@@ -31,15 +30,12 @@ import media from './editor/media.js';
 import drafts from './editor/drafts.js';
 import undoMenu from './editor/undo-menu.js';
 import dockHost from './editor/dock-host.js';
-import { runCommand, COMMANDS } from './editor/commands.js';
+import { runCommand } from './editor/commands.js';
 
 const PARTS = [notices, drafts, session, files, input, pose, presets, responsive, labels, viewpoint, theme, media, undoMenu, dockHost];
 
-/** Default preset on a first visit. */
-const DEFAULT_SCENE = 'l_cycle_rotated';
-
 /**
- * The display settings (app.view): saved with the session, undoable through `setView`.
+ * The display settings (app.view): saved with the session, undoable through the setView command.
  * @typedef {object} ViewState
  * @property {string} scene the preset last loaded
  * @property {string} object the moving object: 'scene' (the preset's), a shape, or 'obj' (imported)
@@ -59,7 +55,7 @@ const DEFAULT_SCENE = 'l_cycle_rotated';
  */
 
 /**
- * Playback (app.anim; view/viewer.js advances it while playing): u the parameter shown, t its
+ * Playback (app.anim; figure/viewer.js advances it while playing): u the parameter shown, t its
  * time in seconds (unknown until derived from u: tu is the u that t belongs to).
  * @typedef {object} Playback
  * @property {boolean} playing
@@ -74,12 +70,13 @@ const DEFAULT_SCENE = 'l_cycle_rotated';
 
 /**
  * What the App announces to `app.on(topic, fn)`: 'motion' (the Motion, its options or the
- * display changed and the view has been rebuilt: `changed`),
- * 'view' (display settings: fn gets the names changed), 'playback' (playhead, speed, loop; from
- * the view's frame loop with {u, a, b, playhead} as the playhead moves, {play: true} as playback
- * starts or stops), 'selection' (the selected pose or the gizmo mode: {what: 'pose' | 'mode',
- * redraw}, redraw false while a session is applied, which redraws everything), 'layout' (the part of the window the 3-D
- * view and the dock share: a lesson opened or closed).
+ * display changed, `changed`: {save}, save false where the change is no edit to keep; the view
+ * rebuilds first), 'view' (display settings: fn gets the names changed), 'playback' (playhead,
+ * speed, loop; from the view's frame loop with {u, a, b, playhead} as the playhead moves,
+ * {play: true} as playback starts or stops), 'selection' (the selected pose or the gizmo mode:
+ * {what: 'pose' | 'mode', redraw}, redraw false while a session is applied, which redraws
+ * everything), 'layout' (the part of the window the 3-D view and the dock share: a lesson
+ * opened or closed).
  * @typedef {'motion' | 'view' | 'playback' | 'selection' | 'layout'} Topic
  */
 
@@ -132,7 +129,7 @@ export class App {
     theme: 'auto',
     dock: '',
   };
-  /** @type {Playback} (t is unknown until the first motion: view/viewer.js playTime derives it from u) */
+  /** @type {Playback} (t is unknown until the first motion: figure/viewer.js playTime derives it from u) */
   #anim = { playing: false, u: 0, t: undefined, tu: undefined, speed: 1, loop: true, visible: false };
   #selected = -1;
   /** @type {'translate' | 'rotate'} */
@@ -141,21 +138,19 @@ export class App {
   #imported = null;
   /** @type {Map<Topic, Set<Function>>} */
   #listeners = new Map();
-  #viewFace = readOnly(this.#view, 'view', 'app.setView(key, value) (undoable) or app.updateView(patch)');
-  #animFace = readOnly(this.#anim, 'anim', 'app.setPlayback(patch), app.seekTime(t) or app.setPlaying(on)');
+  #viewFace = readOnly(this.#view, 'view', "app.run('setView', key, value) (undoable) or app.updateView(patch)");
+  #animFace = readOnly(this.#anim, 'anim', 'app.setPlayback(patch), app.viewer.seekTime(t) or app.viewer.setPlaying(on)');
 
   constructor() {
     this.history = new History();
     this.errors = [];
-    // Pointer state the viewer reads while a press is in progress (editor/input.js).
+    // Pointer state the viewer reads while a press is in progress (editor/input.js); hoverPose
+    // is unknown until the pointer first moves (that first move then sets the cursor).
     this.hover = null;
-    // Unknown until the pointer first moves (that first move then sets the cursor).
     this.hoverPose = undefined;
     this.drag = null;
-    /** @type {import('./editor/dock.js').Dock | null} the analysis dock once fetched (editor/dock-host.js) */
+    /** @type {import('./editor/dock.js').Dock | null} the analysis dock once fetched (its loading: editor/dock-host.js) */
     this.dock = null;
-    /** @type {string | undefined} the analysis view last open (the toolbar's dock button reopens it) */
-    this.lastView = undefined;
     this.parts = {};
     for (const p of PARTS) this.parts[p.id] = p.create(this);
   }
@@ -167,12 +162,12 @@ export class App {
     return this.#motion;
   }
 
-  /** The display settings, read-only: `setView` (undoable) or `updateView` change them. */
+  /** The display settings, read-only: the setView command (undoable) or `updateView` change them. */
   get view() {
     return this.#viewFace;
   }
 
-  /** Playback, read-only: `setPlayback`, `seekTime` and `setPlaying` change it. */
+  /** Playback, read-only: `setPlayback`, and the viewer's `seekTime` and `setPlaying`, change it. */
   get anim() {
     return this.#animFace;
   }
@@ -193,9 +188,9 @@ export class App {
   }
 
   /**
-   * The model the viewer draws (view/viewer.js): the same state, with playback writable, since
+   * The model the viewer draws (figure/viewer.js): the same state, with playback writable, since
    * the viewer's frame loop is what advances the playhead.
-   * @returns {import('./view/viewer.js').Model}
+   * @returns {import('./figure/viewer.js').Model}
    */
   viewerModel() {
     const app = this;
@@ -213,8 +208,7 @@ export class App {
   }
 
   /**
-   * Calls `fn(detail)` whenever `topic` changes (see Topic); returns the function that ends the
-   * subscription.
+   * Calls `fn(detail)` whenever `topic` changes (see Topic); returns what ends the subscription.
    * @param {Topic} topic
    * @param {(detail?: any) => void} fn
    */
@@ -251,10 +245,10 @@ export class App {
   }
 
   /**
-   * Sets display settings without an undo step (`setView` is the undoable edit): each key must
-   * be a setting and each value of its type, else nothing changes and an error says which.
-   * A theme other than 'auto', 'light' or 'dark' keeps the current one. Announces 'view' with
-   * the names changed.
+   * Sets display settings without an undo step (the setView command is the undoable edit): each
+   * key must be a setting and each value of its type, else nothing changes and an error says
+   * which. A theme other than 'auto', 'light' or 'dark' keeps the current one. Announces 'view'
+   * with the names changed.
    * @param {Partial<ViewState>} patch
    */
   updateView(patch) {
@@ -274,325 +268,43 @@ export class App {
 
   /**
    * Sets playback fields (u, speed, loop, visible; `playing` only as a flag, as a chart's
-   * preview pauses: `setPlaying` starts and stops playback) without drawing; `updateAnim` or
-   * `seekTime` shows them. The time in seconds follows a new u by itself (view/viewer.js playTime);
-   * `t: undefined` forgets it also where u stays.
+   * preview pauses: the viewer's `setPlaying` starts and stops playback) without drawing; its
+   * `updateAnim` or `seekTime` shows them. The time in seconds follows a new u by itself
+   * (figure/viewer.js playTime); `t: undefined` forgets it also where u stays.
    * @param {Partial<Pick<Playback, 'u' | 't' | 'speed' | 'loop' | 'visible' | 'playing'>>} patch
    */
   setPlayback(patch) {
-    for (const k of Object.keys(patch)) {
-      if (!['u', 't', 'speed', 'loop', 'visible', 'playing'].includes(k)) throw new Error(`unknown playback setting ${k}`);
-    }
-    if ('t' in patch && patch.t !== undefined) throw new Error('playback time: use seekTime(t)');
+    const bad = Object.keys(patch).find((k) => !['u', 't', 'speed', 'loop', 'visible', 'playing'].includes(k));
+    if (bad) throw new Error(`unknown playback setting ${bad}`);
+    if ('t' in patch && patch.t !== undefined) throw new Error('playback time: use app.viewer.seekTime(t)');
     Object.assign(this.#anim, patch);
     this.emit('playback');
   }
 
-  // ---------------------------------------------------------------- startup
+  /** Selects pose k (-1: none); `redraw` false only records it (a session being applied redraws all). */
+  select(k, redraw = true) {
+    this.#selected = k;
+    this.emit('selection', { what: 'pose', redraw });
+  }
 
-  async start() {
-    const params = new URLSearchParams(location.search);
-    await this.startViewer(params.get('backend') === 'webgl2');
-    // The view follows the selection (the chrome subscribes in editor/ui.js).
-    this.on('selection', (d) => {
-      if (!d?.redraw) return;
-      if (d.what === 'mode') {
-        this.viewer.rebuildGizmo();
-        this.requestDraw();
-      } else this.viewer.rebuildControls();
-    });
-    this.limits = this.wasm.limits();
-    this.scenes = this.viewer.scenes;
-    const { backend, renderer } = this.viewer;
-    document.getElementById('backend').textContent = `${backend}${renderer.samples > 1 ? ` · MSAA ${renderer.samples}×` : ''}`;
-
-    this.openInitial(params);
-    this.ui = buildUi(this);
-    if (this.view.dock) this.openView(this.view.dock);
-    this.parts.input.bind();
-    this.parts.files.bind();
-    this.parts.presets.bind();
-    this.parts.responsive.bind();
-    this.parts.labels.bind();
-    this.parts.viewpoint.bind();
-    this.parts.theme.bind();
-    this.parts.media.bind();
-    this.parts.drafts.bind();
-    this.parts.undoMenu.bind();
-    window.addEventListener('beforeunload', () => this.autosave());
-    this.ready = true;
+  /** Sets the gizmo's mode ('translate' or 'rotate'); `redraw` as for `select`. */
+  setMode(mode, redraw = true) {
+    this.#mode = mode === 'rotate' ? 'rotate' : 'translate';
+    this.emit('selection', { what: 'mode', redraw });
   }
 
   /**
-   * The first motion: share link (#s=) > `?preset=<id>` > autosave > default preset. A linked
-   * preset over an autosaved session is one undoable edit, as a pick in the Presets menu is
-   * (Ctrl+Z brings the session back); an unknown id says so and the page opens as it would
-   * without it. The parameter then leaves the address, so a reload keeps the edits made since
-   * instead of loading the preset afresh.
-   * @param {URLSearchParams} params
+   * Announces a change of the motion, its options or the display ('motion'): the view
+   * rebuilds, the notices warn, the session autosaves (unless `save` is false), then the
+   * chrome and the dock follow.
    */
-  openInitial(params) {
-    const restored = this.parts.session.restoreInitial();
-    const linked = restored === 'link' ? null : params.get('preset');
-    const known = linked !== null && this.scenes.some((s) => s.id === linked);
-    if (known && restored) this.loadPreset(linked);
-    else if (!restored) this.loadPreset(known ? linked : DEFAULT_SCENE, false);
-    if (linked !== null && !known) {
-      const shown = restored ? 'the last session is shown' : `showing ${presetName(this.sceneInfo)}`;
-      this.showError(`The link asks for preset "${linked}", which does not exist (the Presets menu lists them); ${shown}.`, 'warn');
-    }
-    if (params.has('preset')) {
-      const url = new URL(location.href);
-      url.searchParams.delete('preset');
-      history.replaceState(history.state, '', url.href);
-    }
-  }
-
-  /**
-   * Starts the viewer with the renderer module (editor/modules.js) as `this.wasm`, the module
-   * every Motion of the editor comes from. Where the WebGPU module's renderer fails to start,
-   * the WebGL2 module takes over on a fresh canvas (the WebGPU module has no GL backend).
-   */
-  async startViewer(webgl2) {
-    const { wasm, gl } = await renderModule(webgl2);
-    const viewer = (module) =>
-      new Viewer(/** @type {HTMLCanvasElement} */ (document.getElementById('view')), module, {
-        model: this.viewerModel(),
-        webgl2,
-        // WebGPU without an adapter is no fault of the page or the browser: neutral information.
-        warn: (message) => this.showError(message, /no usable adapter/.test(message) ? 'info' : 'warn'),
-        onTime: (u, a, b, playhead) => this.emit('playback', { u, a, b, playhead }),
-        onPlay: () => this.emit('playback', { play: true }),
-      });
-    this.wasm = wasm;
-    this.viewer = viewer(wasm);
-    try {
-      await this.viewer.start();
-    } catch (e) {
-      if (gl) throw e;
-      this.viewer.dispose();
-      this.viewer.replaceCanvas();
-      this.wasm = await glModule();
-      this.viewer = viewer(this.wasm);
-      await this.viewer.start();
-      this.showError('WebGPU failed to start; using WebGL2.', 'warn');
-    }
-  }
-
-  /** The analysis module (editor/modules.js), fetched on first use; rejects with a message. */
-  analysis() {
-    return analysisModule(this.wasm.Motion);
-  }
-
-  // ---------------------------------------------------------------- the view
-
-  get canvas() {
-    return this.viewer?.canvas;
-  }
-
-  get renderer() {
-    return this.viewer?.renderer;
-  }
-
-  get camera() {
-    return this.viewer?.camera;
-  }
-
-  get backend() {
-    return this.viewer?.backend;
-  }
-
-  get frames() {
-    return this.viewer?.frames;
-  }
-
-  get stats() {
-    return this.viewer?.stats;
-  }
-
-  get sceneInfo() {
-    return this.viewer.drawing.sceneInfo;
-  }
-
-  get morphing() {
-    return this.viewer.drawing.morphing;
-  }
-
-  get morphKey() {
-    return this.viewer.drawing.morphKey;
-  }
-
-  get morphStrobeSlots() {
-    return this.viewer.drawing.morphStrobeSlots;
-  }
-
-  requestDraw() {
-    this.viewer.requestDraw();
-  }
-
-  pixelSize() {
-    return this.viewer.pixelSize();
-  }
-
-  bodyPoints() {
-    return this.viewer.bodyPoints();
-  }
-
-  meshesChanged() {
-    this.viewer.meshesChanged();
-  }
-
-  setImportedMesh(slot, mesh) {
-    this.viewer.setImportedMesh(slot, mesh);
-  }
-
-  updateAnim() {
-    this.viewer.updateAnim();
-  }
-
-  /** Frames the control poses in the part of the view the page's cards and bars leave free (editor/viewpoint.js). */
-  frameAll() {
-    if (this.parts?.viewpoint) this.parts.viewpoint.fit();
-    else this.viewer.frameAll();
-  }
-
-  setPlaying(on) {
-    this.viewer.setPlaying(on);
-  }
-
-  toPage(p) {
-    return this.viewer.toPage(p);
-  }
-
-  screenOfPose(k) {
-    return this.viewer.screenOfPose(k);
-  }
-
-  screenOfGizmo(part) {
-    return this.viewer.screenOfGizmo(part);
-  }
-
-  // ---------------------------------------------------------------- session (editor/session.js)
-
-  session(withCamera) {
-    return this.parts.session.session(withCamera);
-  }
-
-  applySession(s) {
-    this.parts.session.applySession(s);
-  }
-
-  snapshot() {
-    return this.parts.session.snapshot();
-  }
-
-  beginEdit() {
-    this.parts.session.beginEdit();
-  }
-
-  edit(f, coalesce, label) {
-    return this.parts.session.edit(f, coalesce, label);
+  changed(save = true) {
+    this.emit('motion', { save });
   }
 
   /** Runs command `name` of editor/commands.js as one labelled undo step. */
   run(name, ...args) {
     return runCommand(this, name, ...args);
-  }
-
-  undo() {
-    this.parts.session.undo();
-  }
-
-  redo() {
-    this.parts.session.redo();
-  }
-
-  autosave() {
-    this.parts.session.autosave();
-  }
-
-  shareLink() {
-    return this.parts.session.shareLink();
-  }
-
-  // ---------------------------------------------------------------- files (editor/files.js)
-
-  importJson(text, fileName) {
-    return this.parts.files.importJson(text, fileName);
-  }
-
-  importDocument(doc, fileName) {
-    return this.parts.files.importDocument(doc, fileName);
-  }
-
-  importMesh(kind, data, fileName, failure) {
-    return this.parts.files.importMesh(kind, data, fileName, failure);
-  }
-
-  importObj(text) {
-    return this.importMesh('obj', text);
-  }
-
-  exportJson() {
-    this.parts.files.exportJson();
-  }
-
-  // ---------------------------------------------------------------- notices (editor/notices.js)
-
-  showError(message, level, key) {
-    this.parts.notices.show(message, level, key);
-  }
-
-  /**
-   * Where the options give a poor result without an error (Motion.warnings: the V1 4-point and
-   * Jarek rules across half a turn, docs/math/subdivision.md §4), a notice naming the span; shown
-   * again only when the warnings change.
-   */
-  warnSubdivision() {
-    const w = this.motion.warnings();
-    const text = w.join(' ');
-    if (text && text !== this.lastWarnings) {
-      const more = w.length > 1 ? ` (${w.length - 1} more span${w.length > 2 ? 's' : ''} likewise)` : '';
-      this.showError(`Warning: ${w[0]}${more}`, 'warn');
-    }
-    this.lastWarnings = text;
-  }
-
-  // ---------------------------------------------------------------- editing
-
-  /** After any change of motion/options/view: rebuild GPU data, autosave, redraw. */
-  changed(save = true) {
-    this.viewer.rebuild();
-    // The playhead keeps its time in seconds; a retimed motion shows another pose then.
-    this.viewer.retime();
-    this.warnSubdivision();
-    if (save) this.autosave();
-    // The chrome (editor/ui.js) and the dock follow.
-    this.emit('motion');
-  }
-
-  /**
-   * Opens analysis view `id` in the dock ('' or null closes it); resolves to its instance. The
-   * first view opened fetches the dock (editor/dock-host.js).
-   */
-  openView(id) {
-    return this.parts.dockHost.open(id);
-  }
-
-  /** Whether the dock and its modules are being fetched (a promise until they are there). */
-  get loadingDock() {
-    return this.parts.dockHost.loading;
-  }
-
-  /** Loads preset `id` (an undoable command; the first scene of a visit is no edit). */
-  loadPreset(id, undoable = true) {
-    if (undoable) return this.run('loadPreset', id);
-    try {
-      COMMANDS.loadPreset.run(this, id);
-    } catch (e) {
-      return this.showError(e.message);
-    }
-    this.changed();
   }
 
   /**
@@ -616,83 +328,73 @@ export class App {
     return this.motion?.velocities ?? null;
   }
 
-  /** What the view shows: time t in seconds and motion parameter u. */
-  playhead() {
-    const { t, u } = this.viewer.playhead();
-    return { t, u };
+  /** The analysis module (editor/modules.js), fetched on first use; rejects with a message. */
+  analysis() {
+    return analysisModule(this.wasm.Motion);
   }
 
-  /** Shows the moving object at time t in seconds (the scrubber, tests). */
-  seekTime(t) {
-    this.viewer.seekTime(t);
+  // ---------------------------------------------------------------- startup
+
+  async start() {
+    const params = new URLSearchParams(location.search);
+    await this.startViewer(params.get('backend') === 'webgl2');
+    // The view follows the motion and the selection first; the notices and the session next
+    // (their bind), then the chrome (editor/ui.js) and the dock, which subscribe later.
+    this.on('motion', () => {
+      this.viewer.rebuild();
+      // The playhead keeps its time in seconds; a retimed motion shows another pose then.
+      this.viewer.retime();
+    });
+    this.on('selection', (d) => {
+      if (!d?.redraw) return;
+      if (d.what === 'mode') {
+        this.viewer.rebuildGizmo();
+        this.viewer.requestDraw();
+      } else this.viewer.rebuildControls();
+    });
+    for (const id of ['notices', 'session']) this.parts[id].bind();
+    this.limits = this.wasm.limits();
+    this.scenes = this.viewer.scenes;
+    const { backend, renderer } = this.viewer;
+    document.getElementById('backend').textContent = `${backend}${renderer.samples > 1 ? ` · MSAA ${renderer.samples}×` : ''}`;
+
+    this.parts.session.openInitial(params);
+    this.ui = buildUi(this);
+    if (this.view.dock) this.parts.dockHost.open(this.view.dock);
+    for (const id of ['input', 'files', 'presets', 'responsive', 'labels', 'viewpoint', 'theme', 'media', 'drafts', 'undoMenu']) this.parts[id].bind();
+    window.addEventListener('beforeunload', () => this.parts.session.autosave());
+    this.ready = true;
   }
 
   /**
-   * Sets the key times (null: uniform) as one undoable edit. Returns null when applied, else the
-   * Motion's reason (nothing changed); the caller shows it. `merge` ({key, at}: a coalesce key
-   * and the event's time stamp) folds a run of edits into one undo step (session.record).
+   * Starts the viewer with the renderer module (editor/modules.js) as `this.wasm`, the module
+   * every Motion of the editor comes from. Where the WebGPU module's renderer fails to start,
+   * the WebGL2 module takes over on a fresh canvas (the WebGPU module has no GL backend).
    */
-  setTimes(times, merge = null) {
-    return this.retimeEdit(() => this.motion.setTimes(times), merge, times ? 'Retime the keys' : 'Uniform timing');
-  }
-
-  /** Sets the key velocities (null: all free) as one undoable edit; see setTimes. */
-  setVelocities(velocities) {
-    return this.retimeEdit(() => this.motion.setVelocities(velocities), null, velocities ? 'Set the key velocities' : 'Free the key velocities');
-  }
-
-  /** Runs a Motion timing change as one undoable edit `label`: null when done, else the error's message. */
-  retimeEdit(f, merge = null, label = undefined) {
-    const before = this.snapshot();
+  async startViewer(webgl2) {
+    const { wasm, gl } = await renderModule(webgl2);
+    const show = (message, level) => this.parts.notices.show(message, level);
+    const viewer = (module) =>
+      new Viewer(/** @type {HTMLCanvasElement} */ (document.getElementById('view')), module, {
+        model: this.viewerModel(),
+        webgl2,
+        // WebGPU without an adapter is no fault of the page or the browser: neutral information.
+        warn: (message) => show(message, /no usable adapter/.test(message) ? 'info' : 'warn'),
+        onTime: (u, a, b, playhead) => this.emit('playback', { u, a, b, playhead }),
+        onPlay: () => this.emit('playback', { play: true }),
+      });
+    this.wasm = wasm;
+    this.viewer = viewer(wasm);
     try {
-      f();
+      await this.viewer.start();
     } catch (e) {
-      return e.message;
+      if (gl) throw e;
+      this.viewer.dispose();
+      this.viewer.replaceCanvas();
+      this.wasm = await glModule();
+      this.viewer = viewer(this.wasm);
+      await this.viewer.start();
+      show('WebGPU failed to start; using WebGL2.', 'warn');
     }
-    this.parts.session.record(before, merge?.key ?? null, merge?.at, label);
-    this.changed();
-    return null;
-  }
-
-  /** Selects pose k (-1: none); `redraw` false only records it (a session being applied redraws all). */
-  select(k, redraw = true) {
-    this.#selected = k;
-    this.emit('selection', { what: 'pose', redraw });
-  }
-
-  /** Sets the gizmo's mode ('translate' or 'rotate'); `redraw` as for `select`. */
-  setMode(mode, redraw = true) {
-    this.#mode = mode === 'rotate' ? 'rotate' : 'translate';
-    this.emit('selection', { what: 'mode', redraw });
-  }
-
-  /** Inserts a pose after the selected one (after the last where none is). */
-  insertAfterSelected() {
-    this.run('insertPose');
-  }
-
-  /** Deletes the selected pose. */
-  deleteSelected() {
-    if (this.selected >= 0) this.run('deletePose');
-  }
-
-  setOption(key, value) {
-    this.run('setOption', key, value);
-  }
-
-  setScheme(name) {
-    this.run('setScheme', name);
-  }
-
-  setS(s) {
-    this.run('setS', s);
-  }
-
-  setClosed(closed) {
-    this.run('setClosed', closed);
-  }
-
-  setView(key, value) {
-    this.run('setView', key, value);
   }
 }

@@ -29,8 +29,8 @@ import { setUpLessons } from './editor/lessons-entry.js';
 
 const app = new App();
 
-window.addEventListener('error', (e) => app.showError(`Unexpected error: ${e.message}`));
-window.addEventListener('unhandledrejection', (e) => app.showError(`Unexpected error: ${e.reason?.message ?? e.reason}`));
+window.addEventListener('error', (e) => app.parts.notices.show(`Unexpected error: ${e.message}`));
+window.addEventListener('unhandledrejection', (e) => app.parts.notices.show(`Unexpected error: ${e.reason?.message ?? e.reason}`));
 
 const ready = app.start().catch((e) => {
   app.parts.notices.fatal(e);
@@ -47,18 +47,18 @@ const lessons = setUpLessons(app, ready);
   get lessons() {
     return lessons();
   },
-  backend: () => app.backend,
+  backend: () => app.viewer?.backend,
   errors: () => [...app.errors],
   // During a drag the live state is the drag session's (the Motion gets the pose on release).
   poses: () => Float64Array.from(app.drag?.session ? app.drag.session.poses() : app.motion.poses()),
   refined: () => Float64Array.from(app.drag?.session ? app.drag.session.refined() : app.motion.subdivide()),
   options: () => app.motion.options(),
-  session: () => app.session(),
+  session: () => app.parts.session.session(),
   selected: () => app.selected,
-  handleOnPage: (i) => app.screenOfPose(i),
-  gizmoOnPage: (part) => app.screenOfGizmo(part),
-  frames: () => app.frames,
-  stats: () => ({ ...app.stats }),
-  openView: (id) => app.openView(id),
+  handleOnPage: (i) => app.viewer.screenOfPose(i),
+  gizmoOnPage: (part) => app.viewer.screenOfGizmo(part),
+  frames: () => app.viewer?.frames,
+  stats: () => ({ ...app.viewer?.stats }),
+  openView: (id) => app.parts.dockHost.open(id),
   flushViews: () => app.dock?.flush(),
 };

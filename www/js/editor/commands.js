@@ -2,8 +2,9 @@
 // changes the App's state through its setters and has a label, the words the Undo menu shows
 // for it (editor/undo-menu.js). `runCommand(app, name, ...args)` runs one as one undo step
 // (editor/session.js edit: the state before it is kept, so undo and redo restore snapshots and
-// no command needs an inverse of its own). The App's editing methods (app.setOption, …), the
-// toolbar, the keys, the panel and the lesson player all run them here.
+// no command needs an inverse of its own). The toolbar, the keys, the panel, the timeline, the
+// timing view and the lesson player all run them here, through `app.run(name, …)` (or
+// `reasonOf`, where the place of the edit says why it was refused).
 import { presetName } from './presets.js';
 
 
@@ -33,8 +34,8 @@ export const COMMANDS = {
       app.setMotion(app.wasm.Motion.fromPreset(id), info.selected ?? -1);
       app.updateView({ scene: id, object: 'scene', strobe: info.strobe });
       app.setPlayback({ u: 0, t: undefined });
-      app.meshesChanged();
-      app.frameAll();
+      app.viewer.meshesChanged();
+      app.parts.viewpoint.fit();
     },
   },
   setOption: {
@@ -62,7 +63,7 @@ export const COMMANDS = {
     label: (app, key, value) => (typeof value === 'boolean' ? `${value ? 'Show' : 'Hide'} ${key.replace(/^show/, '').toLowerCase() || key}` : `Display: ${key} ${value}`),
     run(app, key, value) {
       app.updateView({ [key]: value });
-      if (key === 'object') app.meshesChanged();
+      if (key === 'object') app.viewer.meshesChanged();
     },
     merge: (key) => `view:${key}`,
   },
@@ -101,7 +102,7 @@ export const COMMANDS = {
       if (step.document) {
         app.setMotion(new app.wasm.Motion(step.document, app.motion.options()));
         app.setPlayback({ u: 0 });
-        app.frameAll();
+        app.parts.viewpoint.fit();
       }
       const o = options ? { ...options } : null;
       if (o) {
@@ -112,14 +113,28 @@ export const COMMANDS = {
       }
       if (step.display) {
         app.updateView(step.display);
-        if (step.display.object !== undefined) app.meshesChanged();
+        if (step.display.object !== undefined) app.viewer.meshesChanged();
       }
       if (step.timing?.times !== undefined) app.motion.setTimes(step.timing.times ?? null);
     },
   },
+  setTimes: {
+    label: (app, times) => (times ? 'Retime the keys' : 'Uniform timing'),
+    /**
+     * The key times in seconds (null: uniform), as motion.setTimes checks them; `key` names a
+     * run of edits that folds into one undo step (a key marker nudged by the arrow keys).
+     */
+    run: (app, times) => app.motion.setTimes(times),
+    merge: (times, key = '') => key,
+  },
+  setVelocities: {
+    label: (app, velocities) => (velocities ? 'Set the key velocities' : 'Free the key velocities'),
+    /** The key velocities p'(T_i) in poses per second (null entries, or null: free). */
+    run: (app, velocities) => app.motion.setVelocities(velocities),
+  },
   openSession: {
     label: (app, s, what = 'kept work') => `Open ${what}`,
-    run: (app, s) => app.applySession({ ...s, camera: undefined }),
+    run: (app, s) => app.parts.session.applySession({ ...s, camera: undefined }),
   },
 };
 
@@ -143,6 +158,30 @@ export function runCommand(app, name, ...args) {
   const c = COMMANDS[name];
   if (!c) throw new Error(`unknown command ${name}`);
   return app.parts.session.edit(() => c.run(app, ...args), c.merge?.(...args) || null, labelOf(app, name, args));
+}
+
+/**
+ * Runs command `name` with `args` as one undo step, without the banner: null when done, else
+ * the reason it was refused (nothing changed), which the caller shows where the edit was made
+ * (the timing view, the key markers).
+ * @param {import('../app.js').App} app
+ * @param {string} name a key of COMMANDS
+ * @param {...any} args
+ * @returns {string | null}
+ */
+export function reasonOf(app, name, ...args) {
+  const c = COMMANDS[name];
+  if (!c) throw new Error(`unknown command ${name}`);
+  const session = app.parts.session;
+  const before = session.snapshot();
+  try {
+    c.run(app, ...args);
+  } catch (e) {
+    return e.message;
+  }
+  session.record(before, c.merge?.(...args) || null, performance.now(), labelOf(app, name, args));
+  app.changed();
+  return null;
 }
 
 /** As runCommand, but a failure is thrown on to the caller as well (the lesson player names the step). */

@@ -10,7 +10,7 @@ const loadDockModule = lazy('the analysis dock', (a) => import(a ? `./dock.js?re
 // The views' charts are uPlot's: its stylesheet comes with them.
 const loadViewModules = lazy('the analysis views', async (a) => {
   const [views] = await Promise.all([
-    import(a ? `../views/index.js?retry=${a}` : '../views/index.js').then((m) => m.loadViews(a)),
+    import(a ? `../dock/index.js?retry=${a}` : '../dock/index.js').then((m) => m.loadViews(a)),
     stylesheet(new URL('../../vendor/uPlot.min.css', import.meta.url)),
   ]);
   return views;
@@ -55,7 +55,7 @@ export default {
         const [{ Dock }, views, analysis] = await Promise.all([loadDockModule(), loadViewModules(), app.analysis()]);
         app.dock = new Dock(app, views, analysis);
       } catch (e) {
-        app.showError(`${e.message}. The editor works on without the analysis views.`);
+        app.parts.notices.show(`${e.message}. The editor works on without the analysis views.`);
         app.updateView({ dock: '' });
         wanted = '';
         app.ui?.refresh();
@@ -76,14 +76,14 @@ export default {
         if (wasOpen !== !!dock.active) {
           foldPanel(!!dock.active);
           app.viewer.invalidateSize();
-          app.frameAll();
+          app.parts.viewpoint.fit();
         }
         app.updateView({ dock: id || '' });
       } catch (e) {
         app.updateView({ dock: '' });
-        app.showError(e.message);
+        app.parts.notices.show(e.message);
       }
-      app.autosave();
+      app.parts.session.autosave();
       app.ui?.refresh();
       return inst;
     }

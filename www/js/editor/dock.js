@@ -1,6 +1,6 @@
 // The analysis dock: a tabbed panel of teaching and analysis views beside the 3-D view.
 //
-// A view module (www/js/views/*.js) default-exports a descriptor
+// A view module (www/js/dock/*.js) default-exports a descriptor
 //   { id, title, hint, live, create(app, el, wasm) => instance }
 // where `el` is the view's own <section> (the view owns everything inside it), `wasm` the
 // analysis module (the initialised wasm-bindgen module with the teaching and comparison
@@ -11,7 +11,7 @@
 // options or the view settings (reason 'edit'), during drags (reason 'drag', only for views
 // with `live: true`; the Motion then already holds the dragged pose), and when the view is
 // shown (reason 'show'). `show(false)` must remove the view's 3-D overlays (its LAYER / SLOT
-// entries of view/slots.js), so a hidden view costs nothing. No inline `style` attributes in
+// entries of figure/slots.js), so a hidden view costs nothing. No inline `style` attributes in
 // markup (the page's CSP refuses them): set styles through `element.style`, or give colour
 // swatches a `data-color` attribute.
 //
@@ -19,10 +19,10 @@
 // tab is always in the row); arrow keys move between views in the tab list. While the dock
 // covers part of the window, the 3-D view's canvas takes the largest free part beside it, less
 // the toolbar where the toolbar stands in that part (fitView: phones on their side), so the
-// scene is framed where it can be seen. Charts (views/plot.js) get their
+// scene is framed where it can be seen. Charts (dock/plot.js) get their
 // playhead from playback, and hovering a chart shows that instant's pose (preview).
 /**
- * An analysis view of the dock: a module's default export in www/js/views/ (the contract above).
+ * An analysis view of the dock: a module's default export in www/js/dock/ (the contract above).
  * @typedef {object} DockView
  * @property {string} id
  * @property {string} title
@@ -40,14 +40,14 @@
  * @property {(step: number) => void} [goTo] the steps view: show step `step`
  */
 
-import { setPlayheadSource } from '../views/plot.js';
+import { setPlayheadSource } from '../dock/plot.js';
 import { without, stage } from './rects.js';
 
 /** The smallest free part of the window (CSS px) the 3-D view moves into beside the dock. */
 const MIN_FREE = { width: 200, height: 100 };
 
 export class Dock {
-  /** `views`: the view descriptors in tab order (views/index.js loadViews); `wasm`: the analysis module. */
+  /** `views`: the view descriptors in tab order (dock/index.js loadViews); `wasm`: the analysis module. */
   constructor(app, views, wasm) {
     this.app = app;
     this.wasm = wasm;
@@ -69,7 +69,7 @@ export class Dock {
       tab.setAttribute('role', 'tab');
       tab.setAttribute('aria-selected', 'false');
       tab.setAttribute('aria-controls', `dock-view-${d.id}`);
-      tab.onclick = () => this.app.openView(this.active === d.id ? '' : d.id);
+      tab.onclick = () => this.app.parts.dockHost.open(this.active === d.id ? '' : d.id);
       this.tabs.append(tab);
       const el = document.createElement('section');
       el.className = `view view-${d.id}`;
@@ -83,7 +83,7 @@ export class Dock {
     }
     this.tabs.addEventListener('keydown', (e) => this.tabKey(e));
     this.buildMenu();
-    /** @type {HTMLElement} */ (this.root.querySelector('.close')).onclick = () => this.app.openView('');
+    /** @type {HTMLElement} */ (this.root.querySelector('.close')).onclick = () => this.app.parts.dockHost.open('');
     // Colour swatches written as markup carry `data-color`: the page's Content-Security-Policy
     // refuses inline style attributes, so the colour is applied through the CSSOM instead.
     const paint = (root) => {
@@ -176,7 +176,7 @@ export class Dock {
     if (to === undefined) return;
     e.preventDefault();
     e.stopPropagation();
-    this.app.openView(ids[to]);
+    this.app.parts.dockHost.open(ids[to]);
     this.views.get(ids[to]).tab.focus();
   }
 
@@ -214,7 +214,7 @@ export class Dock {
         item.title = v.d.hint ?? v.d.title;
         item.onclick = () => {
           this.toggleMenu(false);
-          this.app.openView(v.d.id);
+          this.app.parts.dockHost.open(v.d.id);
           this.views.get(v.d.id).tab.focus();
         };
         return item;
@@ -229,10 +229,10 @@ export class Dock {
    * Puts the 3-D view's canvas into the largest part of the window the dock leaves free (left,
    * right, above or below it; where the toolbar stands in a part, the part beside it), or back
    * to the whole window when the dock is closed or leaves no usable part. The caller re-frames
-   * the scene (app.openView).
+   * the scene (dock-host.js).
    */
   fitView() {
-    const c = this.app.canvas;
+    const c = this.app.viewer.canvas;
     if (!c) return;
     let free = null;
     if (this.active) {
@@ -268,7 +268,7 @@ export class Dock {
   /** Playback now: {t (seconds), u (motion parameter)}. */
   playhead() {
     const app = this.app;
-    if (typeof app.playhead === 'function') return app.playhead();
+    if (app.viewer) return app.viewer.playhead();
     return { t: app.anim.u, u: app.anim.u };
   }
 
@@ -283,21 +283,21 @@ export class Dock {
       const s = this.saved;
       if (!s) return;
       this.saved = null;
-      if (typeof app.seekTime === 'function') app.seekTime(s.t);
+      if (app.viewer) app.viewer.seekTime(s.t);
       app.setPlayback({ u: s.u, visible: s.visible, playing: s.playing });
-      app.updateAnim();
-      app.requestDraw();
+      app.viewer.updateAnim();
+      app.viewer.requestDraw();
       return;
     }
     if (!Number.isFinite(t) || !app.motion) return;
     if (!this.saved) this.saved = { ...this.playhead(), visible: anim.visible, playing: anim.playing };
     app.setPlayback({ playing: false });
-    if (typeof app.seekTime === 'function') app.seekTime(t);
+    if (app.viewer) app.viewer.seekTime(t);
     else {
       const [a, b] = app.motion.domain();
       app.setPlayback({ u: Math.min(b, Math.max(a, t)), visible: true });
-      app.updateAnim();
-      app.requestDraw();
+      app.viewer.updateAnim();
+      app.viewer.requestDraw();
     }
   }
 
@@ -319,7 +319,7 @@ export class Dock {
     for (const [vid, v] of this.views) v.tab.setAttribute('aria-selected', String(vid === id));
     if (id === null) {
       this.fitView();
-      this.app.requestDraw();
+      this.app.viewer.requestDraw();
       return null;
     }
     const v = this.views.get(id);
@@ -330,7 +330,7 @@ export class Dock {
     if (!v.instance) v.instance = v.d.create(this.app, v.el, this.wasm);
     v.instance.show(true);
     v.instance.update('show');
-    this.app.requestDraw();
+    this.app.viewer.requestDraw();
     return v.instance;
   }
 
@@ -365,8 +365,8 @@ export class Dock {
     try {
       inst.update(reason);
     } catch (e) {
-      this.app.showError(`${this.views.get(this.active).d.title}: ${e.message}`);
+      this.app.parts.notices.show(`${this.views.get(this.active).d.title}: ${e.message}`);
     }
-    this.app.requestDraw();
+    this.app.viewer.requestDraw();
   }
 }

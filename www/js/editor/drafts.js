@@ -149,7 +149,7 @@ export default {
       const p = document.createElement('p');
       p.textContent = 'This page cannot keep your work: the browser gives it no storage here (a sandboxed frame, or storage turned off). Share a link or export the motion to keep it.';
       const share = button('Share link…', () => document.getElementById('m-share')?.click());
-      const exp = button('Export JSON', () => app.exportJson());
+      const exp = button('Export JSON', () => app.parts.files.exportJson());
       el.replaceChildren(p, share, exp, closeButton(el));
       app.errors.push(p.textContent);
     }
@@ -168,7 +168,7 @@ export default {
      */
     function offer() {
       if (!store) return;
-      const mine = JSON.stringify(app.session(false).document);
+      const mine = JSON.stringify(app.parts.session.session(false).document);
       const others = all().filter((d) => d.tab !== tab && !d.open && JSON.stringify(d.session.document) !== mine).slice(0, MAX_LISTED);
       if (!others.length) return;
       const el = bar();
@@ -184,7 +184,7 @@ export default {
           // One undoable edit: what the page showed stays in Undo.
           app.run('openSession', d.session, `the work of another tab (${describe(d)})`);
           store.removeItem(d.key);
-          app.autosave();
+          app.parts.session.autosave();
           li.remove();
           if (!list.children.length) el.hidden = true;
         });
@@ -250,7 +250,7 @@ export default {
             const msg = full
               ? "Autosave failed: the browser's storage for this page is full. Share a link or export the motion to keep it."
               : 'Autosave failed: the browser refused to store the work. Share a link or export the motion to keep it.';
-            if (msg !== failed) app.showError(msg, 'warn');
+            if (msg !== failed) app.parts.notices.show(msg, 'warn');
             failed = msg;
             return;
           }
@@ -261,7 +261,7 @@ export default {
         tabId();
         if (adopted) {
           // Once this tab's own draft holds the work, the one it came from goes.
-          app.autosave();
+          app.parts.session.autosave();
           const mine = read(DRAFT_PREFIX + tabId());
           const from = read(adopted);
           if (mine && from && JSON.stringify(mine.session.document) === JSON.stringify(from.session.document)) store.removeItem(adopted);

@@ -6,8 +6,8 @@
 // (Motion.exportFile, importMotionFile), so a file written here equals the CLI's. Every import
 // is one undoable edit, and a failed one changes nothing. The functions take the app; the
 // default export is the app's part (see app.js for the part contract).
-import { IMPORT_SIZE, BUNNY_PRESET, fetchBunny } from '../view/drawing.js';
-import { SLOT } from '../view/slots.js';
+import { IMPORT_SIZE, BUNNY_PRESET, fetchBunny } from '../figure/drawing.js';
+import { SLOT } from '../figure/slots.js';
 import { MAX_SAVED_MESH } from './session.js';
 import { SESSION_VERSION } from '../share-link.js';
 import { askReduction, MANY_POSES } from './reduce-dialog.js';
@@ -78,7 +78,7 @@ export async function exportMotion(app, format, extra = {}, { save = true } = {}
     const bunny = format !== 'csv' && showsBunny(app) ? await fetchBunny().catch(() => null) : null;
     file = app.motion.exportFile(exportSettings(app, format, extra, bunny));
   } catch (e) {
-    app.showError(`Export failed: ${e.message}`);
+    app.parts.notices.show(`Export failed: ${e.message}`);
     return null;
   }
   if (save) {
@@ -105,19 +105,19 @@ export async function importFiles(app, fileList) {
   if (files.length === 0) return false;
   for (const f of files) {
     if (f.size > MAX_IMPORT_BYTES) {
-      app.showError(`${f.name} is ${f.size} bytes; the limit is ${MAX_IMPORT_BYTES} bytes. Nothing was changed.`);
+      app.parts.notices.show(`${f.name} is ${f.size} bytes; the limit is ${MAX_IMPORT_BYTES} bytes. Nothing was changed.`);
       return false;
     }
   }
   // Buffers (.bin and others) go along with a .gltf; the main file is the first other one.
   const main = files.find((f) => ['json', 'csv', 'glb', 'gltf', 'obj'].includes(ext(f.name)));
   if (!main) {
-    app.showError(`${files.map((f) => f.name).join(', ')}: unknown file type (expected .json, .csv, .glb, .gltf or .obj). Nothing was changed.`);
+    app.parts.notices.show(`${files.map((f) => f.name).join(', ')}: unknown file type (expected .json, .csv, .glb, .gltf or .obj). Nothing was changed.`);
     return false;
   }
   const kind = ext(main.name);
-  if (kind === 'json') return app.importJson(await main.text(), main.name);
-  if (kind === 'obj') return app.importMesh('obj', await main.text(), main.name);
+  if (kind === 'json') return app.parts.files.importJson(await main.text(), main.name);
+  if (kind === 'obj') return app.parts.files.importMesh('obj', await main.text(), main.name);
   const bytes = new Uint8Array(await main.arrayBuffer());
   const buffers = {};
   for (const f of files) if (f !== main) buffers[f.name] = new Uint8Array(await f.arrayBuffer());
@@ -128,9 +128,9 @@ export async function importFiles(app, fileList) {
     // A glTF without animation may be a mesh for the object.
     if (kind !== 'csv' && /anim/i.test(e.message)) {
       const data = kind === 'gltf' ? new TextDecoder().decode(bytes) : bytes;
-      return app.importMesh('gltf', data, main.name, `Import failed, nothing was changed: ${e.message}`);
+      return app.parts.files.importMesh('gltf', data, main.name, `Import failed, nothing was changed: ${e.message}`);
     }
-    app.showError(`Import failed, nothing was changed: ${e.message}`);
+    app.parts.notices.show(`Import failed, nothing was changed: ${e.message}`);
     return false;
   }
   // A glTF file's own object comes along (its mesh, if it has one).
@@ -146,20 +146,20 @@ export async function importFiles(app, fileList) {
   let kept = null;
   if (doc.poses.length > MANY_POSES) {
     if (document.getElementById('reduce-dialog')) {
-      app.showError(`${main.name}: another import is waiting for an answer; nothing was changed.`);
+      app.parts.notices.show(`${main.name}: another import is waiting for an answer; nothing was changed.`);
       return false;
     }
-    const radius = Math.max(1e-3, ...app.bodyPoints().map((p) => Math.hypot(...p)));
+    const radius = Math.max(1e-3, ...app.viewer.bodyPoints().map((p) => Math.hypot(...p)));
     const choice = await askReduction(doc, main.name, radius, app.wasm.reducePoses);
     if (!choice) {
-      app.showError(`${main.name}: import cancelled, nothing was changed.`, 'info');
+      app.parts.notices.show(`${main.name}: import cancelled, nothing was changed.`, 'info');
       return false;
     }
     doc = choice.doc;
     kept = choice.how;
   }
   const ok = importDocument(app, doc, main.name, mesh);
-  if (ok && kept) app.showError(`${main.name}: ${kept}.`, 'info');
+  if (ok && kept) app.parts.notices.show(`${main.name}: ${kept}.`, 'info');
   return ok;
 }
 
@@ -204,7 +204,7 @@ export function bindDrop(app) {
 /** Imports JSON text: a saved session (from Export) or a plain motion document. */
 function importJson(app, text, fileName = 'JSON') {
   if (text.length > app.limits.maxDocumentBytes) {
-    return app.showError(`${fileName} is ${text.length} bytes; the limit is ${app.limits.maxDocumentBytes} bytes. Nothing was changed.`);
+    return app.parts.notices.show(`${fileName} is ${text.length} bytes; the limit is ${app.limits.maxDocumentBytes} bytes. Nothing was changed.`);
   }
   let motion;
   try {
@@ -219,12 +219,12 @@ function importJson(app, text, fileName = 'JSON') {
     if (obj && obj.version === SESSION_VERSION && obj.document) {
       // Validated before the edit, so that a bad session is an import error, not an edit error.
       new app.wasm.Motion(obj.document, obj.options).free();
-      app.edit(() => app.applySession({ ...obj, camera: undefined }));
+      app.parts.session.edit(() => app.parts.session.applySession({ ...obj, camera: undefined }));
       return true;
     }
     motion = app.wasm.Motion.fromJson(trimmed, app.motion.options());
   } catch (e) {
-    app.showError(`Import failed, nothing was changed: ${fileName}: ${e.message}`);
+    app.parts.notices.show(`Import failed, nothing was changed: ${fileName}: ${e.message}`);
     return false;
   }
   return replaceMotion(app, motion);
@@ -239,11 +239,11 @@ function importDocument(app, doc, fileName, mesh = null) {
   try {
     motion = new app.wasm.Motion(doc, app.motion.options());
     // Validated before the edit: a mesh the renderer refuses is left out, not half applied.
-    if (mesh) app.setImportedMesh(SLOT.anim, mesh);
+    if (mesh) app.viewer.setImportedMesh(SLOT.anim, mesh);
   } catch (e) {
-    if (mesh) app.meshesChanged();
+    if (mesh) app.viewer.meshesChanged();
     motion?.free();
-    app.showError(`Import failed, nothing was changed: ${fileName}: ${e.message}`);
+    app.parts.notices.show(`Import failed, nothing was changed: ${fileName}: ${e.message}`);
     return false;
   }
   const ok = replaceMotion(app, motion, mesh);
@@ -253,14 +253,14 @@ function importDocument(app, doc, fileName, mesh = null) {
 
 /** Replaces the motion by `motion` as one undoable edit (the view frames the new poses). */
 function replaceMotion(app, motion, mesh = null) {
-  app.edit(() => {
+  app.parts.session.edit(() => {
     app.setMotion(motion);
     if (mesh) {
       app.setImported(mesh);
       app.updateView({ object: 'obj' });
-      app.meshesChanged();
+      app.viewer.meshesChanged();
     }
-    app.frameAll();
+    app.parts.viewpoint.fit();
   });
   return true;
 }
@@ -269,25 +269,25 @@ function replaceMotion(app, motion, mesh = null) {
 function importMesh(app, kind, data, fileName = 'mesh', failure = null) {
   const size = typeof data === 'string' ? data.length : data.byteLength;
   if (size > MAX_MESH_BYTES) {
-    app.showError(`The mesh file is over ${MAX_MESH_BYTES >> 20} MiB. Nothing was changed.`);
+    app.parts.notices.show(`The mesh file is over ${MAX_MESH_BYTES >> 20} MiB. Nothing was changed.`);
     return false;
   }
   const mesh = meshOf(kind, data);
   try {
     // Validate into the animation slot first; on failure nothing changed.
-    app.setImportedMesh(SLOT.anim, mesh);
+    app.viewer.setImportedMesh(SLOT.anim, mesh);
   } catch (e) {
-    app.meshesChanged();
-    app.showError(failure ? `${failure}; read as a mesh: ${e.message}` : `Mesh import failed, nothing was changed: ${fileName}: ${e.message}`);
+    app.viewer.meshesChanged();
+    app.parts.notices.show(failure ? `${failure}; read as a mesh: ${e.message}` : `Mesh import failed, nothing was changed: ${fileName}: ${e.message}`);
     return false;
   }
-  app.edit(() => {
+  app.parts.session.edit(() => {
     app.setImported(mesh);
     app.updateView({ object: 'obj' });
-    app.meshesChanged();
+    app.viewer.meshesChanged();
   });
   if (mesh.data.length > MAX_SAVED_MESH) {
-    app.showError('The mesh is too large to be autosaved or shared; it will be lost on reload.', 'warn');
+    app.parts.notices.show('The mesh is too large to be autosaved or shared; it will be lost on reload.', 'warn');
   }
   return true;
 }

@@ -16,7 +16,7 @@ export function buildHelp(app) {
       focusBefore = document.activeElement;
       /** @type {HTMLElement} */ (h.querySelector('.help-close')).focus();
     } else if (!wasHidden && h.hidden && h.contains(document.activeElement)) {
-      /** @type {HTMLElement} */ (focusBefore ?? app.canvas)?.focus?.();
+      /** @type {HTMLElement} */ (focusBefore ?? app.viewer.canvas)?.focus?.();
     }
   }
   /** @type {HTMLElement} */ (h.querySelector('.help-close')).onclick = () => toggle(false);

@@ -1,12 +1,12 @@
-// Editing with the pointer and the keyboard. The viewer turns the camera itself (view/pointer.js);
+// Editing with the pointer and the keyboard. The viewer turns the camera itself (figure/pointer.js);
 // this part is its `tool`: a press on a handle selects the pose, a press on a gizmo part (or a
 // handle) drags the pose, hovering highlights what a press would grab. Keys are the editor's
 // shortcuts (listed in the help overlay of index.html); they act only while the canvas or the
 // page itself has the focus, never inside a control. The part contract is in app.js.
 import { qaxis, qmul, qnormalize } from '../math.js';
-import { SNAP_ROTATE, SNAP_TRANSLATE, gizmoAxes } from '../view/gizmo.js';
-import { pickPoses } from '../view/picking.js';
-import { beginPoseDrag, dragTarget, hoverPoseTool, redrawPoseDrag, setDragPose } from '../view/pose-drag.js';
+import { SNAP_ROTATE, SNAP_TRANSLATE, gizmoAxes } from '../figure/gizmo.js';
+import { pickPoses } from '../figure/picking.js';
+import { beginPoseDrag, dragTarget, hoverPoseTool, redrawPoseDrag, setDragPose } from '../figure/pose-drag.js';
 
 /** @type {import('../app.js').Part} */
 export default {
@@ -15,7 +15,7 @@ export default {
     function beginDrag(part, pt, e) {
       const d = beginPoseDrag(app.viewer, app.motion, app.selected, part, pt, e);
       if (!d) return false;
-      app.drag = Object.assign(d, { before: app.snapshot() });
+      app.drag = Object.assign(d, { before: app.parts.session.snapshot() });
       app.viewer.rebuildGizmo();
       return true;
     }
@@ -41,7 +41,7 @@ export default {
         // Views that follow drags read the Motion: give it the pose now, not only on release.
         fast = setDragPose(app.motion, d, pose, { polyscrew: app.view.showPolyscrew, live: !!app.dock?.wantsLive });
       } catch (err) {
-        app.showError(err.message);
+        app.parts.notices.show(err.message);
         return;
       }
       d.pose = pose;
@@ -53,14 +53,14 @@ export default {
       if (fast) d.pending = true;
       redrawPoseDrag(app.viewer, d, pose, fast);
       app.dock?.changed('drag');
-      app.stats.dragMs = performance.now() - t0;
+      app.viewer.stats.dragMs = performance.now() - t0;
     }
 
     function endDrag() {
       if (app.drag?.pending) app.motion.setPose(app.drag.index, app.drag.pose);
       if (app.drag?.moved) {
         app.viewer.rebuild();
-        app.autosave();
+        app.parts.session.autosave();
         // Views that do not follow drags catch up now.
         app.dock?.changed('edit');
       }
@@ -69,7 +69,7 @@ export default {
       if (app.drag && app.hover === app.drag.part && app.drag.part.startsWith('plane-') && app.drag.fromHandle) app.hover = null;
       app.drag = null;
       app.viewer.rebuildGizmo();
-      app.requestDraw();
+      app.viewer.requestDraw();
       app.ui?.refresh();
     }
 
@@ -80,7 +80,7 @@ export default {
      * plane's square of the gizmo.
      */
     function facingPlane() {
-      const f = app.camera.forward;
+      const f = app.viewer.camera.forward;
       const axes = gizmoAxes(!!app.view.gizmoLocal, app.motion.pose(app.selected).rotation);
       const along = (k) => Math.abs(f[0] * axes[k][0] + f[1] * axes[k][1] + f[2] * axes[k][2]);
       let best = 0;
@@ -139,7 +139,7 @@ export default {
      * a control (button, field, slider, the panel, the dock) keys keep their own meaning.
      */
     function shortcutTarget(t) {
-      return !t || t === app.canvas || t === document.body || t === document.documentElement;
+      return !t || t === app.viewer.canvas || t === document.body || t === document.documentElement;
     }
 
     /**
@@ -184,8 +184,8 @@ export default {
       const mod = e.ctrlKey || e.metaKey;
       const count = app.motion.poseCount;
       let handled = true;
-      if (mod && (k === 'z' || k === 'Z')) e.shiftKey ? app.redo() : app.undo();
-      else if (mod && (k === 'y' || k === 'Y')) app.redo();
+      if (mod && (k === 'z' || k === 'Z')) e.shiftKey ? app.parts.session.redo() : app.parts.session.undo();
+      else if (mod && (k === 'y' || k === 'Y')) app.parts.session.redo();
       else if (mod) handled = false;
       else if (NUDGE[k] && app.selected >= 0) {
         const [axis, sign] = NUDGE[k];
@@ -193,16 +193,17 @@ export default {
       } else if (k === 'ArrowRight' || k === 'n') app.select((app.selected + 1) % count);
       else if (k === 'ArrowLeft' || k === 'p') app.select(app.selected <= 0 ? count - 1 : app.selected - 1);
       else if (e.altKey) handled = false;
-      else if (k >= '0' && k <= '8') app.setOption('levels', Number(k));
-      else if (k === 'b') app.setScheme('bspline');
-      else if (k === 'f') app.setScheme('fourpoint');
-      else if (k === 'j') app.setScheme('jarek');
+      else if (k >= '0' && k <= '8') app.run('setOption', 'levels', Number(k));
+      else if (k === 'b') app.run('setScheme', 'bspline');
+      else if (k === 'f') app.run('setScheme', 'fourpoint');
+      else if (k === 'j') app.run('setScheme', 'jarek');
       else if (k === 'w' || k === 'W') app.setMode('translate');
       else if (k === 'e' || k === 'E') app.setMode('rotate');
-      else if (k === 'q' || k === 'Q') app.setView('gizmoLocal', !app.view.gizmoLocal);
-      else if (k === ' ') app.setPlaying(!app.anim.playing);
-      else if (k === 'Delete' || k === 'Backspace') app.deleteSelected();
-      else if (k === 'Insert' || k === 'i') app.insertAfterSelected();
+      else if (k === 'q' || k === 'Q') app.run('setView', 'gizmoLocal', !app.view.gizmoLocal);
+      else if (k === ' ') app.viewer.setPlaying(!app.anim.playing);
+      else if (k === 'Delete' || k === 'Backspace') {
+        if (app.selected >= 0) app.run('deletePose');
+      } else if (k === 'Insert' || k === 'i') app.run('insertPose');
       else if (k === 'a' || k === 'Home') app.parts.viewpoint.frame();
       else if (k === 'Escape') {
         if (!document.getElementById('help').hidden) app.ui.toggleHelp(false);

@@ -1,4 +1,5 @@
 // The timeline's key markers: the motion's key times above the scrubber, to drag or move by keys.
+import { reasonOf } from './commands.js';
 
 /** Arrow-key steps of a focused key marker (seconds): plain and with Shift. */
 const KEY_STEP = 0.1;
@@ -45,7 +46,7 @@ export function buildKeyMarkers(app, root) {
   }
 
   function refuse(reason) {
-    app.showError(`Not retimed: ${reason}. Times must increase; nothing changed.`, 'warn');
+    app.parts.notices.show(`Not retimed: ${reason}. Times must increase; nothing changed.`, 'warn');
   }
 
   /** Positions and names the markers on the scale [a, b] (default: the key times' own). */
@@ -93,7 +94,7 @@ export function buildKeyMarkers(app, root) {
     const next = [...times];
     next[i] = t;
     if (run?.i !== i) run = { i, id: ++runs };
-    const err = app.setTimes(next, { key: `key-marker ${run.id}`, at: e.timeStamp });
+    const err = reasonOf(app, 'setTimes', next, `key-marker ${run.id}`);
     if (err) refuse(err);
   }
 
@@ -136,7 +137,7 @@ export function buildKeyMarkers(app, root) {
     // The scale stays fixed while dragging (moving the first or last key would rescale it).
     const inset = parseFloat(getComputedStyle(root).getPropertyValue('--key-inset')) || 0;
     drag = {
-      i, pointer: e.pointerId, times, before: app.snapshot(), moved: false, refused: false,
+      i, pointer: e.pointerId, times, before: app.parts.session.snapshot(), moved: false, refused: false,
       left: r.left + inset, width: Math.max(1, r.width - 2 * inset), a: times[0], b: times[times.length - 1],
       offset: e.clientX - (mr.left + mr.width / 2),
       original: app.motion.times ? Array.from(app.motion.times) : null,
@@ -158,7 +159,7 @@ export function buildKeyMarkers(app, root) {
       }
       drag.moved = true;
       app.viewer.retime();
-      app.requestDraw();
+      app.viewer.requestDraw();
       place([drag.a, drag.b]);
     };
     const up = (ev) => {
@@ -181,7 +182,7 @@ export function buildKeyMarkers(app, root) {
         app.motion.setTimes(drag.original);
         drag.moved = false;
         app.viewer.retime();
-        app.requestDraw();
+        app.viewer.requestDraw();
       }
       place([drag.a, drag.b]);
       refuse(why);

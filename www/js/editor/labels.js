@@ -18,7 +18,7 @@ export default {
     return {
       bind() {
         // Right after the canvas: over the 3-D view, under every control.
-        app.canvas.closest('main').after(layer);
+        app.viewer.canvas.closest('main').after(layer);
         this.place();
       },
 
@@ -29,10 +29,10 @@ export default {
         layer.hidden = !show;
         if (!show) return;
         const n = app.motion.poseCount;
-        const r = app.canvas.getBoundingClientRect();
+        const r = app.viewer.canvas.getBoundingClientRect();
         const parts = [];
         for (let k = 0; k < n; k++) {
-          const p = app.screenOfPose(k);
+          const p = app.viewer.screenOfPose(k);
           parts.push(p && p.x >= r.left && p.x <= r.right && p.y >= r.top && p.y <= r.bottom ? p : null);
         }
         const now = `${n}:${app.selected}:${parts.map((p) => (p ? `${Math.round(p.x)},${Math.round(p.y)}` : '-')).join(';')}`;

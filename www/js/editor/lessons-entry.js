@@ -6,7 +6,7 @@
 // Lessons button; the player's own button takes its place once the player has started.
 import { lazy, stylesheet } from './modules.js';
 import { tourSeen } from '../lessons/progress.js';
-import { el } from '../views/dom.js';
+import { el } from '../dom.js';
 
 /**
  * Sets up the lessons of `app`, whose first frame `ready` resolves to. Returns `player()`: a
@@ -43,7 +43,7 @@ export function setUpLessons(app, ready) {
           return p;
         } catch (e) {
           started = null;
-          app.showError(`Lessons unavailable: ${e.message}`);
+          app.parts.notices.show(`Lessons unavailable: ${e.message}`);
           return null;
         }
       },
@@ -61,7 +61,7 @@ export function setUpLessons(app, ready) {
   // page, not inside a control.
   function onKey(e) {
     const t = e.target;
-    const onPage = !t || t === app.canvas || t === document.body || t === document.documentElement;
+    const onPage = !t || t === app.viewer.canvas || t === document.body || t === document.documentElement;
     if (!onPage || !(e.key === 'l' || e.key === 'L') || e.ctrlKey || e.metaKey || e.altKey) return;
     e.preventDefault();
     openMenu();

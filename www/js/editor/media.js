@@ -3,7 +3,7 @@
 //
 // PNG: the view drawn again at 1× or 2× its drawing buffer (2× is drawn at twice the size, lines
 // twice as wide, not scaled up) and copied in the same task (Viewer.snapshot: a WebGPU canvas is
-// readable only until its frame is presented); a transparent background as view/picture.js
+// readable only until its frame is presented); a transparent background as figure/picture.js
 // makes it.
 //
 // Video: one cycle of the motion at FPS frames per second of the motion's own time (the
@@ -22,7 +22,7 @@
 // draw the pose numbers (page elements over the view, not part of its frames) when they are
 // shown.
 import { download } from './files.js';
-import { picture } from '../view/picture.js';
+import { picture } from '../figure/picture.js';
 
 /** The muxer, fetched with the first video (it is not needed for the page's first frame). */
 const loadMuxer = () => import('../../vendor/mediabunny.min.mjs');
@@ -75,11 +75,11 @@ export function fileBase(title) {
 
 /**
  * The motion's playback for the recorder: its duration in seconds (the timeline's interval) and
- * show(t), the object at t seconds from the start (app.seekTime, view/viewer.js).
+ * show(t), the object at t seconds from the start (the viewer's seekTime, figure/viewer.js).
  */
 function cycle(app) {
   const { start, end } = app.viewer.playhead();
-  return { duration: end - start, show: (t) => app.seekTime(start + t) };
+  return { duration: end - start, show: (t) => app.viewer.seekTime(start + t) };
 }
 
 /**
@@ -90,7 +90,7 @@ function cycle(app) {
 function drawPoseNumbers(app, canvas) {
   const layer = document.getElementById('pose-labels');
   if (!layer || layer.hidden) return;
-  const view = app.canvas.getBoundingClientRect();
+  const view = app.viewer.canvas.getBoundingClientRect();
   const k = canvas.width / Math.max(1, view.width);
   const ctx = canvas.getContext('2d');
   for (const e of /** @type {NodeListOf<HTMLElement>} */ (layer.querySelectorAll('.pose-label'))) {
@@ -146,7 +146,7 @@ export default {
      */
     async function savePng({ scale = 1, transparent = false } = {}) {
       if (scale !== 1 && scale !== 2) {
-        app.showError(`PNG scale: ${scale} is not 1 or 2`);
+        app.parts.notices.show(`PNG scale: ${scale} is not 1 or 2`);
         return null;
       }
       let out;
@@ -155,14 +155,14 @@ export default {
         out = picture(app.viewer, { scale, transparent, gizmo: true });
         drawPoseNumbers(app, out);
       } catch (e) {
-        app.showError(`The picture could not be made: ${e.message}`);
+        app.parts.notices.show(`The picture could not be made: ${e.message}`);
         return null;
       } finally {
         reselect();
       }
       const blob = await new Promise((resolve) => out.toBlob(resolve, 'image/png'));
       if (!blob) {
-        app.showError('The picture could not be encoded as PNG.');
+        app.parts.notices.show('The picture could not be encoded as PNG.');
         return null;
       }
       const name = `${fileBase(title())}${scale === 2 ? '@2x' : ''}.png`;
@@ -219,16 +219,16 @@ export default {
     async function recordVideo({ format = chosenFormat() } = {}) {
       if (recording) return null;
       if (!VIDEO_FORMATS[format]) {
-        app.showError(`Video format: ${JSON.stringify(format)} is not mp4 or webm`);
+        app.parts.notices.show(`Video format: ${JSON.stringify(format)} is not mp4 or webm`);
         return null;
       }
       const c = cycle(app);
       if (!(c.duration > 0 && Number.isFinite(c.duration))) {
-        app.showError('No video: the motion has no duration.', 'warn');
+        app.parts.notices.show('No video: the motion has no duration.', 'warn');
         return null;
       }
       // Even sides (what the H.264, VP8 and VP9 encoders take).
-      const { w, h } = app.pixelSize();
+      const { w, h } = app.viewer.pixelSize();
       const width = w & ~1;
       const height = h & ~1;
       let cancelled = false;
@@ -236,7 +236,7 @@ export default {
       const chosen = await videoConfig(format, width, height);
       if (!chosen.config) {
         recording = null;
-        app.showError(`No video: ${chosen.why}. Try a recent Chrome, Edge or Firefox.`, 'warn');
+        app.parts.notices.show(`No video: ${chosen.why}. Try a recent Chrome, Edge or Firefox.`, 'warn');
         return null;
       }
       const { config, mux } = chosen;
@@ -246,7 +246,7 @@ export default {
         muxer = await loadMuxer();
       } catch (e) {
         recording = null;
-        app.showError(`No video: the video writer could not load (${e.message}).`, 'warn');
+        app.parts.notices.show(`No video: the video writer could not load (${e.message}).`, 'warn');
         return null;
       }
       const { BufferTarget, EncodedPacket, EncodedVideoPacketSource, Mp4OutputFormat, Output, WebMOutputFormat } = muxer;
@@ -273,7 +273,7 @@ export default {
       });
       // The playback as it was, given back afterwards.
       const { playing, u, visible } = app.anim;
-      if (playing) app.setPlaying(false);
+      if (playing) app.viewer.setPlaying(false);
       showProgress(true, 0);
       const reselect = hideSelection(app);
       // Each frame: the 3-D view copied with the pose numbers drawn on it.
@@ -286,7 +286,7 @@ export default {
         for (let i = 0; i < count && !cancelled && !error; i++) {
           c.show(Math.min(i / FPS, c.duration));
           app.viewer.draw();
-          still.getContext('2d').drawImage(app.canvas, 0, 0);
+          still.getContext('2d').drawImage(app.viewer.canvas, 0, 0);
           drawPoseNumbers(app, still);
           const frame = new VideoFrame(still, {
             timestamp: Math.round((i * 1e6) / FPS),
@@ -317,9 +317,9 @@ export default {
         recording = null;
         showProgress(false);
         app.setPlayback({ u, visible });
-        app.updateAnim();
-        if (playing) app.setPlaying(true);
-        app.requestDraw();
+        app.viewer.updateAnim();
+        if (playing) app.viewer.setPlaying(true);
+        app.viewer.requestDraw();
         app.ui?.refresh();
       }
       if (cancelled) {
@@ -327,7 +327,7 @@ export default {
         return null;
       }
       if (error) {
-        app.showError(`The video could not be recorded: ${error.message ?? error}`);
+        app.parts.notices.show(`The video could not be recorded: ${error.message ?? error}`);
         return null;
       }
       const bytes = new Uint8Array(output.target.buffer);
@@ -335,7 +335,7 @@ export default {
       download(name, bytes, fmt.mime);
       const duration = count / FPS;
       const saved = `Saved ${name}: ${duration.toFixed(2)} s, ${count} frames at ${FPS} fps`;
-      if (chosen.fellBack) app.showError(`No MP4: ${chosen.fellBack}. ${saved} (WebM) instead.`, 'warn');
+      if (chosen.fellBack) app.parts.notices.show(`No MP4: ${chosen.fellBack}. ${saved} (WebM) instead.`, 'warn');
       else app.ui?.toast(saved);
       return { name, format: chosen.format, codec: config.codec, frames: count, duration, bytes: bytes.length };
     }

@@ -48,7 +48,7 @@ async function init(imported) {
 export function openShare(app, opener = document.activeElement) {
   shareDialog().then(
     (m) => m.openShareDialog(app, opener),
-    (e) => app.showError(e.message),
+    (e) => app.parts.notices.show(e.message),
   );
 }
 const shareDialog = lazy('the share dialog', (a) => import(a ? `./share-dialog.js?retry=${a}` : './share-dialog.js'));

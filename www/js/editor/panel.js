@@ -39,18 +39,18 @@ export function buildPanel(app, { openPaste }) {
   // Proxy object: lil-gui reads/writes these; setters route to the app as undoable edits.
   const p = {
     get scheme() { return app.motion.scheme; },
-    set scheme(v) { v === 'j' ? app.setS(0.25) : app.setScheme(v); },
+    set scheme(v) { v === 'j' ? app.run('setS', 0.25) : app.run('setScheme', v); },
     get s() { return app.motion.s; },
-    set s(v) { app.setS(v); },
+    set s(v) { app.run('setS', v); },
     get rules() { return app.motion.rules; },
-    set rules(v) { app.setOption('rules', v); },
+    set rules(v) { app.run('setOption', 'rules', v); },
     get levels() { return app.motion.levels; },
-    set levels(v) { app.setOption('levels', v); },
+    set levels(v) { app.run('setOption', 'levels', v); },
     get closed() { return app.motion.closed; },
-    set closed(v) { app.setClosed(v); },
+    set closed(v) { app.run('setClosed', v); },
     get strobe() { return app.parts.responsive.fullStrobe(); },
     set strobe(v) {
-      if (Number.isFinite(v)) app.setView('strobe', Math.min(STROBE_MAX, Math.max(1, Math.round(v))));
+      if (Number.isFinite(v)) app.run('setView', 'strobe', Math.min(STROBE_MAX, Math.max(1, Math.round(v))));
     },
     // The slider is logarithmic: 1–10, 10–100, 100–1000 and 1000–10000 each take a quarter.
     get strobeLog() { return Math.log10(app.parts.responsive.fullStrobe()); },
@@ -61,13 +61,13 @@ export function buildPanel(app, { openPaste }) {
         $('obj-file').click();
         return;
       }
-      app.setView('object', v);
+      app.run('setView', 'object', v);
     },
   };
   /** @type {(key: string) => Record<string, boolean>} */
   const viewFlag = (key) => ({
     get [key]() { return app.view[key]; },
-    set [key](v) { app.setView(key, v); },
+    set [key](v) { app.run('setView', key, v); },
   });
 
   const fMotion = gui.addFolder('Motion');
@@ -111,15 +111,15 @@ export function buildPanel(app, { openPaste }) {
     exportControlCsv: () => app.parts.files.exportControlCsv(),
     exportCsv: () => exportMotion(app, 'csv', { tolerance: exportOpts.tolerance }),
     exportTrajectory: () => {
-      const pts = app.bodyPoints();
+      const pts = app.viewer.bodyPoints();
       exportMotion(app, 'csv', { tolerance: exportOpts.tolerance, point: pts[pts.length - 1] });
     },
     importJson: () => $('json-file').click(),
     pasteJson: () => openPaste(),
-    exportJson: () => app.exportJson(),
+    exportJson: () => app.parts.files.exportJson(),
     importObj: () => $('obj-file').click(),
     share: () => openShare(app),
-    reset: () => app.loadPreset(app.view.scene),
+    reset: () => app.run('loadPreset', app.view.scene),
   };
   const fFile = gui.addFolder('File');
   fFile.add(actions, 'importFile').name('Import file (JSON, CSV, glTF, OBJ)…');
@@ -143,10 +143,10 @@ export function buildPanel(app, { openPaste }) {
       const file = input.files[0];
       input.value = '';
       if (!file) return;
-      if (file.size > 64 << 20) return app.showError(`${file.name} is too large (${file.size} bytes). Nothing was changed.`);
+      if (file.size > 64 << 20) return app.parts.notices.show(`${file.name} is too large (${file.size} bytes). Nothing was changed.`);
       f(file);
     });
-  readFile($('json-file'), async (file) => app.importJson(await file.text(), file.name));
+  readFile($('json-file'), async (file) => app.parts.files.importJson(await file.text(), file.name));
   const any = /** @type {HTMLInputElement} */ ($('any-file'));
   any.addEventListener('change', async () => {
     const files = [...any.files];
@@ -155,9 +155,9 @@ export function buildPanel(app, { openPaste }) {
   });
   readFile($('obj-file'), async (file) => {
     const name = file.name.toLowerCase();
-    if (name.endsWith('.glb')) app.importMesh('gltf', new Uint8Array(await file.arrayBuffer()));
-    else if (name.endsWith('.gltf')) app.importMesh('gltf', await file.text());
-    else app.importMesh('obj', await file.text());
+    if (name.endsWith('.glb')) app.parts.files.importMesh('gltf', new Uint8Array(await file.arrayBuffer()));
+    else if (name.endsWith('.gltf')) app.parts.files.importMesh('gltf', await file.text());
+    else app.parts.files.importMesh('obj', await file.text());
   });
 
   /** Shows the state: every control's value and the preset button's name. */

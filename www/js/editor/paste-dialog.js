@@ -15,7 +15,7 @@ export function buildPasteDialog(app) {
     ta.select();
   }
   /** @type {HTMLElement} */ (dlg.querySelector('[data-act=load]')).onclick = () => {
-    if (app.importJson(dlg.querySelector('textarea').value)) dlg.hidden = true;
+    if (app.parts.files.importJson(dlg.querySelector('textarea').value)) dlg.hidden = true;
   };
   /** @type {HTMLElement} */ (dlg.querySelector('[data-act=cancel]')).onclick = () => (dlg.hidden = true);
   return { open };

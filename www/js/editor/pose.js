@@ -7,6 +7,7 @@
 // act on column vectors, Euler angles are intrinsic (the order names the axes from the world
 // frame inwards, as in three.js: 'XYZ' is R = Rx Ry Rz).
 import { qaxis, qmul } from '../math.js';
+import { el } from '../dom.js';
 
 /** The Euler orders the panel offers. */
 export const EULER_ORDERS = ['XYZ', 'XZY', 'YXZ', 'YZX', 'ZXY', 'ZYX'];
@@ -67,17 +68,6 @@ export function matrixToEuler(m, order) {
 function show(v) {
   const r = Number(v.toFixed(6));
   return String(Object.is(r, -0) ? 0 : r);
-}
-
-function el(tag, props = {}, children = []) {
-  const e = document.createElement(tag);
-  for (const [k, v] of Object.entries(props)) {
-    if (k === 'class') e.className = v;
-    else if (k in e) e[k] = v;
-    else e.setAttribute(k, v);
-  }
-  e.append(...children);
-  return e;
 }
 
 /** @type {import('../app.js').Part} */

@@ -4,6 +4,9 @@
 
 import { foldPanelOnSmallScreens } from './fold.js';
 
+/** The preset a first visit shows. */
+export const DEFAULT_SCENE = 'l_cycle_rotated';
+
 /** The name of a preset in words (the core's, `presets()[i].name`). */
 export function presetName(info) {
   return info.name;
@@ -57,7 +60,7 @@ export default {
         }
         b.onclick = () => {
           close();
-          app.loadPreset(s.id);
+          app.run('loadPreset', s.id);
           // Phones: the picked preset in view, not the panel it was picked from.
           foldPanelOnSmallScreens(app);
         };
@@ -103,7 +106,7 @@ export default {
         };
         /** @type {HTMLElement} */ (hint.querySelector('.close')).onclick = () => {
           dismiss();
-          app.canvas?.focus();
+          app.viewer.canvas?.focus();
         };
         // The hint has done its job once the visitor edits or turns the view: it goes then (a
         // drag of more than a few pixels on the canvas, a wheel zoom, or any undoable edit).
@@ -118,13 +121,13 @@ export default {
         const edited = () => app.history.version !== version && done();
         /** @type {[EventTarget, string, (e: PointerEvent) => void][]} */
         const listeners = [
-          [app.canvas, 'pointerdown', (e) => (down = { x: e.clientX, y: e.clientY })],
-          [app.canvas, 'pointermove', (e) => down && Math.hypot(e.clientX - down.x, e.clientY - down.y) > 6 && done()],
+          [app.viewer.canvas, 'pointerdown', (e) => (down = { x: e.clientX, y: e.clientY })],
+          [app.viewer.canvas, 'pointermove', (e) => down && Math.hypot(e.clientX - down.x, e.clientY - down.y) > 6 && done()],
           [window, 'pointerup', () => {
             down = null;
             setTimeout(edited, 0);
           }],
-          [app.canvas, 'wheel', done],
+          [app.viewer.canvas, 'wheel', done],
           [window, 'keyup', () => setTimeout(edited, 0)],
           [document, 'change', () => setTimeout(edited, 0)],
         ];

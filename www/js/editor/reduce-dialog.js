@@ -2,7 +2,7 @@
 // samples, say) asks whether to keep them all, every k-th, or the fewest within a tolerance
 // (the core's reducePoses, docs/math/formats.md §7). A real modal <dialog>: the rest of the page
 // is inert while it is open (focus stays inside), Esc or Cancel changes nothing.
-import { el } from '../views/dom.js';
+import { el } from '../dom.js';
 
 /** More poses than this in one imported file open the dialog (the core's MANY_POSES). */
 export const MANY_POSES = 64;

@@ -1,6 +1,6 @@
 // Staying responsive in heavy sessions. While frames are drawn, the interval between
 // consecutive drawn frames is measured from requestAnimationFrame to requestAnimationFrame
-// (app.stats.frameIntervalMs: what the user waits, GPU included, beside the CPU-side
+// (app.viewer.stats.frameIntervalMs: what the user waits, GPU included, beside the CPU-side
 // stats.frameMs). During a drag, an orbit, a pan or a zoom, when frames take longer than the
 // budget, the strobe is drawn with fewer copies; the full strobe comes back when the gesture
 // ends (idle). The reduced count is never saved: sessions store the full one. After each drawn
@@ -59,16 +59,16 @@ export default {
       full = null;
       // A pose drag's release rebuilds everything anyway (editor/input.js).
       if (!app.drag?.moved) app.viewer.rebuild();
-      app.requestDraw();
+      app.viewer.requestDraw();
       app.ui?.refresh();
     }
 
     function tick(now) {
-      const f = app.frames;
+      const f = app.viewer.frames;
       if (f !== lastFrames) {
         if (lastT !== null && f === lastFrames + 1) {
           const dt = now - lastT;
-          app.stats.frameIntervalMs = dt;
+          app.viewer.stats.frameIntervalMs = dt;
           recent.push(dt);
           if (recent.length > 3) recent.shift();
           if (gesture && full === null && app.view.showStrobe && recent.length >= 2 && median(recent) > FRAME_BUDGET_MS) reduce(median(recent));
@@ -91,7 +91,7 @@ export default {
     function sample() {
       if (sampling) return;
       sampling = true;
-      lastFrames = app.frames;
+      lastFrames = app.viewer.frames;
       lastT = null;
       quietSince = performance.now();
       requestAnimationFrame(tick);
@@ -120,7 +120,7 @@ export default {
       /** Measures frames while something draws (playback included). */
       sample,
       bind() {
-        const c = app.canvas;
+        const c = app.viewer.canvas;
         c.addEventListener('pointerdown', begin);
         // Capture on the window: the full strobe is back before the editor's release handler
         // saves the session.

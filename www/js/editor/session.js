@@ -4,8 +4,10 @@
 //
 // The pure helpers (History, storage) come first (the hash coding is ../share-link.js); the part (default export, see
 // app.js for the part contract) applies sessions to the app and records its edits.
-import { SLOT } from '../view/slots.js';
+import { SLOT } from '../figure/slots.js';
 import { SESSION_VERSION, decodeHash, encodeHash } from '../share-link.js';
+import { COMMANDS } from './commands.js';
+import { DEFAULT_SCENE, presetName } from './presets.js';
 /** Undo steps kept. */
 export const MAX_UNDO = 200;
 
@@ -113,7 +115,7 @@ export default {
         anim: { u: app.anim.u, speed: app.anim.speed, loop: app.anim.loop },
       };
       if (app.imported && app.imported.data.length <= MAX_SAVED_MESH) s.mesh = app.imported;
-      if (withCamera) s.camera = app.camera.toJSON();
+      if (withCamera) s.camera = app.viewer.camera.toJSON();
       return s;
     }
 
@@ -122,7 +124,7 @@ export default {
       if (!s || typeof s !== 'object') throw new Error('not a session object');
       const motion = new app.wasm.Motion(s.document, s.options); // validates everything
       if (s.mesh) {
-        app.setImportedMesh(SLOT.strobe, s.mesh); // validates the mesh
+        app.viewer.setImportedMesh(SLOT.strobe, s.mesh); // validates the mesh
         app.setImported(s.mesh);
       }
       app.setMotion(motion);
@@ -155,9 +157,9 @@ export default {
         if (typeof s.anim.loop === 'boolean') a.loop = s.anim.loop;
         app.setPlayback(a);
       }
-      if (s.camera) app.camera.load(s.camera);
-      else app.frameAll();
-      app.meshesChanged();
+      if (s.camera) app.viewer.camera.load(s.camera);
+      else app.parts.viewpoint.fit();
+      app.viewer.meshesChanged();
       app.changed(false);
     }
 
@@ -167,7 +169,7 @@ export default {
     }
 
     function restoreSnapshot(text) {
-      const cam = app.camera.toJSON();
+      const cam = app.viewer.camera.toJSON();
       applySession({ ...JSON.parse(text), camera: cam });
       app.ui?.refresh();
     }
@@ -181,6 +183,49 @@ export default {
       applySession,
       snapshot,
       autosave,
+
+      /** Saves after every change of the motion or the display that asks for it. */
+      bind() {
+        app.on('motion', (d) => d?.save !== false && autosave());
+      },
+
+      /**
+       * Shows preset `id` without an undo step (the first scene of a visit, a test's start; the
+       * loadPreset command is the undoable pick); a failure is shown and changes nothing.
+       */
+      openPreset(id) {
+        try {
+          COMMANDS.loadPreset.run(app, id);
+        } catch (e) {
+          return app.parts.notices.show(e.message);
+        }
+        app.changed();
+      },
+
+      /**
+       * The first motion: share link (#s=) > `?preset=<id>` > autosave > default preset. A linked
+       * preset over an autosaved session is one undoable edit, as a pick in the Presets menu is
+       * (Ctrl+Z brings the session back); an unknown id says so and the page opens as it would
+       * without it. The parameter then leaves the address, so a reload keeps the edits made since
+       * instead of loading the preset afresh.
+       * @param {URLSearchParams} params
+       */
+      openInitial(params) {
+        const restored = this.restoreInitial();
+        const linked = restored === 'link' ? null : params.get('preset');
+        const known = linked !== null && app.scenes.some((s) => s.id === linked);
+        if (known && restored) app.run('loadPreset', linked);
+        else if (!restored) this.openPreset(known ? linked : DEFAULT_SCENE);
+        if (linked !== null && !known) {
+          const shown = restored ? 'the last session is shown' : `showing ${presetName(app.viewer.drawing.sceneInfo)}`;
+          app.parts.notices.show(`The link asks for preset "${linked}", which does not exist (the Presets menu lists them); ${shown}.`, 'warn');
+        }
+        if (params.has('preset')) {
+          const url = new URL(location.href);
+          url.searchParams.delete('preset');
+          history.replaceState(history.state, '', url.href);
+        }
+      },
 
       /**
        * Share link > autosave (this tab's draft, else the latest of any tab): applies the first
@@ -197,7 +242,7 @@ export default {
             autosave();
             return 'link';
           } catch (e) {
-            app.showError(`The shared link could not be opened: ${e.message}`);
+            app.parts.notices.show(`The shared link could not be opened: ${e.message}`);
           }
         }
         const saved = app.parts.drafts.latest();
@@ -206,7 +251,7 @@ export default {
             applySession(saved);
             return 'saved';
           } catch (e) {
-            app.showError(`The autosaved session could not be restored: ${e.message}`);
+            app.parts.notices.show(`The autosaved session could not be restored: ${e.message}`);
           }
         }
         return '';
@@ -233,7 +278,7 @@ export default {
           app.changed();
           return r;
         } catch (e) {
-          app.showError(e.message);
+          app.parts.notices.show(e.message);
           return undefined;
         }
       },

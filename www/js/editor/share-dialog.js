@@ -23,7 +23,7 @@ const OFFLINE_INFO = 'pkg-offline/figure.json';
 const SLOT_FIGURE = '<!--screwbender:figure-->';
 const SLOT_TITLE = '<!--screwbender:title-->';
 const SLOT_BUNNY = '<!--screwbender:bunny-->';
-/** The preset whose object is the Stanford bunny (view/drawing.js), and where its mesh is. */
+/** The preset whose object is the Stanford bunny (figure/drawing.js), and where its mesh is. */
 const BUNNY_PRESET = 'bunny6';
 const BUNNY_URL = 'vendor/bunny.obj';
 /** What the Web page form gives (more is said when the object shown is not the bar). */
@@ -54,7 +54,7 @@ export function figureOptions(app) {
   out.push(['strobe', String(strobe)]);
   const show = LAYERS.filter((l) => app.view[LAYER_FIELD[l]]).join(' ');
   if (show !== DEFAULT_SHOW) out.push(['show', show || 'grid']);
-  const c = app.camera;
+  const c = app.viewer.camera;
   const deg = (r) => (r * 180) / Math.PI;
   // The attribute has no straight-down view: a top view is given as the steepest it takes.
   const pitch = Math.max(-MAX_PITCH_DEG, Math.min(MAX_PITCH_DEG, deg(c.pitch)));
@@ -267,7 +267,7 @@ const choicesOf = () => ({ controls: ui.controls.value, autoplay: ui.autoplay.ch
 function fill(app) {
   const choices = choicesOf();
   const page = new URL(location.pathname, location.href).href;
-  ui.link.value = app.shareLink();
+  ui.link.value = app.parts.session.shareLink();
   ui.element.value = elementSnippet(app, choices, new URL('js/element/screw-bender.js', page).href);
   ui.iframe.value = iframeSnippet(app, choices, page);
   // The element draws an inline motion with the bar: say so when the playground shows another object.
@@ -289,7 +289,7 @@ async function saveOffline(app) {
     return { name, bytes: blob.size };
   } catch (e) {
     ui.status.textContent = `The file could not be made: ${e.message}`;
-    app.showError(`The offline file could not be made: ${e.message}`);
+    app.parts.notices.show(`The offline file could not be made: ${e.message}`);
     return null;
   } finally {
     ui.download.disabled = false;

@@ -10,7 +10,7 @@ import { presetName, presetSubtitle } from './presets.js';
  * @param {import('../app.js').App} app
  */
 export function describeScene(app) {
-  const info = app.sceneInfo;
+  const info = app.viewer.drawing.sceneInfo;
   const named = app.scenes.find((s) => s.id === app.view.scene);
   const fileName = app.motion.name && app.motion.name !== app.view.scene ? app.motion.name : null;
   const fileScene = fileName && app.scenes.find((s) => s.id === fileName);

@@ -41,12 +41,12 @@ export default {
 
     /** Shows the other theme than the one shown now (an explicit choice, undoable like every view setting). */
     function toggle() {
-      app.setView('theme', isDark() ? 'light' : 'dark');
+      app.run('setView', 'theme', isDark() ? 'light' : 'dark');
     }
 
     function onKey(e) {
       const t = e.target;
-      const onView = !t || t === app.canvas || t === document.body || t === document.documentElement;
+      const onView = !t || t === app.viewer.canvas || t === document.body || t === document.documentElement;
       if (!onView || e.ctrlKey || e.metaKey || e.altKey || e.shiftKey) return;
       if (e.key !== 'd' && e.key !== 'D') return;
       toggle();

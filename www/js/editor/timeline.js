@@ -9,11 +9,11 @@ import { buildKeyMarkers } from './key-markers.js';
  */
 export function buildTimeline(app) {
   const $ = (id) => document.getElementById(id);
-  $('play').onclick = () => app.setPlaying(!app.anim.playing);
+  $('play').onclick = () => app.viewer.setPlaying(!app.anim.playing);
   const scrub = /** @type {HTMLInputElement} */ ($('scrub'));
   scrub.addEventListener('input', () => {
     const [a, b] = app.motion.timeDomain();
-    app.seekTime(a + (b - a) * (Number(scrub.value) / 1000));
+    app.viewer.seekTime(a + (b - a) * (Number(scrub.value) / 1000));
   });
   const keyMarkers = buildKeyMarkers(app, $('keys'));
   const speed = /** @type {HTMLInputElement} */ ($('speed'));

@@ -65,7 +65,7 @@ export default {
     /** Opens the menu beside `anchor` (the Undo or Redo button). */
     function open(anchor = $('t-undo')) {
       if (!menu) build();
-      menu.replaceChildren(...side('Undo', app.history.undoLabels, () => app.undo()), ...side('Redo', app.history.redoLabels, () => app.redo()));
+      menu.replaceChildren(...side('Undo', app.history.undoLabels, () => app.parts.session.undo()), ...side('Redo', app.history.redoLabels, () => app.parts.session.redo()));
       menu.hidden = false;
       const r = anchor.getBoundingClientRect();
       const W = window.innerWidth;

@@ -1,5 +1,5 @@
 // Where the 3-D view looks from and how it fills the screen: the named camera views (front, top,
-// side, iso: view/camera.js CAMERA_PRESETS), the orthographic projection, fullscreen, and the
+// side, iso: figure/camera.js CAMERA_PRESETS), the orthographic projection, fullscreen, and the
 // toolbar's View menu that holds them with the theme toggle (editor/theme.js) and the picture
 // exports (editor/media.js, which binds its entries after this part). Keys, with the
 // view focused: Shift+F / Shift+T / Shift+S / Shift+I the named views, O orthographic
@@ -81,7 +81,7 @@ export default {
       app.viewer.cameraMoved();
       app.ui?.refresh();
       refresh();
-      app.autosave();
+      app.parts.session.autosave();
     }
 
     /**
@@ -93,7 +93,7 @@ export default {
      */
     function frameFree() {
       app.viewer.frameAll();
-      const canvas = app.canvas.getBoundingClientRect();
+      const canvas = app.viewer.canvas.getBoundingClientRect();
       let free = { left: canvas.left, top: canvas.top, width: canvas.width, height: canvas.height };
       for (const id of ['title', 'hint', 'toolbar', 'timeline', 'panel']) {
         const e = document.getElementById(id);
@@ -102,7 +102,7 @@ export default {
         if (r.width > 0 && r.height > 0) free = without(free, r);
       }
       if (free.width < 80 || free.height < 80) return;
-      const cam = app.camera;
+      const cam = app.viewer.camera;
       const ratio = Math.min(free.width / canvas.width, free.height / canvas.height);
       if (ratio < 1) cam.distance /= ratio;
       // Scene units per CSS pixel in the target's plane, after the back-off.
@@ -115,7 +115,7 @@ export default {
 
     /** Turns the camera to the named view ('front', 'top', 'side', 'iso'), framed in the free part of the view; false when unknown. */
     function preset(name) {
-      if (!app.camera.preset(name)) return false;
+      if (!app.viewer.camera.preset(name)) return false;
       frameFree();
       moved();
       return true;
@@ -123,7 +123,7 @@ export default {
 
     /** Orthographic (true) or perspective projection; the camera's setting is saved with the session. */
     function setOrtho(on) {
-      app.camera.ortho = !!on;
+      app.viewer.camera.ortho = !!on;
       moved();
     }
 
@@ -137,22 +137,22 @@ export default {
         else if (stage().requestFullscreen) await stage().requestFullscreen({ navigationUI: 'hide' });
         else throw new Error('this browser has no fullscreen mode');
       } catch (e) {
-        app.showError(`Fullscreen is not available: ${e.message}`, 'warn');
+        app.parts.notices.show(`Fullscreen is not available: ${e.message}`, 'warn');
       }
     }
 
     function refresh() {
-      $('m-ortho')?.setAttribute('aria-pressed', String(!!app.camera?.ortho));
+      $('m-ortho')?.setAttribute('aria-pressed', String(!!app.viewer.camera?.ortho));
       $('m-fullscreen')?.setAttribute('aria-pressed', String(!!document.fullscreenElement));
     }
 
     function onKey(e) {
       const t = e.target;
-      const onView = !t || t === app.canvas || t === document.body || t === document.documentElement;
+      const onView = !t || t === app.viewer.canvas || t === document.body || t === document.documentElement;
       if (!onView || e.ctrlKey || e.metaKey || e.altKey) return;
       const name = e.shiftKey ? PRESET_KEYS[e.key] : null;
       if (name) preset(name);
-      else if (e.key === 'o' || e.key === 'O') setOrtho(!app.camera.ortho);
+      else if (e.key === 'o' || e.key === 'O') setOrtho(!app.viewer.camera.ortho);
       else return;
       e.preventDefault();
     }
@@ -164,7 +164,7 @@ export default {
         frameFree();
         moved();
       },
-      /** The same without saving the session (app.frameAll: a preset, an import, a session without a camera). */
+      /** The same without saving the session (a preset, an import, a session without a camera). */
       fit() {
         frameFree();
         app.viewer.cameraMoved();
@@ -179,7 +179,7 @@ export default {
         for (const b of /** @type {NodeListOf<HTMLElement>} */ ($('view-menu').querySelectorAll('[data-camera]'))) {
           b.addEventListener('click', () => preset(b.dataset.camera));
         }
-        $('m-ortho').addEventListener('click', () => setOrtho(!app.camera.ortho));
+        $('m-ortho').addEventListener('click', () => setOrtho(!app.viewer.camera.ortho));
         $('m-fullscreen').addEventListener('click', () => toggleFullscreen());
         document.addEventListener('fullscreenchange', () => {
           // The view changed size: the resize observer redraws; the framing stays.

@@ -1,7 +1,7 @@
 // The editing of an editable figure (`editable`): its pointer tool, the selection and the
 // events `select` and `change`. Turning editing on or off gives the figure a fresh canvas
 // (figure.js), since the pointer listeners live on the canvas.
-import { beginPoseDrag, dragTarget, hoverPoseTool, redrawPoseDrag, setDragPose } from '../view/pose-drag.js';
+import { beginPoseDrag, dragTarget, hoverPoseTool, redrawPoseDrag, setDragPose } from '../figure/pose-drag.js';
 import { describePose } from './description.js';
 import { bool } from './options.js';
 
@@ -35,7 +35,7 @@ export const editingFeature = {
 
 /**
  * The pointer tool of an editable figure `fig`: select a pose, drag it with the gizmo (the
- * steps shared with the playground's editor are view/pose-drag.js); a drag that moved the pose
+ * steps shared with the playground's editor are figure/pose-drag.js); a drag that moved the pose
  * saves it (`persist`) and fires `change`.
  */
 export function editTool(fig) {

@@ -1,4 +1,4 @@
-// One figure: the viewer (view/viewer.js) on a canvas in a shadow root, with its chrome, its
+// One figure: the viewer (figure/viewer.js) on a canvas in a shadow root, with its chrome, its
 // source and its options; what the element <screw-bender> and mount() (screw-bender.js) drive.
 // Its features (features.js) each declare their options and apply them: source.js (where the
 // motion comes from, the opt-in saved copy), subdivision.js, display.js (layers, strobe),
@@ -7,7 +7,7 @@
 // on poses), loading.js (lazy start, poster, hidden slides, print); this file starts, loads and
 // stops the figure and hands each change of options to them. wasm.js holds the module instance
 // all figures share.
-import { Viewer, newModel } from '../view/viewer.js';
+import { Viewer, newModel } from '../figure/viewer.js';
 import { cameraMoved } from './camera.js';
 import { bindChrome, buildChrome, onKey, refreshChrome, timeChanged } from './chrome.js';
 import { describePose, say } from './description.js';

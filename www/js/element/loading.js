@@ -10,7 +10,7 @@
 //   current frame, a 2-D canvas, which prints where a WebGPU or WebGL canvas prints blank.
 //   The print listeners are the figures' only ones outside their shadow trees: one set for the
 //   page (added with the first figure, removed with the last), and they only take pictures.
-import { picture } from '../view/picture.js';
+import { picture } from '../figure/picture.js';
 import { check, oneOf } from './options.js';
 
 /** How near the viewport a lazy figure starts (and a started one keeps drawing). */

@@ -1,7 +1,7 @@
 // Pictures of a figure from script, as a canvas gives them: toBlob(opts) and toDataURL(opts),
 // drawn at `scale` times the drawing buffer (not scaled up), optionally transparent and with the
 // gizmo. Bad options throw a RangeError naming the option (or the promise rejects with it).
-import { picture } from '../view/picture.js';
+import { picture } from '../figure/picture.js';
 
 const TYPES = ['image/png', 'image/jpeg', 'image/webp'];
 /** Largest picture scale (times the drawing buffer); the device's texture limit also applies. */

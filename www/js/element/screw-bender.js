@@ -1,5 +1,5 @@
 // The embeddable figure: the custom element <screw-bender> and mount(element, options) for
-// frameworks, built from the playground's view (view/viewer.js: one renderer, camera, picking
+// frameworks, built from the playground's view (figure/viewer.js: one renderer, camera, picking
 // and drawing path); the figure itself is figure.js (its features in the files
 // features.js names). This file is the entry: the element, mount() and the handle.
 //

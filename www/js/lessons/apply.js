@@ -12,7 +12,7 @@ import { withS } from './format.js';
  * @param {import('../app.js').App} app
  */
 export function applyStep(app, s, setTarget) {
-  if (s.scene) app.loadPreset(s.scene);
+  if (s.scene) app.run('loadPreset', s.scene);
   if (s.document || s.options || s.display || s.timing?.times !== undefined) tryCommand(app, 'lessonStep', s, s.options ? withS(s.options) : null);
   if (s.select !== undefined) app.select(s.select < app.motion.poseCount ? s.select : -1);
   const t = s.timing ?? {};
@@ -20,16 +20,16 @@ export function applyStep(app, s, setTarget) {
   if (t.u !== undefined) {
     const [a, b] = app.motion.domain();
     app.setPlayback({ u: Math.min(b, Math.max(a, t.u)), visible: true });
-    app.updateAnim();
+    app.viewer.updateAnim();
   }
-  if (t.play !== undefined) app.setPlaying(t.play);
+  if (t.play !== undefined) app.viewer.setPlaying(t.play);
   if (s.camera) {
-    app.camera.load(s.camera);
+    app.viewer.camera.load(s.camera);
     app.viewer.cameraMoved();
   }
-  if (s.dock !== undefined && s.dock !== (app.view.dock || '')) app.openView(s.dock);
+  if (s.dock !== undefined && s.dock !== (app.view.dock || '')) app.parts.dockHost.open(s.dock);
   if (s.stepsAt !== undefined) app.dock.current?.goTo?.(s.stepsAt);
   setTarget(s.highlight ?? null);
   app.ui.refresh();
-  app.requestDraw();
+  app.viewer.requestDraw();
 }

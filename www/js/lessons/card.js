@@ -4,7 +4,7 @@
 // stands is the page's layout while a lesson is open (css/lessons.css): a column beside the
 // 3-D view, or on phones upright a sheet below it.
 import { renderText } from './format.js';
-import { el } from './dom.js';
+import { el } from '../dom.js';
 
 /**
  * Creates the (hidden) lesson card. Returns its parts {card, scroll, proxy, lessonTitle, bar,
@@ -16,25 +16,25 @@ export function createCard() {
   card.id = 'lesson';
   card.hidden = true;
   card.setAttribute('aria-label', 'Lesson');
-  const head = el('div', 'head');
-  const lessonTitle = el('span', 'ltitle');
-  const counter = el('span', 'count');
-  const closeBtn = el('button', 'close', '×');
+  const head = el('div', { class: 'head' });
+  const lessonTitle = el('span', { class: 'ltitle' });
+  const counter = el('span', { class: 'count' });
+  const closeBtn = el('button', { class: 'close' }, '×');
   closeBtn.title = 'Close the lesson (progress is kept)';
   closeBtn.setAttribute('aria-label', 'Close the lesson');
   head.append(lessonTitle, counter, closeBtn);
-  const bar = el('div', 'bar');
+  const bar = el('div', { class: 'bar' });
   const stepTitle = el('h3');
-  const body = el('div', 'text');
-  const exercise = el('div', 'exercise');
-  const nav = el('div', 'nav');
-  const prevBtn = el('button', 'prev', '◀ Back');
-  const nextBtn = el('button', 'next primary', 'Next ▶');
+  const body = el('div', { class: 'text' });
+  const exercise = el('div', { class: 'exercise' });
+  const nav = el('div', { class: 'nav' });
+  const prevBtn = el('button', { class: 'prev' }, '◀ Back');
+  const nextBtn = el('button', { class: 'next primary' }, 'Next ▶');
   nav.append(prevBtn, nextBtn);
   // Head, step title, the exercise's task, Check, Hint, feedback and Back / Next stay put; the
   // text scrolls between them (and, where the card is very short, the choices scroll inside the
   // exercise), so a student never scrolls to find the button the step asks for.
-  const scroll = el('div', 'scroll');
+  const scroll = el('div', { class: 'scroll' });
   // Keyboard users scroll it too (a scrollable region must take the focus).
   scroll.tabIndex = 0;
   scroll.setAttribute('role', 'region');
@@ -42,7 +42,7 @@ export function createCard() {
   scroll.append(body);
   // Where a step's highlighted control cannot be reached where it is (highlight.js), a button
   // standing in for it.
-  const proxy = el('div', 'proxy');
+  const proxy = el('div', { class: 'proxy' });
   proxy.hidden = true;
   card.append(head, bar, stepTitle, scroll, proxy, exercise, nav);
   document.body.append(card);
@@ -71,7 +71,7 @@ export function createCard() {
     const n = lesson.steps.length;
     counter.textContent = `${step + 1} / ${n}`;
     bar.replaceChildren(...lesson.steps.map((st, k) => {
-      const d = el('i', `${k === step ? 'on' : ''} ${progress.solved.includes(k) ? 'solved' : ''} ${st.exercise ? 'ex' : ''}`.trim());
+      const d = el('i', { class: `${k === step ? 'on' : ''} ${progress.solved.includes(k) ? 'solved' : ''} ${st.exercise ? 'ex' : ''}`.trim() });
       d.title = st.title;
       return d;
     }));
@@ -96,33 +96,33 @@ export function createCard() {
     const solved = exercises.filter((k) => progress.solved.includes(k));
     counter.textContent = 'done';
     bar.replaceChildren(...lesson.steps.map((st, k) => {
-      const d = el('i', `${progress.solved.includes(k) ? 'solved' : ''} ${st.exercise ? 'ex' : ''}`.trim());
+      const d = el('i', { class: `${progress.solved.includes(k) ? 'solved' : ''} ${st.exercise ? 'ex' : ''}`.trim() });
       d.title = st.title;
       return d;
     }));
     stepTitle.textContent = 'Lesson complete';
     const parts = [];
-    const score = el('p', 'score', exercises.length ? `Exercises solved: ${solved.length} of ${exercises.length}.` : 'This lesson has no exercises.');
+    const score = el('p', { class: 'score' }, exercises.length ? `Exercises solved: ${solved.length} of ${exercises.length}.` : 'This lesson has no exercises.');
     parts.push(score);
     const open = exercises.filter((k) => !progress.solved.includes(k));
     if (open.length) {
-      const list = el('ul', 'unsolved');
+      const list = el('ul', { class: 'unsolved' });
       for (const k of open) {
         const li = el('li');
-        const b = el('button', 'link', `Step ${k + 1}: ${lesson.steps[k].title}`);
+        const b = el('button', { class: 'link' }, `Step ${k + 1}: ${lesson.steps[k].title}`);
         b.addEventListener('click', () => goTo(k));
         li.append(b);
         list.append(li);
       }
-      parts.push(el('p', '', 'Not solved yet:'), list);
+      parts.push(el('p', {}, 'Not solved yet:'), list);
     }
     if (next) {
-      const p = el('p', 'next-lesson');
-      const b = el('button', 'primary start-next', `Start ${next.title}`);
+      const p = el('p', { class: 'next-lesson' });
+      const b = el('button', { class: 'primary start-next' }, `Start ${next.title}`);
       b.addEventListener('click', () => next.start());
-      p.append(el('span', '', `Try next: ${next.summary}. `), b);
+      p.append(el('span', {}, `Try next: ${next.summary}. `), b);
       parts.push(p);
-    } else parts.push(el('p', '', 'That was the last lesson: the Lessons menu lists them all, and any step can be opened again from there.'));
+    } else parts.push(el('p', {}, 'That was the last lesson: the Lessons menu lists them all, and any step can be opened again from there.'));
     body.replaceChildren(...parts);
     exercise.replaceChildren();
     exercise.hidden = true;

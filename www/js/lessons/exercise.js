@@ -3,7 +3,7 @@
 import { renderText } from './format.js';
 import { evaluateExercise } from './checks.js';
 import { writeProgress } from './progress.js';
-import { el } from './dom.js';
+import { el } from '../dom.js';
 
 /**
  * Creates the exercise part of the lesson card in `box`; `bar` is the card's step bar (its dot
@@ -15,14 +15,14 @@ export function createExercise(app, box, bar, st, fit = () => {}) {
   /** Shows exercise `x` of the open step. */
   function render(x) {
     const solved = st.progress.solved.includes(st.step);
-    const task = el('div', 'task');
-    task.append(el('b', 'label', solved ? 'Exercise ✓ solved' : 'Exercise'), renderText(x.task));
+    const task = el('div', { class: 'task' });
+    task.append(el('b', { class: 'label' }, solved ? 'Exercise ✓ solved' : 'Exercise'), renderText(x.task));
     box.append(task);
     // The choices and the hints shown scroll where the card is short; task, buttons and
     // feedback stay in view.
-    const more = el('div', 'ex-scroll');
+    const more = el('div', { class: 'ex-scroll' });
     if (x.choices) {
-      const fs = el('div', 'choices');
+      const fs = el('div', { class: 'choices' });
       fs.setAttribute('role', 'radiogroup');
       fs.setAttribute('aria-label', 'Answers');
       x.choices.forEach((c, k) => {
@@ -40,18 +40,18 @@ export function createExercise(app, box, bar, st, fit = () => {}) {
       });
       more.append(fs);
     }
-    more.append(el('div', 'hints'));
-    const row = el('div', 'row');
-    const checkBtn = el('button', 'check primary', 'Check');
+    more.append(el('div', { class: 'hints' }));
+    const row = el('div', { class: 'row' });
+    const checkBtn = el('button', { class: 'check primary' }, 'Check');
     checkBtn.addEventListener('click', () => check());
     row.append(checkBtn);
     if (x.hints?.length) {
-      const hintBtn = el('button', 'hint', 'Hint');
+      const hintBtn = el('button', { class: 'hint' }, 'Hint');
       hintBtn.addEventListener('click', () => showHint(x));
       row.append(hintBtn);
     }
     // A live region: the result of each Check is read out as well as shown.
-    const fb = Object.assign(el('div', 'feedback'), { role: 'status' });
+    const fb = Object.assign(el('div', { class: 'feedback' }), { role: 'status' });
     fb.setAttribute('aria-live', 'polite');
     fb.setAttribute('aria-atomic', 'true');
     box.append(more, row, fb);
@@ -61,8 +61,8 @@ export function createExercise(app, box, bar, st, fit = () => {}) {
   function showHint(x) {
     const hints = box.querySelector('.hints');
     if (st.hintShown >= x.hints.length) return;
-    const h = el('div', 'hint-text');
-    h.append(el('b', '', `Hint ${st.hintShown + 1}: `), renderText(x.hints[st.hintShown]));
+    const h = el('div', { class: 'hint-text' });
+    h.append(el('b', {}, `Hint ${st.hintShown + 1}: `), renderText(x.hints[st.hintShown]));
     hints.append(h);
     st.hintShown++;
     fit();

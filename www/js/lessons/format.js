@@ -295,7 +295,7 @@ function checkStepBody(s, p, ctx, P) {
   if (s.exercise !== undefined) validateExercise(s.exercise, `${p}.exercise`, P);
 }
 
-/** A step's camera, as the page's session keeps it (view/camera.js OrbitCamera.toJSON). */
+/** A step's camera, as the page's session keeps it (figure/camera.js OrbitCamera.toJSON). */
 function validateCamera(c, p, P) {
   if (!isObj(c)) fail(p, 'expected {target, distance, yaw, pitch, ortho?}');
   onlyKeys(c, ['target', 'distance', 'yaw', 'pitch', 'ortho'], p, P);

@@ -5,7 +5,7 @@
 // its container's scrolling hides (the panel, a toolbar kept to one row) is scrolled into view,
 // and a button that something still covers is offered on the card as a button standing in for
 // it.
-import { el } from './dom.js';
+import { el } from '../dom.js';
 import { foldPanelOnSmallScreens } from '../editor/fold.js';
 
 /**
@@ -70,8 +70,8 @@ export function createHighlight(app, { card, proxy }) {
     }
     let p = null;
     try {
-      if (target.pose !== undefined && target.pose < app.motion.poseCount) p = app.screenOfPose(target.pose);
-      if (target.gizmo !== undefined && app.selected >= 0) p = app.screenOfGizmo(target.gizmo);
+      if (target.pose !== undefined && target.pose < app.motion.poseCount) p = app.viewer.screenOfPose(target.pose);
+      if (target.gizmo !== undefined && app.selected >= 0) p = app.viewer.screenOfGizmo(target.gizmo);
     } catch {
       p = null;
     }
@@ -117,10 +117,10 @@ export function createHighlight(app, { card, proxy }) {
       return;
     }
     const name = node.getAttribute('aria-label') || node.querySelector('span')?.textContent || node.textContent.trim() || node.title;
-    const b = el('button', 'use', name);
+    const b = el('button', { class: 'use' }, name);
     b.title = node.title;
     b.addEventListener('click', () => node.click());
-    proxy.replaceChildren(el('span', '', 'Use here: '), b);
+    proxy.replaceChildren(el('span', {}, 'Use here: '), b);
     proxy.hidden = false;
   }
 

@@ -28,7 +28,7 @@ const course = await fetch(new URL('../../lessons/course.json', import.meta.url)
   .then((r) => (r.ok ? r.json() : Promise.reject(new Error(`HTTP ${r.status}`))))
   .catch((e) => {
     // A package whose course file is missing or broken: the page runs as the playground.
-    page.ready.then(() => page.app.showError(`This lesson package cannot read its lessons/course.json (${e.message}): make it again. The page runs without its lessons.`), () => {});
+    page.ready.then(() => page.app.parts.notices.show(`This lesson package cannot read its lessons/course.json (${e.message}): make it again. The page runs without its lessons.`), () => {});
     return null;
   });
 if (course) await launch(course);
@@ -126,7 +126,7 @@ async function launch(course) {
       lms.commit();
       window.addEventListener('pagehide', () => lms.terminate());
     } else {
-      page.app.showError('Not launched from an LMS: this lesson runs on its own, and its progress stays in this browser.', 'info');
+      page.app.parts.notices.show('Not launched from an LMS: this lesson runs on its own, and its progress stays in this browser.', 'info');
     }
     const l = course.lessons[place.current];
     // A course starts at its menu; a single lesson, or a course resumed, at the lesson shown last.

@@ -7,7 +7,7 @@
 import { MAX_LESSON_BYTES } from './format.js';
 import { readProgress } from './progress.js';
 import { BASE } from './urls.js';
-import { el } from './dom.js';
+import { el } from '../dom.js';
 
 /**
  * Creates the Lessons button and menu (#lessons-menu) of `app`; `open(name, {resume})`,
@@ -19,14 +19,14 @@ export function createMenu(app, { open, openText, current }) {
   const button = el('button');
   button.id = 't-lessons';
   button.title = 'Lessons and the tour (L)';
-  button.append(el('b', 'icon', '∑'), el('span', '', 'Lessons'));
+  button.append(el('b', { class: 'icon' }, '∑'), el('span', {}, 'Lessons'));
   $('toolbar').append(button);
 
-  const menu = el('div', 'modal');
+  const menu = el('div', { class: 'modal' });
   menu.id = 'lessons-menu';
   menu.hidden = true;
-  const mcard = el('div', 'card');
-  const list = el('div', 'lesson-list');
+  const mcard = el('div', { class: 'card' });
+  const list = el('div', { class: 'lesson-list' });
   const paste = el('textarea');
   paste.rows = 5;
   paste.spellcheck = false;
@@ -35,11 +35,11 @@ export function createMenu(app, { open, openText, current }) {
   fileInput.type = 'file';
   fileInput.accept = '.json,application/json';
   fileInput.hidden = true;
-  const mrow = el('div', 'row');
-  const chooseBtn = el('button', '', 'Open a lesson file…');
-  const pasteBtn = el('button', 'primary', 'Open pasted lesson');
-  const mclose = el('button', '', 'Close');
-  const lmsBtn = el('button', 'lms', 'Download for an LMS (SCORM)…');
+  const mrow = el('div', { class: 'row' });
+  const chooseBtn = el('button', {}, 'Open a lesson file…');
+  const pasteBtn = el('button', { class: 'primary' }, 'Open pasted lesson');
+  const mclose = el('button', {}, 'Close');
+  const lmsBtn = el('button', { class: 'lms' }, 'Download for an LMS (SCORM)…');
   let packageDialog = null;
   lmsBtn.addEventListener('click', async () => {
     try {
@@ -48,16 +48,16 @@ export function createMenu(app, { open, openText, current }) {
       (await packageDialog).open();
     } catch (e) {
       packageDialog = null;
-      app.showError(`Could not load the package dialog (${e.message}).`);
+      app.parts.notices.show(`Could not load the package dialog (${e.message}).`);
     }
   });
   mrow.append(chooseBtn, pasteBtn, mclose);
   // Under the list it packages, on a row of its own.
-  const lmsRow = el('div', 'row lms-row');
+  const lmsRow = el('div', { class: 'row lms-row' });
   lmsRow.hidden = document.documentElement.dataset.lessonPackage === '1';
   lmsRow.append(lmsBtn);
-  const mnote = el('p', 'small');
-  mnote.append('A lesson is a JSON file (format: ', Object.assign(el('a', '', 'lessons/README.md'), { href: new URL('README.md', BASE).href, target: '_blank' }), '); a link with ', el('code', '', '?lesson=name'), ' opens lessons/name.json.');
+  const mnote = el('p', { class: 'small' });
+  mnote.append('A lesson is a JSON file (format: ', Object.assign(el('a', {}, 'lessons/README.md'), { href: new URL('README.md', BASE).href, target: '_blank' }), '); a link with ', el('code', {}, '?lesson=name'), ' opens lessons/name.json.');
   // The player, whole: the editor previews through it and edits the lesson it shows (main.js
   // exposes it once it has started, which is before the menu is first used).
   const player = () => /** @type {any} */ (window).screwbender?.lessons ?? Promise.resolve(null);
@@ -72,7 +72,7 @@ export function createMenu(app, { open, openText, current }) {
       writeBox.replaceWith(w.element);
       return w;
     }));
-  mcard.append(el('h2', '', 'Lessons'), list, lmsRow, paste, mrow, writeBox, mnote, fileInput);
+  mcard.append(el('h2', {}, 'Lessons'), list, lmsRow, paste, mrow, writeBox, mnote, fileInput);
   menu.append(mcard);
   document.body.append(menu);
 
@@ -85,7 +85,7 @@ export function createMenu(app, { open, openText, current }) {
       if (!r.ok) throw new Error(`HTTP ${r.status}`);
       index = await r.json();
     } catch (e) {
-      app.showError(`Could not load the list of lessons (${e.message}).`);
+      app.parts.notices.show(`Could not load the list of lessons (${e.message}).`);
       index = { lessons: [] };
     }
     return index;
@@ -96,16 +96,16 @@ export function createMenu(app, { open, openText, current }) {
     list.replaceChildren();
     for (const item of lessons) {
       const p = readProgress(item.id);
-      const b = el('button', 'lesson-item');
+      const b = el('button', { class: 'lesson-item' });
       b.dataset.lesson = item.file.replace(/\.json$/, '');
       const meta = p.step > 0 || p.solved.length ? ` · at step ${p.step + 1}${p.solved.length ? `, ${p.solved.length} exercise${p.solved.length > 1 ? 's' : ''} solved` : ''}` : '';
-      b.append(el('b', '', item.title), el('span', '', `${item.summary ?? ''}${meta}`));
+      b.append(el('b', {}, item.title), el('span', {}, `${item.summary ?? ''}${meta}`));
       b.addEventListener('click', () => open(b.dataset.lesson));
       list.append(b);
     }
-    const tour = el('button', 'lesson-item tour');
+    const tour = el('button', { class: 'lesson-item tour' });
     tour.dataset.lesson = 'tour';
-    tour.append(el('b', '', 'Tour of the page'), el('span', '', 'Six stops: handles, gizmo, levels, scheme, play, Analyse'));
+    tour.append(el('b', {}, 'Tour of the page'), el('span', {}, 'Six stops: handles, gizmo, levels, scheme, play, Analyse'));
     tour.addEventListener('click', () => open('tour', { resume: false }));
     list.append(tour);
     (await writeSection()).refresh();
@@ -114,7 +114,7 @@ export function createMenu(app, { open, openText, current }) {
   }
 
   async function openFile(file) {
-    if (file.size > MAX_LESSON_BYTES) return app.showError(`${file.name} is too large for a lesson (${file.size} bytes). Nothing was changed.`, 'error', 'lesson');
+    if (file.size > MAX_LESSON_BYTES) return app.parts.notices.show(`${file.name} is too large for a lesson (${file.size} bytes). Nothing was changed.`, 'error', 'lesson');
     openText(await file.text(), file.name);
   }
 
@@ -146,7 +146,7 @@ export function createMenu(app, { open, openText, current }) {
   // the page (inside a control keys keep their own meaning); Esc closes the menu from anywhere.
   window.addEventListener('keydown', (e) => {
     const t = e.target;
-    const onPage = !t || t === app.canvas || t === document.body || t === document.documentElement;
+    const onPage = !t || t === app.viewer.canvas || t === document.body || t === document.documentElement;
     if (e.key === 'Escape' && !menu.hidden) menu.hidden = true;
     else if (onPage && (e.key === 'l' || e.key === 'L') && !e.ctrlKey && !e.metaKey && !e.altKey) {
       if (menu.hidden) openMenu();

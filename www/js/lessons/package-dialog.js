@@ -5,7 +5,7 @@
 import { zipSync } from '../../vendor/fflate.min.mjs';
 import { FILE_LIST, FORMATS, packageZip, planPackage } from './package.js';
 import { BASE } from './urls.js';
-import { el } from './dom.js';
+import { el } from '../dom.js';
 
 /** The page's folder (www/): the package's files are fetched from it. */
 const WWW = new URL('../../', import.meta.url);
@@ -55,18 +55,18 @@ export async function buildPackage(files, format, mastery) {
  * ({file, text, title}: the lesson editor's), listed first and checked.
  */
 export function createPackageDialog(app, current) {
-  const modal = el('div', 'modal');
+  const modal = el('div', { class: 'modal' });
   modal.id = 'lms-package';
   modal.hidden = true;
   modal.setAttribute('role', 'dialog');
   modal.setAttribute('aria-labelledby', 'lms-package-title');
-  const card = el('div', 'card');
-  const title = el('h2', '', 'Download for an LMS (SCORM)');
+  const card = el('div', { class: 'card' });
+  const title = el('h2', {}, 'Download for an LMS (SCORM)');
   title.id = 'lms-package-title';
-  const intro = el('p', 'small', 'A zip to upload to Moodle, Canvas, Blackboard or any LMS as a SCORM package. The LMS records completion, the score (exercises solved of all), each answer, and where the learner stopped; nothing else is needed on the server.');
-  const lessonsBox = el('fieldset', 'lessons');
-  const formatBox = el('fieldset', 'format');
-  formatBox.append(el('legend', '', 'Format'));
+  const intro = el('p', { class: 'small' }, 'A zip to upload to Moodle, Canvas, Blackboard or any LMS as a SCORM package. The LMS records completion, the score (exercises solved of all), each answer, and where the learner stopped; nothing else is needed on the server.');
+  const lessonsBox = el('fieldset', { class: 'lessons' });
+  const formatBox = el('fieldset', { class: 'format' });
+  formatBox.append(el('legend', {}, 'Format'));
   for (const [value, label] of Object.entries(FORMATS)) {
     const l = el('label');
     const r = el('input');
@@ -77,7 +77,7 @@ export function createPackageDialog(app, current) {
     l.append(r, ` ${label}`);
     formatBox.append(l);
   }
-  const masteryLabel = el('label', 'mastery', 'Pass mark (exercises solved, %; empty: no pass / fail) ');
+  const masteryLabel = el('label', { class: 'mastery' }, 'Pass mark (exercises solved, %; empty: no pass / fail) ');
   const mastery = el('input');
   mastery.type = 'number';
   mastery.min = '0';
@@ -85,11 +85,11 @@ export function createPackageDialog(app, current) {
   mastery.step = '5';
   mastery.value = '80';
   masteryLabel.append(mastery);
-  const size = el('p', 'size');
+  const size = el('p', { class: 'size' });
   size.setAttribute('role', 'status');
-  const row = el('div', 'row');
-  const download = el('button', 'primary', 'Download .zip');
-  const close = el('button', '', 'Close');
+  const row = el('div', { class: 'row' });
+  const download = el('button', { class: 'primary' }, 'Download .zip');
+  const close = el('button', {}, 'Close');
   row.append(download, close);
   card.append(title, intro, lessonsBox, formatBox, masteryLabel, size, row);
   modal.append(card);
@@ -147,11 +147,11 @@ export function createPackageDialog(app, current) {
       if (!r.ok) throw new Error(`HTTP ${r.status}`);
       index = await r.json();
     } catch (e) {
-      return app.showError(`Could not load the list of lessons (${e.message}).`);
+      return app.parts.notices.show(`Could not load the list of lessons (${e.message}).`);
     }
     const lessons = index.lessons ?? [];
     const now = current();
-    lessonsBox.replaceChildren(el('legend', '', 'Lessons (several make one course)'));
+    lessonsBox.replaceChildren(el('legend', {}, 'Lessons (several make one course)'));
     pageLesson = extra ? { file: extra.file, text: extra.text } : null;
     extraBox = null;
     if (extra) {

@@ -22,7 +22,7 @@ export const FILE_LIST = 'pkg-lesson/files.json';
 /** The launch page in the package. */
 export const LAUNCH = 'lesson.html';
 
-/** The preset whose object is the Stanford bunny (view/drawing.js loads its mesh). */
+/** The preset whose object is the Stanford bunny (figure/drawing.js loads its mesh). */
 const BUNNY_PRESET = 'bunny6';
 
 /**

@@ -31,7 +31,7 @@
 //     'check'   the exercise of step `step` was checked: `ok`, `answer` (the chosen answer or
 //               null), `results` (checks.js)
 //     'finish'  the summary after the last step is shown: `solved`, `total`
-import { VIEW_IDS } from '../views/index.js';
+import { VIEW_IDS } from '../dock/index.js';
 import { hasParams, lessonVariant, parseLesson } from './format.js';
 import { isSeed, newSeed } from './variants.js';
 import { readProgress, writeProgress, markTourSeen, tourSeen } from './progress.js';
@@ -102,7 +102,7 @@ export function startLessons(app) {
    * Shows a lesson's error in the banner (above the Lessons menu); the next lesson or step that
    * opens without one takes it away.
    */
-  const lessonError = (message) => app.showError(message, 'error', 'lesson');
+  const lessonError = (message) => app.parts.notices.show(message, 'error', 'lesson');
 
   /** Opens lesson `name`: an id of lessons/index.json or a file (see lessonUrl); false (and a banner) if it cannot. */
   async function open(name, { resume = true, progress = null, seed = null } = {}) {
@@ -122,7 +122,7 @@ export function startLessons(app) {
     }
     if (!openText(text, url.pathname.split('/').pop(), { resume, progress, seed })) return false;
     // A `metric` check measures in the analysis module: fetched now, before the first Check.
-    if (measures(st.lesson)) await app.analysis().catch((e) => app.showError(`${e.message}: this lesson's checks cannot measure the motion.`));
+    if (measures(st.lesson)) await app.analysis().catch((e) => app.parts.notices.show(`${e.message}: this lesson's checks cannot measure the motion.`));
     return true;
   }
 
@@ -250,7 +250,7 @@ export function startLessons(app) {
     app.emit('layout');
     requestAnimationFrame(() => {
       app.viewer.invalidateSize();
-      app.frameAll();
+      app.parts.viewpoint.fit();
       highlight.place();
     });
   }
@@ -279,7 +279,7 @@ export function startLessons(app) {
   if (params.has('seed')) {
     const n = Number(params.get('seed'));
     if (params.get('seed') !== '' && isSeed(n)) urlSeed = n;
-    else app.showError(`?seed=${params.get('seed')}: expected a whole number from 0 to 4294967295; lessons pick their variants as usual.`, 'warn');
+    else app.parts.notices.show(`?seed=${params.get('seed')}: expected a whole number from 0 to 4294967295; lessons pick their variants as usual.`, 'warn');
   }
   player.ready = (async () => {
     if (params.has('lesson')) return open(params.get('lesson'));

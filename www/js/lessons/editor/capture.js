@@ -42,7 +42,7 @@ export function capture(app) {
   }
   const times = app.times();
   step.timing = { times: times ? times.map(tidy) : null, speed: Math.min(4, Math.max(0.1, app.anim.speed)), play: !!app.anim.playing, u: tidy(app.anim.u) };
-  const cam = app.camera.toJSON();
+  const cam = app.viewer.camera.toJSON();
   step.camera = { target: cam.target.map(tidy), distance: tidy(cam.distance), yaw: tidy(cam.yaw), pitch: tidy(cam.pitch), ortho: cam.ortho };
   step.dock = app.view.dock || '';
   const at = app.dock?.current?.state?.index;

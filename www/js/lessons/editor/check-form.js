@@ -5,7 +5,7 @@
 // 0.1 of where it is now", "the velocity jump at most its value now + 0.01"). The check kinds and fields are the lesson format's
 // (format.js CHECK_FIELDS, www/lessons/README.md).
 import { CHECK_FIELDS, METRIC_FIELDS } from '../format.js';
-import { el } from '../dom.js';
+import { el } from '../../dom.js';
 
 const DEG = 180 / Math.PI;
 /** Rounds what the page measured to what a teacher would write (6 significant digits). */
@@ -63,7 +63,7 @@ export function checkFromPage(app, what, index, tol) {
 
 /** An input for a number at `path`; `set(x)` on change (NaN where it is not a number). */
 function numberInput(label, path, value, set) {
-  const l = el('label', 'le-num', `${label} `);
+  const l = el('label', { class: 'le-num' }, `${label} `);
   const i = el('input');
   i.type = 'number';
   i.step = 'any';
@@ -80,10 +80,10 @@ function numberInput(label, path, value, set) {
  * @param {any} ed the editor (panel.js)
  */
 function checkRow(ed, i, k, c) {
-  const row = el('div', 'le-check');
+  const row = el('div', { class: 'le-check' });
   const base = `steps[${i}].exercise.checks[${k}]`;
   row.dataset.path = base;
-  row.append(el('b', '', c.kind === 'choice' ? 'the right answer is chosen' : c.kind));
+  row.append(el('b', {}, c.kind === 'choice' ? 'the right answer is chosen' : c.kind));
   const set = (key, sub) => (x) =>
     ed.edit(`Change the check's ${key}`, (d) => {
       const ck = d.steps[i].exercise.checks[k];
@@ -100,9 +100,9 @@ function checkRow(ed, i, k, c) {
     if (typeof v === 'number') row.append(numberInput(key, path, v, set(key)));
     else if (Array.isArray(v)) v.forEach((x, j) => row.append(numberInput(`${key}[${j}]`, `${path}[${j}]`, x, set(key, j))));
     else if (v && typeof v === 'object') for (const b of ['min', 'max']) row.append(numberInput(`${key} ${b}`, `${path}.${b}`, v[b], set(key, b)));
-    else row.append(el('span', 'le-val', `${key} ${v}`));
+    else row.append(el('span', { class: 'le-val' }, `${key} ${v}`));
   }
-  const del = el('button', 'le-del', '✕');
+  const del = el('button', { class: 'le-del' }, '✕');
   del.type = 'button';
   del.title = 'Delete this check';
   del.setAttribute('aria-label', `Delete check ${k + 1}`);
@@ -116,16 +116,16 @@ function checkRow(ed, i, k, c) {
  * @param {any} ed the editor (panel.js)
  */
 export function checksForm(ed, i) {
-  const box = el('div', 'le-checks');
+  const box = el('div', { class: 'le-checks' });
   const x = ed.doc.steps[i].exercise;
   box.dataset.path = `steps[${i}].exercise.checks`;
-  box.append(el('h4', '', 'Checks (all must pass)'));
+  box.append(el('h4', {}, 'Checks (all must pass)'));
   (x.checks ?? []).forEach((c, k) => box.append(checkRow(ed, i, k, c)));
-  const form = el('div', 'le-from-page');
+  const form = el('div', { class: 'le-from-page' });
   const what = el('select');
   what.id = 'le-check-what';
   what.setAttribute('aria-label', 'What the check measures');
-  for (const [v, words] of Object.entries(FROM_PAGE)) what.append(Object.assign(el('option', '', words), { value: v }));
+  for (const [v, words] of Object.entries(FROM_PAGE)) what.append(Object.assign(el('option', {}, words), { value: v }));
   what.value = ed.ui.checkWhat ?? 'origin';
   const index = el('input');
   index.id = 'le-check-index';
@@ -133,7 +133,7 @@ export function checksForm(ed, i) {
   index.min = '0';
   index.step = '1';
   index.value = String(ed.ui.checkIndex ?? Math.max(0, ed.app.selected));
-  const indexLabel = el('label', '', 'number ');
+  const indexLabel = el('label', {}, 'number ');
   indexLabel.append(index);
   const tol = el('input');
   tol.id = 'le-check-tol';
@@ -141,9 +141,9 @@ export function checksForm(ed, i) {
   tol.min = '0';
   tol.step = 'any';
   tol.value = String(ed.ui.checkTol ?? 0.1);
-  const tolLabel = el('label', '', 'within ± ');
+  const tolLabel = el('label', {}, 'within ± ');
   tolLabel.append(tol);
-  const add = el('button', '', 'Add check from the page now');
+  const add = el('button', {}, 'Add check from the page now');
   add.id = 'le-check-add';
   add.type = 'button';
   const sync = () => {

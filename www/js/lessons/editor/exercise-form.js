@@ -1,7 +1,7 @@
 // A step's exercise in the editor, built from forms: the task, a multiple-choice question (each
 // answer with an optional `why`, the right one picked by its radio button, which writes the
 // exercise's `choice` check), the checks (check-form.js), the hints and the success text.
-import { button, el } from '../dom.js';
+import { button, el } from '../../dom.js';
 import { checksForm } from './check-form.js';
 import { textField } from './text-field.js';
 
@@ -13,14 +13,14 @@ const choiceCheck = (x) => (x.checks ?? []).findIndex((c) => c.kind === 'choice'
  * @param {any} ed the editor (panel.js)
  */
 function choicesForm(ed, i, x) {
-  const box = el('div', 'le-choices');
+  const box = el('div', { class: 'le-choices' });
   const base = `steps[${i}].exercise.choices`;
   box.dataset.path = base;
-  box.append(el('h4', '', 'Multiple choice'));
+  box.append(el('h4', {}, 'Multiple choice'));
   const k0 = choiceCheck(x);
   const right = k0 >= 0 ? x.checks[k0].answer : -1;
   (x.choices ?? []).forEach((c, k) => {
-    const row = el('div', 'le-choice');
+    const row = el('div', { class: 'le-choice' });
     const r = el('input');
     r.type = 'radio';
     r.name = `le-right-${i}`;
@@ -45,7 +45,7 @@ function choicesForm(ed, i, x) {
         if (key === 'why' && v.trim() === '') delete cur.why;
         list[k] = cur;
       }, { merge: `choice:${i}:${k}:${key}`, rerender: false });
-    const fields = el('div', 'le-choice-fields');
+    const fields = el('div', { class: 'le-choice-fields' });
     fields.append(
       textField(`Answer ${k + 1}`, `${base}[${k}]${typeof c === 'string' ? '' : '.text'}`, text, setChoice('text'), { rows: 1, preview: false }),
       textField('Why (shown when this answer is checked)', `${base}[${k}].why`, why, setChoice('why'), { rows: 1, preview: false }),
@@ -75,7 +75,7 @@ function choicesForm(ed, i, x) {
  * @param {any} ed the editor (panel.js)
  */
 export function exerciseForm(ed, i) {
-  const box = el('section', 'le-exercise');
+  const box = el('section', { class: 'le-exercise' });
   const s = ed.doc.steps[i];
   box.dataset.path = `steps[${i}].exercise`;
   if (!s.exercise) {
@@ -84,17 +84,17 @@ export function exerciseForm(ed, i) {
   }
   const x = s.exercise;
   const p = `steps[${i}].exercise`;
-  const head = el('div', 'le-row');
-  head.append(el('h3', '', 'Exercise'), button('Remove the exercise', '', () => ed.edit('Remove the exercise', (d) => delete d.steps[i].exercise), 'le-remove-exercise'));
+  const head = el('div', { class: 'le-row' });
+  head.append(el('h3', {}, 'Exercise'), button('Remove the exercise', '', () => ed.edit('Remove the exercise', (d) => delete d.steps[i].exercise), 'le-remove-exercise'));
   box.append(head);
   box.append(textField('Task', `${p}.task`, x.task, (v) => ed.edit('Edit the task', (d) => (d.steps[i].exercise.task = v), { merge: `task:${i}`, rerender: false }), { rows: 2 }));
   box.append(choicesForm(ed, i, x));
   box.append(checksForm(ed, i));
-  const hints = el('div', 'le-hints');
+  const hints = el('div', { class: 'le-hints' });
   hints.dataset.path = `${p}.hints`;
-  hints.append(el('h4', '', 'Hints (one per click on Hint)'));
+  hints.append(el('h4', {}, 'Hints (one per click on Hint)'));
   (x.hints ?? []).forEach((h, k) => {
-    const row = el('div', 'le-row');
+    const row = el('div', { class: 'le-row' });
     row.append(
       textField(`Hint ${k + 1}`, `${p}.hints[${k}]`, h, (v) => ed.edit(`Edit hint ${k + 1}`, (d) => (d.steps[i].exercise.hints[k] = v), { merge: `hint:${i}:${k}`, rerender: false }), { rows: 2 }),
       button('✕', `Delete hint ${k + 1}`, () =>

@@ -4,7 +4,7 @@
 // follows other tabs (the storage event). The editor itself (panel.js) is fetched when first
 // used.
 import { stylesheet } from '../../editor/modules.js';
-import { el } from '../dom.js';
+import { el } from '../../dom.js';
 import { deleteDraft, listDrafts, onDraftsChanged, readDraft, restoreDraft } from '../drafts.js';
 
 /**
@@ -22,29 +22,29 @@ const isLessonLink = (hash) => hash.startsWith('#lesson=');
  * @param {import('../../app.js').App} app
  */
 export function createWriteSection(app, { hideMenu, pasted, player }) {
-  const box = el('section', 'write-lessons');
+  const box = el('section', { class: 'write-lessons' });
   box.id = 'write-lessons';
   // A lesson package's page (an LMS) is for students: nothing to write there.
   box.hidden = document.documentElement.dataset.lessonPackage === '1';
-  const row = el('div', 'row');
-  const newBtn = el('button', '', 'New lesson');
+  const row = el('div', { class: 'row' });
+  const newBtn = el('button', {}, 'New lesson');
   newBtn.id = 'lesson-new';
-  const editBtn = el('button', '', 'Edit this lesson');
+  const editBtn = el('button', {}, 'Edit this lesson');
   editBtn.id = 'lesson-edit';
-  const fileBtn = el('button', '', 'Edit a lesson file…');
+  const fileBtn = el('button', {}, 'Edit a lesson file…');
   fileBtn.id = 'lesson-edit-file';
-  const pasteBtn = el('button', '', 'Edit pasted lesson or link');
+  const pasteBtn = el('button', {}, 'Edit pasted lesson or link');
   pasteBtn.id = 'lesson-edit-pasted';
   const fileInput = el('input');
   fileInput.type = 'file';
   fileInput.accept = '.json,application/json';
   fileInput.hidden = true;
   row.append(newBtn, editBtn, fileBtn, pasteBtn);
-  const drafts = el('ul', 'drafts');
+  const drafts = el('ul', { class: 'drafts' });
   drafts.id = 'lesson-drafts';
-  const undoRow = el('p', 'draft-undo');
+  const undoRow = el('p', { class: 'draft-undo' });
   undoRow.hidden = true;
-  box.append(el('h3', '', 'Write a lesson'), row, drafts, undoRow, fileInput);
+  box.append(el('h3', {}, 'Write a lesson'), row, drafts, undoRow, fileInput);
 
   let editor = null;
   /** The lesson editor, fetched and made once. */
@@ -54,7 +54,7 @@ export function createWriteSection(app, { hideMenu, pasted, player }) {
       return await editor;
     } catch (e) {
       editor = null;
-      app.showError(`Could not load the lesson editor (${e.message}).`);
+      app.parts.notices.show(`Could not load the lesson editor (${e.message}).`);
       return null;
     }
   }
@@ -68,9 +68,9 @@ export function createWriteSection(app, { hideMenu, pasted, player }) {
     drafts.hidden = list.length === 0;
     for (const d of list) {
       const li = el('li');
-      const open = el('button', 'draft');
+      const open = el('button', { class: 'draft' });
       open.dataset.draft = d.id;
-      open.append(el('b', '', d.name || 'Untitled lesson'), el('span', '', ` draft of ${new Date(d.savedAt).toLocaleString()}`));
+      open.append(el('b', {}, d.name || 'Untitled lesson'), el('span', {}, ` draft of ${new Date(d.savedAt).toLocaleString()}`));
       open.addEventListener('click', async () => {
         const ed = await getEditor();
         const now = readDraft(d.id);
@@ -79,14 +79,14 @@ export function createWriteSection(app, { hideMenu, pasted, player }) {
         ed.p.close();
         ed.e.open(now.lesson, { draftId: now.id });
       });
-      const del = el('button', 'le-del', '✕');
+      const del = el('button', { class: 'le-del' }, '✕');
       del.title = `Delete the draft ${d.name}`;
       del.setAttribute('aria-label', del.title);
       del.addEventListener('click', () => {
         deleted = deleteDraft(d.id);
         refresh();
         if (!deleted) return;
-        const undo = el('button', '', 'Undo');
+        const undo = el('button', {}, 'Undo');
         undo.id = 'draft-undo';
         undo.addEventListener('click', () => {
           if (deleted) restoreDraft(deleted);
@@ -131,13 +131,13 @@ export function createWriteSection(app, { hideMenu, pasted, player }) {
   });
   pasteBtn.addEventListener('click', async () => {
     const text = pasted().trim();
-    if (!text) return app.showError('Paste a lesson file or a lesson link into the field first.', 'warn', 'lesson');
+    if (!text) return app.parts.notices.show('Paste a lesson file or a lesson link into the field first.', 'warn', 'lesson');
     let lesson = text;
     if (!text.startsWith('{')) {
       try {
         lesson = (await linkModule()).lessonFromLink(text);
       } catch (e) {
-        return app.showError(`The pasted text is neither a lesson file nor a lesson link: ${e.message}.`, 'error', 'lesson');
+        return app.parts.notices.show(`The pasted text is neither a lesson file nor a lesson link: ${e.message}.`, 'error', 'lesson');
       }
     }
     const ed = await getEditor();
@@ -162,6 +162,6 @@ export async function openLinkedLesson(app, openText, ready) {
   try {
     openText((await linkModule()).lessonFromLink(location.hash), 'from the link', { resume: true });
   } catch (e) {
-    app.showError(`This page's lesson link cannot be opened: ${e.message}.`, 'error', 'lesson');
+    app.parts.notices.show(`This page's lesson link cannot be opened: ${e.message}.`, 'error', 'lesson');
   }
 }

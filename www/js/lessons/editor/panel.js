@@ -10,10 +10,10 @@
 // student (the lesson player; the progress a student had under the lesson's id is put back
 // after it), the .json file, the lesson link (lessons/link.js), and a SCORM
 // package (package-dialog.js).
-import { VIEW_IDS } from '../../views/index.js';
+import { VIEW_IDS } from '../../dock/index.js';
 import { History } from '../../editor/session.js';
 import { applyStep } from '../apply.js';
-import { el } from '../dom.js';
+import { el } from '../../dom.js';
 import { newDraftId, saveDraft } from '../drafts.js';
 import { lessonFromLink, lessonLink } from '../link.js';
 import { MAX_LESSON_BYTES } from '../format.js';
@@ -62,18 +62,18 @@ export function createLessonEditor(app, player) {
   element.id = 'lesson-editor';
   element.hidden = true;
   element.setAttribute('aria-label', 'Lesson editor');
-  const head = el('div', 'le-head');
-  const title = el('h2', '', 'Lesson editor');
+  const head = el('div', { class: 'le-head' });
+  const title = el('h2', {}, 'Lesson editor');
   const undoBtn = button('↶', 'Undo (editor)', () => undo());
   undoBtn.id = 'le-undo';
   const redoBtn = button('↷', 'Redo (editor)', () => redo());
   redoBtn.id = 'le-redo';
   const closeBtn = button('×', 'Close the editor (the draft is kept)', () => close(), 'close');
   head.append(title, undoBtn, redoBtn, closeBtn);
-  const say = el('p', 'le-say');
+  const say = el('p', { class: 'le-say' });
   say.setAttribute('role', 'status');
-  const scroll = el('div', 'le-scroll');
-  const foot = el('div', 'le-foot');
+  const scroll = el('div', { class: 'le-scroll' });
+  const foot = el('div', { class: 'le-foot' });
   const previewBtn = button('Preview as a student', '', () => preview(), 'primary');
   previewBtn.id = 'le-preview';
   const saveBtn = button('Save .json', 'Save the lesson file', () => saveFile());
@@ -130,7 +130,7 @@ export function createLessonEditor(app, player) {
   let last = { key: '', version: -1 };
 
   function button(text, label, onClick, cls = '') {
-    const b = el('button', cls, text);
+    const b = el('button', { class: cls }, text);
     b.type = 'button';
     if (label) {
       b.title = label;
@@ -203,7 +203,7 @@ export function createLessonEditor(app, player) {
     ed.say(`Redone: ${label}.`);
   }
 
-  const problemBox = el('section', 'le-problems');
+  const problemBox = el('section', { class: 'le-problems' });
   problemBox.setAttribute('aria-live', 'polite');
 
   /** The lesson's problems as last listed. */
@@ -266,7 +266,7 @@ export function createLessonEditor(app, player) {
     const active = /** @type {HTMLElement} */ (document.activeElement);
     const path = element.contains(active) ? active?.dataset?.path : undefined;
     const top = scroll.scrollTop;
-    const lesson = el('section', 'le-lesson');
+    const lesson = el('section', { class: 'le-lesson' });
     lesson.append(
       field('Lesson title', 'title', ed.doc.title, (v) => (ed.doc.title = v)),
       field('Id (letters, digits, - and _; progress is kept under it)', 'id', ed.doc.id, (v) => (ed.doc.id = v)),
@@ -279,7 +279,7 @@ export function createLessonEditor(app, player) {
 
   /** A one-line field of the lesson itself. */
   function field(label, path, value, set) {
-    const l = el('label', 'le-field', label);
+    const l = el('label', { class: 'le-field' }, label);
     const i = el('input');
     i.type = 'text';
     i.value = value ?? '';
@@ -318,7 +318,7 @@ export function createLessonEditor(app, player) {
     app.emit('layout');
     requestAnimationFrame(() => {
       app.viewer.invalidateSize();
-      app.frameAll();
+      app.parts.viewpoint.fit();
     });
   }
 

@@ -1,8 +1,8 @@
 // Pointing a step's highlight by clicking what it should point at: the next press on the page
 // names it — a gizmo part of the selected pose or a pose's handle in the 3-D view (the view's own
-// picking, view/picking.js), a control of the panel by its label, or any other page element by
+// picking, figure/picking.js), a control of the panel by its label, or any other page element by
 // its id — instead of being pressed. Esc, or a press on the editor itself, cancels.
-import { gizmoHit, local, pickPose } from '../../view/picking.js';
+import { gizmoHit, local, pickPose } from '../../figure/picking.js';
 
 /**
  * What a press at event `e` points at, as a step's highlight ({gizmo}, {pose}, {panel},
@@ -12,7 +12,7 @@ import { gizmoHit, local, pickPose } from '../../view/picking.js';
  */
 export function targetOf(app, e) {
   const t = /** @type {Element} */ (e.target);
-  if (t === app.canvas || t?.id === 'view') {
+  if (t === app.viewer.canvas || t?.id === 'view') {
     const pt = local(app.viewer, e);
     const part = gizmoHit(app.viewer, pt);
     if (part && part !== 'view') return { gizmo: part };

@@ -2,7 +2,7 @@
 // its step and field, a click jumping to the field. The problems come from the lesson format's
 // validator (format.js lessonProblems).
 import * as format from '../format.js';
-import { el } from '../dom.js';
+import { el } from '../../dom.js';
 
 /**
  * One problem of a lesson: `path` as in `steps[2].exercise.checks[0].max`, `step` its step
@@ -29,15 +29,15 @@ export function problemsOf(lesson, ctx) {
 export function renderProblems(box, problems, jump) {
   box.replaceChildren();
   box.classList.toggle('ok', problems.length === 0);
-  const head = el('h3', '', problems.length ? `${problems.length} problem${problems.length > 1 ? 's' : ''}` : 'No problems: the lesson is ready');
+  const head = el('h3', {}, problems.length ? `${problems.length} problem${problems.length > 1 ? 's' : ''}` : 'No problems: the lesson is ready');
   box.append(head);
   if (!problems.length) return;
   const list = el('ul');
   for (const p of problems) {
-    const b = el('button', 'le-problem');
+    const b = el('button', { class: 'le-problem' });
     b.type = 'button';
     b.dataset.problem = p.path;
-    b.append(el('b', '', p.step === null ? 'Lesson' : `Step ${p.step + 1}`), ` · ${p.field || 'file'}: ${p.message}`);
+    b.append(el('b', {}, p.step === null ? 'Lesson' : `Step ${p.step + 1}`), ` · ${p.field || 'file'}: ${p.message}`);
     b.addEventListener('click', () => jump(p));
     const li = el('li');
     li.append(b);

@@ -1,7 +1,7 @@
 // The lesson's steps in the editor: one row each (its number and title; a click opens it in the
 // step editor and shows its setup on the page), with Move up, Move down, Duplicate and Delete,
 // and "Add a step from the page now", which takes the page's setup (capture.js) in one action.
-import { button, el } from '../dom.js';
+import { button, el } from '../../dom.js';
 import { capture } from './capture.js';
 
 /** Moves item `from` of `list` to `to`. */
@@ -12,12 +12,12 @@ const move = (list, from, to) => list.splice(to, 0, ...list.splice(from, 1));
  * @param {any} ed the editor (panel.js)
  */
 export function stepList(ed) {
-  const box = el('section', 'le-steps');
-  box.append(el('h3', '', 'Steps'));
+  const box = el('section', { class: 'le-steps' });
+  box.append(el('h3', {}, 'Steps'));
   const list = el('ol');
   const steps = ed.doc.steps;
   steps.forEach((s, i) => {
-    const li = el('li', i === ed.step ? 'on' : '');
+    const li = el('li', { class: i === ed.step ? 'on' : '' });
     li.dataset.path = `steps[${i}]`;
     const open = button(`${i + 1}. ${s.title || '(no title)'}${s.exercise ? ' ✎' : ''}`, '', () => ed.select(i, true), 'le-step');
     open.setAttribute('aria-current', i === ed.step ? 'step' : 'false');

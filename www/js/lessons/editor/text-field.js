@@ -3,7 +3,7 @@
 // as the student will see it (format.js renderText, KaTeX). A formula that does not typeset
 // says why in the preview instead.
 import { renderText } from '../format.js';
-import { el } from '../dom.js';
+import { el } from '../../dom.js';
 
 /**
  * A labelled text field for the value at `path` of the lesson (data-path, for the problem list's
@@ -11,8 +11,8 @@ import { el } from '../dom.js';
  * @returns {HTMLElement}
  */
 export function textField(label, path, value, onInput, { rows = 4, preview = true, placeholder = '' } = {}) {
-  const wrap = el('div', 'le-field');
-  const l = el('label', '', label);
+  const wrap = el('div', { class: 'le-field' });
+  const l = el('label', {}, label);
   const input = rows > 1 ? el('textarea') : el('input');
   if (input instanceof HTMLTextAreaElement) input.rows = rows;
   else input.type = 'text';
@@ -22,14 +22,14 @@ export function textField(label, path, value, onInput, { rows = 4, preview = tru
   input.dataset.path = path;
   l.append(input);
   wrap.append(l);
-  const out = el('div', 'le-preview');
+  const out = el('div', { class: 'le-preview' });
   out.setAttribute('aria-label', `${label}: preview`);
   const show = () => {
     try {
       out.replaceChildren(renderText(input.value));
       out.classList.remove('bad');
     } catch (e) {
-      out.replaceChildren(el('p', '', `Cannot typeset: ${e.message}`));
+      out.replaceChildren(el('p', {}, `Cannot typeset: ${e.message}`));
       out.classList.add('bad');
     }
   };

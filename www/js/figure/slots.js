@@ -10,7 +10,7 @@ export const SEGMENT = 12;
 /** Mesh slots and line layers of the page. */
 export const SLOT = {
   strobe: 0, control: 1, anim: 2, handle: 3, arrow: 4, morph: 10,
-  // Analysis views (www/js/views/): split/tweak ghosts, method overlays, morphing strobe.
+  // Analysis views (www/js/dock/): split/tweak ghosts, method overlays, morphing strobe.
   steps: 5, stepsGhost: 6, methods: 7, morphStrobe: 32,
 };
 /** Morphing strobe instances get one slot each (a different mesh per instance). */

@@ -4,7 +4,7 @@
 // one chart at a time, picked from a list, fills the dock (nothing to scroll); the body point,
 // the derivatives and the note show under an Options button.
 import { lineChart, inkSwatch } from './plot.js';
-import { el } from './dom.js';
+import { el } from '../dom.js';
 
 /** The wasm functions of this view, from the analysis module the dock hands to create(). */
 let Motion;
@@ -180,7 +180,7 @@ class PlotsView {
     if (p.every(Number.isFinite)) {
       this.point = p;
       this.update('edit');
-    } else this.app.showError('Plots: the body point needs three numbers.');
+    } else this.app.parts.notices.show('Plots: the body point needs three numbers.');
   }
 
   /** Sets the body point (tests). */

@@ -2,10 +2,10 @@
 // (trajectories of the body points in distinct colours), their metrics side by side, and for
 // Ramamoorthi–Barr the variable frames and the Euler–Lagrange error before/after optimisation;
 // for Chaudhry–Cameron the triangle's vertices x/y/z against time, with end condition (18) or (19).
-import { LAYER, Segments, track, poseOf } from '../view/slots.js';
+import { LAYER, Segments, track, poseOf } from '../figure/slots.js';
 import { hexLinear, poseMatrix, add, scale } from '../math.js';
 import { lineChart, fmt } from './plot.js';
-import { el } from './dom.js';
+import { el } from '../dom.js';
 
 /** The wasm functions of this view, from the analysis module the dock hands to create(). */
 let listMethods;
@@ -138,7 +138,7 @@ class MethodsView {
   }
 
   show(on) {
-    if (!on) this.app.renderer.setLines(LAYER.methods, new Float32Array(0), false);
+    if (!on) this.app.viewer.renderer.setLines(LAYER.methods, new Float32Array(0), false);
   }
 
   applyDefaults() {
@@ -175,7 +175,7 @@ class MethodsView {
   drawOverlay() {
     const app = this.app;
     const m = app.motion;
-    const { dpr } = app.pixelSize();
+    const { dpr } = app.viewer.pixelSize();
     const seg = new Segments();
     const errors = [];
     const spans = m.closed ? m.poseCount : m.poseCount - 1;
@@ -185,7 +185,7 @@ class MethodsView {
       try {
         const arr = m.methodSample(s.value, count);
         const color = hexLinear(SLOT_COLORS[k]);
-        for (const p of app.bodyPoints()) seg.polyline(track(arr, p), m.closed, color, 2.4 * dpr, 0.95, 0.003);
+        for (const p of app.viewer.bodyPoints()) seg.polyline(track(arr, p), m.closed, color, 2.4 * dpr, 0.95, 0.003);
       } catch (e) {
         errors.push(`${s.value}: ${e.message}`);
       }
@@ -196,7 +196,7 @@ class MethodsView {
     const all = new Float32Array(base.length + triads.length);
     all.set(base);
     all.set(triads, base.length);
-    app.renderer.setLines(LAYER.methods, all, false);
+    app.viewer.renderer.setLines(LAYER.methods, all, false);
     this.overlayStatus.textContent = errors.length ? `Not drawn: ${errors.join(' ')}` : '';
   }
 
@@ -211,7 +211,7 @@ class MethodsView {
     const t0 = performance.now();
     let table;
     try {
-      table = m.compareMethods(ids, this.app.bodyPoints().slice(0, 2));
+      table = m.compareMethods(ids, this.app.viewer.bodyPoints().slice(0, 2));
     } catch (e) {
       this.status.textContent = `Metrics unavailable: ${e.message}`;
       return;
@@ -396,7 +396,7 @@ class MethodsView {
       this.stageTable.append(el('tr', {}, el('td', {}, name), el('td', {}, s.variable_frames), el('td', {}, s.inserted_at == null ? '–' : s.inserted_at.toFixed(2)), el('td', {}, fmt(s.objective, 5)), el('td', {}, s.iterations)));
     });
     // The variable frames in 3-D: small rotation triads of the RB motion at the frame times.
-    const { dpr } = app.pixelSize();
+    const { dpr } = app.viewer.pixelSize();
     const count = 8 * (app.motion.closed ? app.motion.poseCount : app.motion.poseCount - 1) * 16 + 1;
     let arr;
     try {

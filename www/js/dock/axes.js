@@ -2,8 +2,8 @@
 // its axis in 3-D with a colour gradient and arrow ticks pointing along the rotation direction
 // (right-hand rule), and listed with angle, slide, pitch and kind. Hovering a row highlights that
 // span's axis and labels it in the 3-D view.
-import { el as h } from './dom.js';
-import { LAYER, Segments, mix, poseOf } from '../view/slots.js';
+import { el as h } from '../dom.js';
+import { LAYER, Segments, mix, poseOf } from '../figure/slots.js';
 import { add, sub, scale, cross, normalize, length, hexLinear } from '../math.js';
 
 /** The wasm functions of this view, from the analysis module the dock hands to create(). */
@@ -105,14 +105,14 @@ export default {
       for (const tr of tbody.rows) tr.classList.toggle('hi', Number(tr.dataset.span) === i);
       draw();
       placeLabel();
-      app.requestDraw();
+      app.viewer.requestDraw();
     }
 
     /** The floating label of the hovered axis (angle and slide), at the axis point on the page. */
     function placeLabel() {
       const s = state.screws[state.hover];
       const at = state.anchors[state.hover];
-      const p = s && at ? app.toPage(at) : null;
+      const p = s && at ? app.viewer.toPage(at) : null;
       if (!p) {
         label.hidden = true;
         return;
@@ -125,7 +125,7 @@ export default {
 
     function draw() {
       if (!state.visible) return;
-      const { dpr } = app.pixelSize();
+      const { dpr } = app.viewer.pixelSize();
       const poses = state.poses;
       const n = poses.length / 7;
       const closed = app.motion.closed;
@@ -204,7 +204,7 @@ export default {
         // A faint connector from the span's start origin to its axis point.
         if (hot) seg.push(a, point, HIGHLIGHT, 1.2 * dpr, 0.7, 0.004);
       });
-      app.renderer.setLines(LAYER.screwAxes, seg.array(), true);
+      app.viewer.renderer.setLines(LAYER.screwAxes, seg.array(), true);
     }
 
     // Hovering an axis in the 3-D view highlights its row (and label), like hovering the row.
@@ -215,8 +215,8 @@ export default {
       let bestD = 7;
       state.ends.forEach((ends, i) => {
         if (!ends) return;
-        const a = app.toPage(ends[0]);
-        const b = app.toPage(ends[1]);
+        const a = app.viewer.toPage(ends[0]);
+        const b = app.viewer.toPage(ends[1]);
         if (!a || !b) return;
         const dx = b.x - a.x;
         const dy = b.y - a.y;
@@ -263,18 +263,18 @@ export default {
       },
       show(visible) {
         state.visible = visible;
-        if (visible) app.canvas.addEventListener('pointermove', onCanvasMove);
-        else app.canvas.removeEventListener('pointermove', onCanvasMove);
+        if (visible) app.viewer.canvas.addEventListener('pointermove', onCanvasMove);
+        else app.viewer.canvas.removeEventListener('pointermove', onCanvasMove);
         if (!visible) {
-          app.renderer.setLines(LAYER.screwAxes, new Float32Array(0), true);
+          app.viewer.renderer.setLines(LAYER.screwAxes, new Float32Array(0), true);
           label.hidden = true;
         }
       },
       /** Highlights span i (as hovering its row does); -1 clears. For tests and keyboard users. */
       highlight: setHover,
       dispose() {
-        app.canvas.removeEventListener('pointermove', onCanvasMove);
-        app.renderer.setLines(LAYER.screwAxes, new Float32Array(0), true);
+        app.viewer.canvas.removeEventListener('pointermove', onCanvasMove);
+        app.viewer.renderer.setLines(LAYER.screwAxes, new Float32Array(0), true);
         label.remove();
       },
     };

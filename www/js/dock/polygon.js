@@ -3,7 +3,7 @@
 // the core's point rules (subdividePolygon; the same generic code as the pose rules). The preset
 // polygons' vertices can be dragged; the control origins of the motion (projected to z = 0) are
 // shown read-only.
-import { el as h } from './dom.js';
+import { el as h } from '../dom.js';
 
 /** The wasm functions of this view, from the analysis module the dock hands to create(). */
 let polygonPresets, subdividePolygon, splitTweakStep;

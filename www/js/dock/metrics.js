@@ -1,7 +1,7 @@
 // Metrics view: smoothness and fidelity numbers of the current motion (its scheme, rules and
 // levels), measured on the refined poses, for the body points of the object.
 import { fmt } from './plot.js';
-import { el } from './dom.js';
+import { el } from '../dom.js';
 
 /** Human names of the schemes and rule sets (the panel's words). */
 export const SCHEME_NAMES = { bspline: 'cubic B-spline', fourpoint: '4-point', jarek: 'Jarek', j: 'J_s', polyscrew: 'polyscrew' };
@@ -38,7 +38,7 @@ class MetricsView {
   update() {
     const app = this.app;
     const m = app.motion;
-    const points = app.bodyPoints().slice(0, 4);
+    const points = app.viewer.bodyPoints().slice(0, 4);
     const t0 = performance.now();
     const { row, fourPointGap } = m.motionMetrics(points);
     const ms = performance.now() - t0;

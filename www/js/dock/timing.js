@@ -4,7 +4,8 @@
 // velocities live in the Motion (its document, the session, share links, undo); 3-D playback,
 // the timeline, the Plots view and glTF / CSV export all follow them.
 import { lineChart, fmt } from './plot.js';
-import { el } from './dom.js';
+import { el } from '../dom.js';
+import { reasonOf } from '../editor/commands.js';
 
 /** The wasm functions of this view, from the analysis module the dock hands to create(). */
 let timingMap;
@@ -57,14 +58,14 @@ class TimingView {
 
   /** Sets the times (null: uniform) as one undoable edit; the Motion checks them. */
   apply(times) {
-    const error = this.app.setTimes(times ? [...times] : null);
+    const error = reasonOf(this.app, 'setTimes', times ? [...times] : null);
     this.say(error);
     return !error;
   }
 
   /** Sets the key velocities (null: all free) as one undoable edit; the Motion checks them. */
   applyVelocities(velocities) {
-    const error = this.app.setVelocities(velocities);
+    const error = reasonOf(this.app, 'setVelocities', velocities);
     this.say(error);
     return !error;
   }
@@ -85,7 +86,7 @@ class TimingView {
     if (!this.applyVelocities(next)) return false;
     const which = m.closed ? 'pose 0 (start and end of the cycle)' : `poses 0 and ${n - 1}`;
     const was = replaced.length ? ` (replacing ${replaced.map((k) => `${before[k]} at pose ${k}`).join(', ')})` : '';
-    this.app.showError(`Ease in / out: velocity 0 at ${which}${was}; times unchanged. Undo (Ctrl+Z) takes it back.`, 'info');
+    this.app.parts.notices.show(`Ease in / out: velocity 0 at ${which}${was}; times unchanged. Undo (Ctrl+Z) takes it back.`, 'info');
     return true;
   }
 

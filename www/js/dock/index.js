@@ -21,6 +21,6 @@ export async function loadViews(attempt = 0) {
   ]);
   const views = modules.map((m) => m.default);
   const ids = views.map((v) => v.id).join();
-  if (ids !== VIEW_IDS.join()) throw new Error(`views/index.js: VIEW_IDS (${VIEW_IDS}) and the modules (${ids}) differ`);
+  if (ids !== VIEW_IDS.join()) throw new Error(`dock/index.js: VIEW_IDS (${VIEW_IDS}) and the modules (${ids}) differ`);
   return views;
 }

@@ -3,8 +3,8 @@
 // and subdivided twice — by screws, and decoupled (origins by the point rule, rotations by the
 // same rules on rotation-only poses; crates/screwbender/src/subdivision/componentwise.rs). The trajectories of the same body
 // points are drawn: the screw ones do not move when c changes, the decoupled ones do.
-import { el as h } from './dom.js';
-import { LAYER, Segments, poseOf } from '../view/slots.js';
+import { el as h } from '../dom.js';
+import { LAYER, Segments, poseOf } from '../figure/slots.js';
 import { add, sub, length, qrot, hexLinear } from '../math.js';
 
 /** The wasm functions of this view, from the analysis module the dock hands to create(). */
@@ -41,18 +41,18 @@ export default {
         state.c[a] = Number(input.value);
         val.textContent = state.c[a].toFixed(2);
         update();
-        app.requestDraw();
+        app.viewer.requestDraw();
       };
       sliders.append(lab);
       return { input, val };
     });
     const info = el.querySelector('.info');
-    /** @type {HTMLElement} */ (el.querySelector('.circle')).onclick = () => app.loadPreset('circle4');
+    /** @type {HTMLElement} */ (el.querySelector('.circle')).onclick = () => app.run('loadPreset', 'circle4');
     /** @type {HTMLElement} */ (el.querySelector('.zero')).onclick = () => setOffset([0, 0, 0]);
     /** @type {HTMLElement} */ (el.querySelector('.ref')).onchange = (e) => {
       state.showRef = /** @type {HTMLInputElement} */ (e.target).checked;
       update();
-      app.requestDraw();
+      app.viewer.requestDraw();
     };
 
     function setOffset(c) {
@@ -62,7 +62,7 @@ export default {
         val.textContent = c[a].toFixed(2);
       });
       update();
-      app.requestDraw();
+      app.viewer.requestDraw();
     }
 
     /** Largest | |p − centre| − R | over a trajectory, with the circle fitted to the control origins. */
@@ -86,12 +86,12 @@ export default {
       // At most 6 levels: four subdivisions run per update (and per drag step).
       const o = { ...m.options(), levels: Math.min(m.options().levels, 6) };
       const poses = m.poses();
-      const points = app.bodyPoints();
+      const points = app.viewer.bodyPoints();
       const flat = Float64Array.from(points.flat());
       const res = compareFrames(poses, m.closed, o, state.c, flat);
       const ref = compareFrames(poses, m.closed, o, [0, 0, 0], flat);
       state.result = res;
-      const { dpr } = app.pixelSize();
+      const { dpr } = app.viewer.pixelSize();
       const seg = new Segments();
       const len = res.length;
       const trace = (arr, p, color, width, alpha) => {
@@ -115,7 +115,7 @@ export default {
         const c = add(origin, qrot(rotation, state.c));
         for (const d of [[r, 0, 0], [0, r, 0], [0, 0, r]]) seg.push(sub(c, d), add(c, d), C.centre, 2.4 * dpr, 1, 0.01);
       }
-      app.renderer.setLines(LAYER.frame, seg.array(), true);
+      app.viewer.renderer.setLines(LAYER.frame, seg.array(), true);
 
       el.querySelector('.ds').textContent = sci(res.screwDeviation);
       el.querySelector('.dd').textContent = sci(res.decoupledDeviation);
@@ -142,12 +142,12 @@ export default {
       update,
       show(visible) {
         state.visible = visible;
-        if (!visible) app.renderer.setLines(LAYER.frame, new Float32Array(0), true);
+        if (!visible) app.viewer.renderer.setLines(LAYER.frame, new Float32Array(0), true);
       },
       /** Sets the offset c = [x, y, z] (local coordinates), as the sliders do. */
       setOffset,
       dispose() {
-        app.renderer.setLines(LAYER.frame, new Float32Array(0), true);
+        app.viewer.renderer.setLines(LAYER.frame, new Float32Array(0), true);
       },
     };
   },

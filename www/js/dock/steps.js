@@ -2,7 +2,7 @@
 // a level, (a) the split — the screw midpoint of every span inserted — then (b) the tweak of each
 // pose, drawn as arrows from before to after (origins), with the object before the tweak (pale
 // ghosts) and after it. The core's splitTweakStep computes both (crates/screwbender/src/subdivision/split_tweak.rs).
-import { LAYER, SLOT, Segments, instances, matricesOf, poseOf } from '../view/slots.js';
+import { LAYER, SLOT, Segments, instances, matricesOf, poseOf } from '../figure/slots.js';
 import { add, sub, scale, cross, normalize, length, hexLinear } from '../math.js';
 
 /** The wasm functions of this view, from the analysis module the dock hands to create(). */
@@ -92,16 +92,16 @@ export default {
     function go(delta) {
       state.index = Math.max(0, Math.min(total() - 1, state.index + delta));
       update();
-      app.requestDraw();
+      app.viewer.requestDraw();
     }
     /** @type {HTMLElement} */ (el.querySelector('.prev')).onclick = () => go(-1);
     /** @type {HTMLElement} */ (el.querySelector('.next')).onclick = () => go(1);
-    /** @type {HTMLElement} */ (el.querySelector('.strobe')).onclick = () => app.setView('showStrobe', !app.view.showStrobe);
+    /** @type {HTMLElement} */ (el.querySelector('.strobe')).onclick = () => app.run('setView', 'showStrobe', !app.view.showStrobe);
     levelsSel.onchange = () => {
       state.levels = Number(levelsSel.value);
       state.index = Math.min(state.index, total() - 1);
       update();
-      app.requestDraw();
+      app.viewer.requestDraw();
     };
 
     const onKey = (e) => {
@@ -120,17 +120,17 @@ export default {
       const name = v.object === 'scene' ? `scene:${v.scene}` : v.object;
       if (name === state.meshName) return;
       for (const slot of [SLOT.steps, SLOT.stepsGhost]) {
-        if (name === 'obj' && app.imported) app.setImportedMesh(slot, app.imported);
-        else app.renderer.setMesh(slot, name === 'obj' ? 'bar' : name, true);
+        if (name === 'obj' && app.imported) app.viewer.setImportedMesh(slot, app.imported);
+        else app.viewer.renderer.setMesh(slot, name === 'obj' ? 'bar' : name, true);
       }
       state.meshName = name;
     }
 
     function clear() {
-      app.renderer.setLines(LAYER.steps, new Float32Array(0), true);
+      app.viewer.renderer.setLines(LAYER.steps, new Float32Array(0), true);
       if (state.meshName) {
-        app.renderer.setInstances(SLOT.steps, new Float32Array(0));
-        app.renderer.setInstances(SLOT.stepsGhost, new Float32Array(0));
+        app.viewer.renderer.setInstances(SLOT.steps, new Float32Array(0));
+        app.viewer.renderer.setInstances(SLOT.stepsGhost, new Float32Array(0));
       }
     }
 
@@ -143,7 +143,7 @@ export default {
       const step = splitTweakStep(m.poses(), m.closed, o, level);
       state.step = step;
       meshes();
-      const { dpr } = app.pixelSize();
+      const { dpr } = app.viewer.pixelSize();
       const n = step.input.length / 7;
       const seg = new Segments();
       const origins = (arr) => Array.from({ length: arr.length / 7 }, (_, k) => poseOf(arr, k).origin);
@@ -160,8 +160,8 @@ export default {
           mids.push(2 * i + 1);
           mark(seg, poseOf(step.split, 2 * i + 1).origin, r, C.split, 2.2 * dpr);
         }
-        app.renderer.setInstances(SLOT.stepsGhost, instances(matricesOf(step.input), () => C.input));
-        app.renderer.setInstances(SLOT.steps, instances(matricesOf(pick(step.split, mids)), () => C.split));
+        app.viewer.renderer.setInstances(SLOT.stepsGhost, instances(matricesOf(step.input), () => C.input));
+        app.viewer.renderer.setInstances(SLOT.steps, instances(matricesOf(pick(step.split, mids)), () => C.split));
         state.caption = `Level ${level} → ${level + 1} · split: the screw midpoint s(Pᵢ, ½, Pᵢ₊₁) of each of the ${n} spans is inserted (green), giving ${2 * n} poses${open}.`;
       } else {
         const moved = [];
@@ -180,9 +180,9 @@ export default {
         });
         // Ghosts a little smaller: where the tweak does not move a pose (e.g. poses sampled from
         // one screw) the pose after the tweak covers its ghost instead of z-fighting with it.
-        app.renderer.setInstances(SLOT.stepsGhost, instances(matricesOf(pick(step.split, moved), GHOST_SCALE), () => C.ghost));
+        app.viewer.renderer.setInstances(SLOT.stepsGhost, instances(matricesOf(pick(step.split, moved), GHOST_SCALE), () => C.ghost));
         const movedSet = new Set(moved);
-        app.renderer.setInstances(SLOT.steps, instances(matricesOf(step.output), (k) => (movedSet.has(k) ? C.moved : C.after)));
+        app.viewer.renderer.setInstances(SLOT.steps, instances(matricesOf(step.output), (k) => (movedSet.has(k) ? C.moved : C.after)));
         // How many tweaked poses really move (poses sampled from one screw do not).
         const changed = moved.filter((j) => {
           const a = poseOf(step.split, j);
@@ -195,7 +195,7 @@ export default {
           `the rule tweaks ${moved.length} of ${2 * n} poses; ${changed} of them move by more than ${MOVED} (arrows)`;
         state.caption = `Level ${level} → ${level + 1} · tweak (${name}, ${rules}): ${shown}. ${tweakText(o)}.${open}`;
       }
-      app.renderer.setLines(LAYER.steps, seg.array(), true);
+      app.viewer.renderer.setLines(LAYER.steps, seg.array(), true);
       caption.textContent = state.caption;
       pos.textContent = `step ${state.index + 1} / ${total()}`;
       /** @type {HTMLButtonElement} */ (el.querySelector('.prev')).disabled = state.index === 0;
