@@ -107,13 +107,14 @@ mod tests {
         }
         let rhs: Vec<f64> = (0..n).map(|i| (i as f64 * 0.7).sin()).collect();
         let x = a.solve(&rhs).unwrap();
-        for i in 0..n {
-            let mut s = 0.0;
-            for j in i.saturating_sub(b)..(i + b + 1).min(n) {
-                let (r, c) = if i >= j { (i, j) } else { (j, i) };
-                s += a.lower[r * (b + 1) + (r - c)] * x[j];
-            }
-            assert!((s - rhs[i]).abs() < 1e-13, "row {i}: {s} vs {}", rhs[i]);
+        for (i, want) in rhs.iter().enumerate() {
+            let s: f64 = (i.saturating_sub(b)..(i + b + 1).min(n))
+                .map(|j| {
+                    let (r, c) = if i >= j { (i, j) } else { (j, i) };
+                    a.lower[r * (b + 1) + (r - c)] * x[j]
+                })
+                .sum();
+            assert!((s - want).abs() < 1e-13, "row {i}: {s} vs {want}");
         }
         assert_eq!(a.len(), n);
         assert_eq!(a.diagonal(1), 7.0);

@@ -43,8 +43,11 @@ pub const ROBUST_SCALE_FACTOR: f64 = 1.5;
 pub enum ControlCount {
     /// Exactly this many (at least 2, at most the number of samples).
     Count(usize),
-    /// The fewest (found by doubling, then bisection) whose fit has an RMS deviation
-    /// ([`FitReport::rms_deviation`]) within this tolerance, in scene units.
+    /// Few enough that one fewer misses it: a count whose fit has an RMS deviation
+    /// ([`FitReport::rms_deviation`]) within this tolerance (scene units), found by doubling
+    /// from 4, then bisection down to a count whose predecessor fails. The residual does not
+    /// always fall with the count (a spline of `m` control poses is not one of `m + 1`), so a
+    /// smaller count further down may also meet it.
     Tolerance(f64),
 }
 

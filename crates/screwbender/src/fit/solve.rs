@@ -212,10 +212,7 @@ impl<'a> Problem<'a> {
                             let dmax = if a2 == a1 { d1 + 1 } else { 6 };
                             for d2 in 0..dmax {
                                 let c2 = a2 * 6 + d2;
-                                let mut sum = 0.0;
-                                for row in 0..6 {
-                                    sum += jb[row][c1] * jb[row][c2];
-                                }
+                                let sum: f64 = jb.iter().map(|row| row[c1] * row[c2]).sum();
                                 h.add(g1, 6 * k2 + d2, w * sum);
                             }
                         }
@@ -259,10 +256,7 @@ impl<'a> Problem<'a> {
                 }
                 g[offset + c1] += ws * gr;
                 for c2 in 0..=c1 {
-                    let mut sum = 0.0;
-                    for row in 0..6 {
-                        sum += jb[row][c1] * jb[row][c2];
-                    }
+                    let sum: f64 = jb.iter().map(|row| row[c1] * row[c2]).sum();
                     h.add(offset + c1, offset + c2, ws * sum);
                 }
             }
