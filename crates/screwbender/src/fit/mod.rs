@@ -99,12 +99,25 @@ pub struct FittedMotion {
 /// Fits the motion of `options.method` to the poses of `doc`, each reached at its key time
 /// (`doc.times`, or one second apart). See the module documentation and docs/math/fitting.md.
 ///
-/// Errors (nothing is fitted): a closed document (`closed`), fewer samples than control poses
+/// A closed document is fitted as the open sequence of its poses (an imported file whose last
+/// sample repeats its first reads as a cycle).
+///
+/// Errors (nothing is fitted): fewer samples than control poses
 /// (`poses`), a pose or time that is not finite (`poses[i]`, `times[i]`), times not strictly
 /// increasing (`times[i]`), a bad option (`controls`, `tolerance`, `smoothness`, `radius`,
 /// `robust_scale`, `max_iterations`), or a tolerance no fit of up to [`MAX_FIT_CONTROLS`]
 /// control poses meets (`tolerance`).
 pub fn fit_poses(doc: &MotionDocument, options: &FitOptions) -> Result<FittedMotion, Error> {
+    // Samples are a sequence in time: a cycle's return to its first pose is no sample.
+    let opened;
+    let doc = if doc.closed {
+        let mut d = doc.clone();
+        d.set_closed(false);
+        opened = d;
+        &opened
+    } else {
+        doc
+    };
     let fractions = check_input(doc)?;
     check_options(options)?;
     let n = doc.poses.len();
@@ -154,16 +167,6 @@ fn time_range(doc: &MotionDocument) -> (f64, f64) {
 
 /// Checks the samples; returns each one's time as a fraction of the whole, in `[0, 1]`.
 fn check_input(doc: &MotionDocument) -> Result<Vec<f64>, Error> {
-    if doc.closed {
-        return Err(Error::new(
-            "closed",
-            ErrorKind::Unsupported {
-                reason: "a fit needs an open sequence of samples in time; mark the document \
-                         open (\"closed\": false)"
-                    .into(),
-            },
-        ));
-    }
     let n = doc.poses.len();
     if n < 2 {
         return Err(Error::new(
