@@ -143,8 +143,8 @@ describe('dense imports and dropped glTF', () => {
     }
     assert.ok(report.rmsPosition <= report.maxPosition && report.rmsDeviation <= report.maxDeviation);
     // The tolerance mode picks the count, and meets its tolerance.
-    const tol = fitPoses(doc, { tolerance: 1e-2 });
-    assert.ok(tol.report.rmsDeviation <= 1e-2, JSON.stringify(tol.report));
+    const tol = fitPoses(doc, { method: 'se3bspline', tolerance: 2e-2 });
+    assert.ok(tol.report.rmsDeviation <= 2e-2, JSON.stringify(tol.report));
     assert.equal(tol.document.poses.length, tol.report.controls);
     for (const [options, re] of [
       [{ controls: 1 }, /options\.controls/],
