@@ -5,7 +5,8 @@ Control poses (a cycle or an open sequence) are smoothed by Split&Tweak subdivis
 Motions*): cubic B-spline, 4-point and Jarek schemes, the revised paper's ``"direct"`` rules and
 the first version's split-then-tweak rules (id ``"split"``), and the J_s family (parameter
 ``s``). :func:`compare_methods` measures the other methods of the comparison on the same poses,
-as ``screwbender compare --json``; :func:`method_poses` evaluates one of them.
+as ``screwbender compare --json``; :func:`method_poses` evaluates one of them. :func:`fit`
+fits a smooth motion to many measured poses, as ``screwbender fit``.
 
 Poses are numpy arrays: ``(n, 7)`` rows ``x y z qw qx qy qz`` (quaternions scalar first) or
 ``(n, 4, 4)`` homogeneous matrices, accepted everywhere a pose array is (so ``modern_robotics``,
@@ -31,6 +32,7 @@ from ._screwbender import (
     Motion,
     __version__,
     compare_methods,
+    fit,
     method_poses,
     preset_descriptions,
     presets,
@@ -43,6 +45,7 @@ __all__ = [
     "Motion",
     "__version__",
     "compare_methods",
+    "fit",
     "method_poses",
     "preset_descriptions",
     "presets",

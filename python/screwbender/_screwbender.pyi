@@ -246,6 +246,43 @@ def method_poses(
     raises ``ValueError`` naming it. Computed without the GIL.
     """
 
+class FitReport(TypedDict):
+    """The residuals of :func:`fit` (as ``screwbender fit --json``): distances in scene units,
+    angles in radians, over all samples."""
+
+    method: str
+    controls: int
+    samples: int
+    rms_position: float
+    max_position: float
+    rms_angle: float
+    max_angle: float
+    rms_deviation: float
+    max_deviation: float
+    iterations: int
+
+def fit(
+    path: Union[str, "os.PathLike[str]"],
+    *,
+    method: Literal["screwbender", "se3bspline"] = "screwbender",
+    controls: Optional[int] = None,
+    tolerance: Optional[float] = None,
+    smoothness: float = 0.0,
+    robust: Literal["none", "huber", "cauchy"] = "none",
+    robust_scale: Optional[float] = None,
+    radius: float = 1.0,
+    node: Optional[str] = None,
+    nodes: Optional[Sequence[str]] = None,
+) -> Tuple[Motion, FitReport]:
+    """The open motion ``method`` (``"screwbender"``: the cubic B-spline scheme;
+    ``"se3bspline"``: the cumulative B-spline on SE(3)) fitted to the timestamped poses of the
+    file at ``path`` (read as :meth:`Motion.load` reads it), with exactly one of ``controls`` (a
+    count) and ``tolerance`` (the RMS deviation, distance + ``radius`` × angle, to stay within);
+    ``smoothness`` weighs the smoothness term, ``robust`` a loss against outliers. Returns the
+    motion (the fitted control poses with their key times, B-spline scheme) and the residual
+    report. Raises ``ValueError`` naming the bad element. Computed without the GIL.
+    """
+
 def presets() -> list[str]:
     """The preset ids for ``Motion.from_preset``."""
 

@@ -5,7 +5,7 @@ import assert from 'node:assert/strict';
 import { describe, it } from 'node:test';
 import { sb } from './full-package.mjs';
 
-const { Motion, importMotionFile, reducePoses, importedMesh, timingMap } = sb;
+const { Motion, importMotionFile, reducePoses, fitPoses, importedMesh, timingMap } = sb;
 
 describe('Motion key times and velocities', () => {
   it('are stored, drive timedKinematics and appear in the document; older documents are unchanged', () => {
@@ -124,6 +124,41 @@ describe('dense imports and dropped glTF', () => {
       [{ often: 2 }, /often/],
     ]) {
       assert.throws(() => reducePoses(doc, how), re, JSON.stringify(how));
+    }
+  });
+
+  it('fitPoses fits a smooth motion to the samples of a CSV, reports its residuals and names bad options', () => {
+    const m = Motion.fromPreset('cylinder5');
+    const csv = new TextDecoder().decode(m.exportFile({ format: 'csv' }).data);
+    const doc = importMotionFile('cylinder5-poses.csv', csv);
+    const n = doc.poses.length;
+    const { document, report } = fitPoses(doc, { method: 'se3bspline', controls: 12, robust: 'huber' });
+    assert.equal(document.poses.length, 12);
+    assert.equal(document.closed, false);
+    assert.equal(document.times.length, 12);
+    assert.equal(report.controls, 12);
+    assert.equal(report.samples, n);
+    for (const key of ['rmsPosition', 'maxPosition', 'rmsAngle', 'maxAngle', 'rmsDeviation', 'maxDeviation']) {
+      assert.ok(Number.isFinite(report[key]) && report[key] >= 0, `${key} ${report[key]}`);
+    }
+    assert.ok(report.rmsPosition <= report.maxPosition && report.rmsDeviation <= report.maxDeviation);
+    // The tolerance mode picks the count, and meets its tolerance.
+    const tol = fitPoses(doc, { method: 'se3bspline', tolerance: 2e-2 });
+    assert.ok(tol.report.rmsDeviation <= 2e-2, JSON.stringify(tol.report));
+    assert.equal(tol.document.poses.length, tol.report.controls);
+    for (const [options, re] of [
+      [{ controls: 1 }, /options\.controls/],
+      [{ controls: 2.5 }, /options\.controls/],
+      [{ controls: n + 1 }, /poses/],
+      [{ tolerance: 0 }, /options\.tolerance/],
+      [{ controls: 4, tolerance: 1e-3 }, /exactly one/],
+      [{ controls: 4, method: 'kks' }, /options\.method/],
+      [{ controls: 4, robust: 'l1' }, /options\.robust/],
+      [{ controls: 4, radius: -1 }, /options\.radius/],
+      [{ controls: 4, robustScale: 0, robust: 'huber' }, /options\.robustScale/],
+      [{ controls: 4, often: 2 }, /often/],
+    ]) {
+      assert.throws(() => fitPoses(doc, options), re, JSON.stringify(options));
     }
   });
 

@@ -229,6 +229,18 @@ pub enum Command {
         after_long_help = csv_input!()
     )]
     Import(ImportArgs),
+    /// A smooth motion fitted to many measured poses
+    ///
+    /// Reads timestamped poses (a glTF animation, a CSV file or a motion document) and writes
+    /// the control poses of the open motion (--method) that passes closest to them, as a motion
+    /// document, with a report of the residuals (RMS and largest distance, angle and deviation).
+    /// With -o the report goes to standard output, else to standard error.
+    #[command(
+        args_override_self = true,
+        override_usage = "screwbender fit [OPTIONS] FILE (--controls N | --tolerance T)",
+        after_long_help = csv_input!()
+    )]
+    Fit(FitArgs),
     /// A shell completion script on stdout
     ///
     /// Prints the completion script for SHELL, e.g. for bash:
@@ -430,6 +442,39 @@ pub struct ImportArgs {
         allow_hyphen_values = true
     )]
     pub reduce: Option<String>,
+}
+
+/// `screwbender fit`.
+#[derive(clap::Args)]
+pub struct FitArgs {
+    /// The file of measured poses: .glb, .gltf, .csv or .json (required)
+    #[arg(value_name = "FILE")]
+    pub file: Option<String>,
+    /// The motion fitted: screwbender (the cubic B-spline scheme) or se3bspline (the
+    /// cumulative B-spline on SE(3))
+    #[arg(long, value_name = "METHOD", default_value = "screwbender")]
+    pub method: String,
+    /// This many control poses
+    #[arg(long, value_name = "N", conflicts_with = "tolerance")]
+    pub controls: Option<usize>,
+    /// As few control poses as keep the RMS deviation (distance + radius × angle) within T
+    #[arg(long, value_name = "T", value_parser = Finite)]
+    pub tolerance: Option<f64>,
+    /// Weight of the smoothness term (0: none)
+    #[arg(long, value_name = "W", default_value_t = 0.0, value_parser = Finite)]
+    pub smoothness: f64,
+    /// Robust loss against outliers: none, huber or cauchy
+    #[arg(long, value_name = "LOSS", default_value = "none")]
+    pub robust: String,
+    /// Length that weighs angles against distances: the body's extent around its origin
+    #[arg(long, value_name = "R", default_value_t = 1.0, value_parser = Finite)]
+    pub radius: f64,
+    /// The report as JSON
+    #[arg(long)]
+    pub json: bool,
+    /// Write the document to OUT instead of standard output
+    #[arg(long, short, value_name = "OUT", allow_hyphen_values = true)]
+    pub output: Option<String>,
 }
 
 /// The whole command line as clap sees it (for parsing, completion scripts and the man page).

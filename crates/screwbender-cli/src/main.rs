@@ -9,6 +9,7 @@ mod cli;
 mod compare;
 mod export;
 mod failure;
+mod fit;
 mod import;
 mod input;
 mod output;
@@ -54,6 +55,7 @@ fn run(args: Vec<OsString>) -> Result<Output, Failure> {
         Command::Rational(a) => compare::rational(a).map(Output::text),
         Command::Export(a) => export::export(a),
         Command::Import(a) => import::import(a),
+        Command::Fit(a) => fit::fit(a),
         Command::Completions { shell } => Ok(completions(shell)),
         Command::Man { command } => man(command.as_deref()),
     }

@@ -7,7 +7,7 @@ mod support;
 use support::run;
 
 /// The commands, as `screwbender --help` lists them.
-const COMMANDS: [&str; 10] = [
+const COMMANDS: [&str; 11] = [
     "subdivide",
     "eval",
     "screw",
@@ -16,6 +16,7 @@ const COMMANDS: [&str; 10] = [
     "rational",
     "export",
     "import",
+    "fit",
     "completions",
     "man",
 ];

@@ -421,3 +421,90 @@ fn gltf_output_names_and_json_import() {
         &MotionDocument::from_json(&r.stdout).unwrap(),
     );
 }
+
+#[test]
+fn fit_writes_the_document_and_reports_the_core_residuals() {
+    use screwbender::methods::Se3BSpline;
+    use screwbender::{fit_poses, ControlCount, FitMethod, FitOptions, Motion, Pose, RobustLoss};
+    // Samples of a known SE(3) spline with a deterministic wobble, one every 0.1 s.
+    let controls: Vec<Pose> = (0..6)
+        .map(|k| {
+            let a = k as f64 * 0.6;
+            Pose::new(
+                glam::DVec3::new(2.0 * a.cos(), 2.0 * a.sin(), 0.3 * a),
+                glam::DQuat::from_rotation_z(a),
+            )
+        })
+        .collect();
+    let truth = Se3BSpline::new(&controls, false).unwrap();
+    let mut doc = MotionDocument::new(
+        (0..120)
+            .map(|i| {
+                let mut p = truth.pose_at(5.0 * i as f64 / 119.0);
+                p.origin.z += 0.01 * (i as f64 * 1.7).sin();
+                p
+            })
+            .collect(),
+        false,
+    );
+    doc.times = Some((0..120).map(|i| 0.1 * i as f64).collect());
+    let dir = TempDir::new("fit");
+    let (input, output) = (dir.path("samples.json"), dir.path("fitted.json"));
+    std::fs::write(&input, doc.to_json()).unwrap();
+    let args = ["fit", &input, "--method", "se3bspline", "--controls", "6"];
+    let out = run(
+        &[&args[..], &["--robust", "huber", "--json", "-o", &output]].concat(),
+        "",
+    );
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    let report: serde_json::Value = serde_json::from_str(&out.stdout).unwrap();
+    let written = MotionDocument::from_json(&std::fs::read_to_string(&output).unwrap()).unwrap();
+    // The same numbers as the core's fit of the same document (read back from its file).
+    let read = MotionDocument::from_json(&std::fs::read_to_string(&input).unwrap()).unwrap();
+    let core = fit_poses(
+        &read,
+        &FitOptions {
+            method: FitMethod::Se3BSpline,
+            controls: ControlCount::Count(6),
+            robust: RobustLoss::Huber,
+            ..FitOptions::default()
+        },
+    )
+    .unwrap();
+    assert_same_poses(&written, &core.document);
+    assert_eq!(report["controls"], 6);
+    assert_eq!(report["samples"], 120);
+    assert_eq!(report["method"], "se3bspline");
+    for (key, value) in [
+        ("rms_position", core.report.rms_position),
+        ("max_angle", core.report.max_angle),
+        ("rms_deviation", core.report.rms_deviation),
+    ] {
+        assert_eq!(report[key].as_f64().unwrap(), value, "{key}");
+    }
+    // The wobble (amplitude 0.01) is what remains.
+    assert!(core.report.max_position < 0.012, "{:?}", core.report);
+    // Without -o: the document on standard output, the report as text on standard error.
+    let out = run(&args, "");
+    assert_eq!(out.code, 0, "{}", out.stderr);
+    assert!(out
+        .stderr
+        .starts_with("fit: 6 control poses (se3bspline) to 120 samples"));
+    assert_eq!(
+        MotionDocument::from_json(&out.stdout).unwrap().poses.len(),
+        6
+    );
+    // Bad input: one line, nothing on standard output.
+    assert_fails(
+        &run(&["fit", &input, "--controls", "121"], ""),
+        "at least 121 needed",
+    );
+    assert_fails(
+        &run(&["fit", &input], ""),
+        "exactly one of --controls N and --tolerance T",
+    );
+    assert_fails(
+        &run(&["fit", &input, "--controls", "4", "--robust", "l1"], ""),
+        "--robust",
+    );
+}

@@ -8,6 +8,7 @@
 //!   compare --json`).
 //! * [`method_poses`]: `method_poses`, one comparison method's poses at chosen parameters.
 //! * [`files`]: `Motion.load` / `Motion.export` in the CLI's formats.
+//! * [`fit`]: `fit`, a smooth motion fitted to many measured poses (as `screwbender fit`).
 //! * [`convert`]: numpy arrays ↔ poses, with errors naming the element.
 //!
 //! Every function validates its input and raises `ValueError` / `TypeError` naming the
@@ -18,6 +19,7 @@
 pub mod compare;
 pub mod convert;
 pub mod files;
+pub mod fit;
 pub mod method_poses;
 pub mod motion;
 pub mod screw;
@@ -46,6 +48,7 @@ fn _screwbender(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(screw::screw, m)?)?;
     m.add_function(wrap_pyfunction!(compare::compare_methods, m)?)?;
     m.add_function(wrap_pyfunction!(method_poses::method_poses, m)?)?;
+    m.add_function(wrap_pyfunction!(fit::fit, m)?)?;
     m.add_function(wrap_pyfunction!(presets, m)?)?;
     m.add_function(wrap_pyfunction!(preset_descriptions, m)?)?;
     m.add("MAX_REFINED_POSES", screwbender::MAX_REFINED_POSES)?;

@@ -27,6 +27,8 @@ pub mod convert;
 mod export;
 #[cfg(feature = "files")]
 mod files;
+#[cfg(feature = "files")]
+mod fit;
 #[cfg(feature = "methods")]
 mod methods;
 mod motion;
@@ -42,6 +44,8 @@ mod types;
 pub use analysis::timing_map;
 #[cfg(feature = "files")]
 pub use files::import_motion_file_js;
+#[cfg(feature = "files")]
+pub use fit::fit_poses_js;
 #[cfg(feature = "methods")]
 pub use methods::methods;
 pub use motion::MotionHandle;

@@ -2,7 +2,8 @@
 //! `rb_sphere7` (7 keyframes, zero end velocities, α = 1000, S = 5) up to 4 variable frames, the
 //! Chaudhry–Cameron fits of scene B1 `triangle7`, evaluation of each peer, and the whole metrics
 //! table on scene A2 `l_cycle_rotated`; and on that scene the SE(3) cumulative B-spline evaluated
-//! at as many parameters as ScrewBender's B-spline subdivision makes poses at 17 levels (786 432).
+//! at as many parameters as ScrewBender's B-spline subdivision makes poses at 17 levels (786 432);
+//! and the fit of 10 000 samples by 50 control poses of either motion (`fit`).
 //!
 //! Run: `cargo bench --bench methods`. Inputs are fixed (scene data); nothing is random.
 //! Native only: criterion is not a wasm32 dependency, so on wasm32 this is an empty program.
@@ -165,12 +166,58 @@ mod native {
         g.finish();
     }
 
+    /// Fitting (docs/math/fitting.md): 10 000 samples of a wandering SE(3) spline, with a
+    /// deterministic wobble of 0.01, fitted by 50 control poses, least squares.
+    fn fit(c: &mut Criterion) {
+        use screwbender::{fit_poses, ControlCount, FitMethod, FitOptions, MotionDocument};
+        let controls: Vec<Pose> = (0..60)
+            .map(|k| {
+                let a = k as f64 * 0.3;
+                Pose::new(
+                    DVec3::new(3.0 * a.cos(), 2.0 * a.sin() + 0.2 * a, 0.4 * a),
+                    DQuat::from_axis_angle(DVec3::new(0.2, 1.0, 0.4).normalize(), a),
+                )
+            })
+            .collect();
+        let truth = Se3BSpline::new(&controls, false).expect("valid controls");
+        let n = 10_000;
+        let poses: Vec<Pose> = (0..n)
+            .map(|i| {
+                let mut p = truth.pose_at(59.0 * i as f64 / (n - 1) as f64);
+                p.origin.z += 0.01 * (i as f64 * 1.7).sin();
+                p
+            })
+            .collect();
+        let doc = MotionDocument::new(poses, false);
+        let mut g = c.benchmark_group("fit");
+        g.sample_size(10);
+        for method in [FitMethod::Se3BSpline, FitMethod::ScrewBender] {
+            let options = FitOptions {
+                method,
+                controls: ControlCount::Count(50),
+                ..FitOptions::default()
+            };
+            g.bench_function(
+                format!("{} 10000 samples, 50 controls", method.name()),
+                |b| {
+                    b.iter(|| {
+                        black_box(fit_poses(&doc, &options).expect("fits"))
+                            .report
+                            .iterations
+                    })
+                },
+            );
+        }
+        g.finish();
+    }
+
     criterion_group!(
         benches,
         ramamoorthi_barr,
         chaudhry_cameron,
         peers,
-        lie_spline
+        lie_spline,
+        fit
     );
 }
 

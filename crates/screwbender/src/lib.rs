@@ -92,6 +92,7 @@
 
 mod closure;
 mod error;
+mod fit;
 mod formats;
 pub mod frontend;
 mod lanes;
@@ -121,6 +122,10 @@ struct ReadmeDoctests;
 
 pub use closure::Closure;
 pub use error::{Error, ErrorKind};
+pub use fit::{
+    fit_poses, ControlCount, FitMethod, FitOptions, FitReport, FittedMotion, RobustLoss,
+    DEFAULT_FIT_ITERATIONS, FIT_LEVELS, MAX_FIT_CONTROLS, ROBUST_SCALE_FACTOR,
+};
 pub use formats::csv::{
     control_poses_csv, parse_csv_poses, poses_csv, trajectory_csv, write_poses_csv,
     write_trajectory_csv, MAX_CSV_BYTES, POSE_COLUMNS,

@@ -3,7 +3,7 @@
 //! `use wasm_bindgen_test::wasm_bindgen_test as test;`), which the wasm test stage runs in
 //! headless Chromium. Native only, each saying so with `#![cfg(not(target_arch = "wasm32"))]`:
 //! `fuzz_regressions`, which replays the native fuzz targets' checks (fuzz/), and the heaviest
-//! fits and samplings (`methods_barr`, `methods_continuity`, `methods_converged`, `pip_morph`,
+//! fits and samplings (`fit`, `methods_barr`, `methods_continuity`, `methods_converged`, `pip_morph`,
 //! `rational_growth`): the browser test runner gives up on a page that does not answer for
 //! 30 s, which one long test holds up, and the wasm stage's time would grow by their whole run.
 //!
@@ -19,6 +19,7 @@ mod support;
 mod batch_blends;
 mod control_poses_csv;
 mod export_tolerance;
+mod fit;
 mod frame_independence;
 mod frontend_options;
 mod fuzz_regressions;

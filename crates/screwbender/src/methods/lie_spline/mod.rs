@@ -215,6 +215,38 @@ impl<G: LieGroup> LieBSpline<G> {
         }
     }
 
+    /// Replaces control pose `i` (an index into [`LieBSpline::control_poses`]) and updates only
+    /// what depends on it: the up to three segments around it and, near an open end, the phantom
+    /// control pose reflected from it. The result equals [`LieBSpline::new`] on the changed
+    /// poses; fitting perturbs one control pose at a time, so a rebuild would cost O(n) where
+    /// this costs O(1). `pose` must be a valid pose (unit rotation, finite).
+    pub(crate) fn set_control_pose(&mut self, i: usize, pose: Pose) {
+        let n = self.count;
+        let m = self.controls.len();
+        let stored = if self.closed { i } else { i + 1 };
+        self.controls[stored] = pose;
+        let mut touched = [stored, (stored + 1) % m, usize::MAX, usize::MAX];
+        if !self.closed {
+            if i <= 1 {
+                let first = G::segment(&self.controls[1], &self.controls[2]);
+                self.controls[0] = G::compose(&self.controls[1], &G::exp(&first, -1.0));
+                touched[2] = 1;
+            }
+            if i + 2 >= n {
+                let last = G::segment(&self.controls[n - 1], &self.controls[n]);
+                self.controls[n + 1] = G::compose(&self.controls[n], &G::exp(&last, 1.0));
+                touched[3] = m - 1;
+            }
+        }
+        for k in touched.into_iter().filter(|&k| k < m) {
+            self.segments[k] = G::segment(&self.controls[(k + m - 1) % m], &self.controls[k]);
+        }
+        // Segment 0 (the wrap) is read only by closed splines; an open one keeps it as built.
+        if !self.closed {
+            self.segments[0] = G::segment(&self.controls[m - 1], &self.controls[0]);
+        }
+    }
+
     /// Whether the control poses were solved to pass through the given poses.
     pub fn is_interpolating(&self) -> bool {
         self.interpolating

@@ -1,0 +1,58 @@
+"""`fit` gives the numbers of `screwbender fit --json` (the same core on the same file): the
+fitted control poses and the residual report to 1e-12."""
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+import screwbender as sb
+
+
+@pytest.fixture(scope="module")
+def samples(tmp_path_factory):
+    """300 samples of a helix-like motion with a deterministic wobble, one every 0.05 s."""
+    poses, times = [], []
+    for i in range(300):
+        t = 0.05 * i
+        a = 0.4 * t
+        wobble = 0.01 * math.sin(1.7 * i)
+        poses.append(
+            {
+                "origin": [2.0 * math.cos(a), 2.0 * math.sin(a) + wobble, 0.3 * a],
+                "rotation": [math.cos(a / 2), 0.0, 0.0, math.sin(a / 2)],
+            }
+        )
+        times.append(t)
+    path = tmp_path_factory.mktemp("fit") / "samples.json"
+    path.write_text(json.dumps({"closed": False, "poses": poses, "times": times}))
+    return path
+
+
+def test_fit_matches_the_cli(cli, samples, tmp_path):
+    out = tmp_path / "fitted.json"
+    args = ["--method", "se3bspline", "--controls", "8", "--robust", "huber"]
+    report = json.loads(cli(["fit", str(samples), *args, "--json", "-o", str(out)]))
+    motion, got = sb.fit(samples, method="se3bspline", controls=8, robust="huber")
+    assert set(got) == set(report)
+    for key, value in report.items():
+        if isinstance(value, float):
+            assert got[key] == pytest.approx(value, rel=0, abs=1e-12), key
+        else:
+            assert got[key] == value, key
+    doc = json.loads(out.read_text())
+    want = np.array([p["origin"] + p["rotation"] for p in doc["poses"]])
+    have = np.array([motion.pose(i) for i in range(len(motion))])
+    np.testing.assert_allclose(have, want, rtol=0, atol=1e-12)
+    # The wobble (0.01) is what remains.
+    assert got["max_position"] < 0.012
+
+
+def test_fit_refuses_bad_options(samples):
+    with pytest.raises(ValueError, match="exactly one of controls and tolerance"):
+        sb.fit(samples)
+    with pytest.raises(ValueError, match="method"):
+        sb.fit(samples, method="kks", controls=4)
+    with pytest.raises(ValueError, match="poses"):
+        sb.fit(samples, controls=301)
