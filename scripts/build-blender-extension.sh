@@ -2,8 +2,9 @@
 # The Blender extension (blender/) as the zip that Blender installs (Preferences > Get Extensions >
 # Install from Disk): the Python package's abi3 wheel from artifacts/python/ (made by
 # scripts/test.d/python.sh, or `maturin build` as python/README.md says) copied under
-# blender/wheels/ (ignored), then blender/ zipped into artifacts/blender/, tests and caches left
-# out. Prints the zip's path.
+# blender/wheels/ (ignored), then blender/ zipped into artifacts/blender/, caches left out and
+# the README's pictures and their script (docs/, tools/) too: Blender has no use for them. Prints
+# the zip's path.
 #
 #   scripts/build-blender-extension.sh [WHEEL]
 set -euo pipefail
@@ -27,7 +28,8 @@ import pathlib, sys, zipfile
 root = pathlib.Path("blender")
 with zipfile.ZipFile(sys.argv[1], "w", zipfile.ZIP_DEFLATED) as z:
     for path in sorted(root.rglob("*")):
-        if path.is_file() and "__pycache__" not in path.parts:
+        inside = path.relative_to(root).parts
+        if path.is_file() and "__pycache__" not in inside and inside[0] not in ("docs", "tools"):
             z.write(path, path.relative_to(root))
 PY
 echo "$out"

@@ -10,7 +10,9 @@ whose `screwbender` is also the reference here. Then:
 * export then import gives the same keys;
 * bad input (a single key, a scaled object) is reported naming the object, and nothing changes;
 * the CLI's `.glb` exports of three presets imported by Blender's own glTF importer: the
-  farthest vertex of the object at every sampled frame within 1e-4 of the CLI's samples.
+  farthest vertex of the object at every sampled frame within 1e-4 of the CLI's samples;
+* blender/tools/readme-pictures.py, at a tiny size: its pictures written, the corner path it
+  draws after smoothing through the keyed positions and without the kinks it has before.
 
 Undo is not checked: `bpy.ops.ed.undo` needs a window, which headless Blender has not (its poll
 fails); the operator registers for undo and keeps the original action, which is checked.
@@ -19,6 +21,7 @@ fails); the operator registers for undo and keeps the original action, which is 
       .venv-blender/bin/python -m pytest tests/blender
 """
 
+import importlib.util
 import json
 import os
 import pathlib
@@ -230,3 +233,34 @@ def test_blenders_gltf_importer_plays_the_clis_glb(scene, tmp_path, preset):
         worst = max(worst, float(np.abs(got - want).max()))
     assert len(samples) > 24 and worst <= 1e-4, f"{preset}: farthest vertex off by {worst:.3g}"
     print(f"{preset}: {len(samples)} samples, largest difference {worst:.2e}")
+
+
+def velocity_changes(points, every):
+    """The length of the second difference of every ``every``-th point: at each inner sample,
+    how much the path's velocity per step changes there."""
+    p = np.array([tuple(v) for v in points])[::every]
+    return np.linalg.norm(p[2:] - 2 * p[1:-1] + p[:-2], axis=1)
+
+
+def test_the_readme_pictures_script_draws_the_smoothed_path(scene, tmp_path):
+    """blender/tools/readme-pictures.py (run by hand for blender/README.md) at a tiny size: its
+    three pictures are written, and the box corner's path after *Smooth motion* passes through
+    the keyed positions as before, without the kinks that Blender's linear keys have there."""
+    path = ROOT / "blender/tools/readme-pictures.py"
+    spec = importlib.util.spec_from_file_location("readme_pictures", path)
+    pictures = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(pictures)
+    before, after = pictures.make(tmp_path, width=32, height=18, samples=1)
+    for name in ("smooth-before.png", "smooth-after.png", "smooth-paths.png"):
+        assert (tmp_path / name).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n", name
+    at_keys = [(f - pictures.FRAMES[0]) * pictures.PATH_SAMPLES for f in pictures.FRAMES]
+    off = max((before[i] - after[i]).length for i in at_keys)
+    assert off < 1e-4, f"the smoothed path misses a keyed corner position by {off:.3g}"
+    # At whole frames (what Blender plays): Blender's interpolation changes the corner's
+    # velocity at once at a key; after smoothing, the change there is less than half of that.
+    change_before = velocity_changes(before, pictures.PATH_SAMPLES)
+    change_after = velocity_changes(after, pictures.PATH_SAMPLES)
+    inner = [f - pictures.FRAMES[0] - 1 for f in pictures.FRAMES[1:-1]]
+    ratios = change_after[inner] / change_before[inner]
+    assert ratios.max() < 0.5, f"velocity change at the keys, after / before: {ratios.round(2)}"
+    print(f"pictures: velocity change at the keys after / before: {ratios.round(2)}")
