@@ -1,4 +1,4 @@
-//! The Rust core's side of the Python package's benchmarks (python/benchmarks/bench.py): times
+//! The Rust core's side of the Python package's benchmarks (benches/python/bench.py): times
 //! the same work as `Motion.subdivide()` and `screw(a, t, b)` on batches, natively, and prints
 //! one line of seconds per repetition.
 //!

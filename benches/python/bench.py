@@ -9,7 +9,7 @@
    and against pytransform3d's batched ``dual_quaternions_sclerp`` (its native dual
    quaternions in, so its conversions are not counted).
 
-    .venv/bin/python python/benchmarks/bench.py [--rounds 9] [--quick]
+    .venv/bin/python benches/python/bench.py [--rounds 9] [--quick]
 
 Needs the Rust example ``core_timing`` (built here with cargo, release). Unset
 OPENBLAS_CORETYPE / OPENBLAS_L2_SIZE for this command alone if they are set (they slow numpy).
