@@ -12,6 +12,7 @@ pub(crate) mod hull;
 pub mod mesh;
 pub(crate) mod morph;
 pub(crate) mod pieces;
+pub(crate) mod trig;
 
 pub use display::{display, PresetDisplay, DEFAULT_STROBE};
 
