@@ -20,6 +20,7 @@ mod batch_blends;
 mod control_poses_csv;
 mod export_tolerance;
 mod frame_independence;
+mod frontend_editable;
 mod frontend_options;
 mod fuzz_regressions;
 mod interop;
