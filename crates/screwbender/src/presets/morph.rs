@@ -189,7 +189,7 @@ fn corner_normals(p: &[DVec3], tris: &[[u32; 3]]) -> Vec<DVec3> {
             let v = p[t[k] as usize];
             let e1 = p[t[(k + 1) % 3] as usize] - v;
             let e2 = p[t[(k + 2) % 3] as usize] - v;
-            around[t[k] as usize].push((f, e1.angle_between(e2)));
+            around[t[k] as usize].push((f, trig::angle_between(e1, e2)));
         }
     }
     let mut out = Vec::with_capacity(3 * tris.len());
