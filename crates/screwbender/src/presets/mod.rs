@@ -14,7 +14,7 @@ pub(crate) mod morph;
 pub(crate) mod pieces;
 pub(crate) mod trig;
 
-pub use display::{display, PresetDisplay, DEFAULT_STROBE};
+pub use display::{body_points, display, object_body_points, PresetDisplay, DEFAULT_STROBE};
 
 use crate::pose::Pose;
 use crate::subdivision::scheme::Scheme;
