@@ -33,6 +33,7 @@ from ._screwbender import (
     compare_methods,
     method_poses,
     preset_descriptions,
+    preset_display,
     presets,
     screw,
 )
@@ -45,6 +46,7 @@ __all__ = [
     "compare_methods",
     "method_poses",
     "preset_descriptions",
+    "preset_display",
     "presets",
     "screw",
 ]
