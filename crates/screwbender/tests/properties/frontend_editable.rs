@@ -124,17 +124,15 @@ fn edits_then_refine_is_the_refinement_of_the_edited_document() {
                     m.refined_poses().unwrap();
                 }
             }
+            // One accessor at a time, so that either cache may be the one an edit finds.
             let want = fresh(&m);
-            assert_eq!(
-                bits(m.refined_poses().unwrap()),
-                want,
-                "seed {seed}, step {step}: cached poses"
-            );
-            assert_eq!(
-                bits(m.refined().unwrap().refined().poses()),
-                want,
-                "seed {seed}, step {step}: cached motion"
-            );
+            if rng.next_u64() % 2 == 0 {
+                let got = bits(m.refined_poses().unwrap());
+                assert_eq!(got, want, "seed {seed}, step {step}: cached poses");
+            } else {
+                let got = bits(m.refined().unwrap().refined().poses());
+                assert_eq!(got, want, "seed {seed}, step {step}: cached motion");
+            }
         }
     }
 }
