@@ -35,6 +35,7 @@ from ._screwbender import (
     fit,
     method_poses,
     preset_descriptions,
+    preset_display,
     presets,
     screw,
 )
@@ -48,6 +49,7 @@ __all__ = [
     "fit",
     "method_poses",
     "preset_descriptions",
+    "preset_display",
     "presets",
     "screw",
 ]

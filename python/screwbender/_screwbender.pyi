@@ -288,3 +288,10 @@ def presets() -> list[str]:
 
 def preset_descriptions() -> list[Tuple[str, str, str]]:
     """``(id, label, description)`` of every preset."""
+
+def preset_display(id: str) -> dict[str, Any]:
+    """How the page shows preset ``id``: ``name`` (in words), ``strobe`` (copies of the object),
+    ``selected`` (the pose selected on load, or ``None``) and ``body_points`` (the local points
+    whose trajectories are drawn, a list of ``[x, y, z]``). An unknown id raises ``ValueError``
+    naming ``id``.
+    """

@@ -37,6 +37,10 @@ def test_presets_are_the_clis(cli):
     listed = [line.split()[0] for line in cli(["preset"]).splitlines() if line.strip()]
     assert sb.presets() == listed
     assert [d[0] for d in sb.preset_descriptions()] == listed
+    # Each by the same name in words (the core's table, as the page's chooser shows it).
+    for line in cli(["preset"]).splitlines():
+        if line.strip():
+            assert f" {sb.preset_display(line.split()[0])['name']}: " in line, line
 
 
 @pytest.mark.parametrize("scheme", SCHEMES)

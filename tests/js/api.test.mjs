@@ -158,6 +158,27 @@ describe('module', () => {
     assert.deepEqual(list.find((s) => s.id === 'pip_morph5').morphShapes.length, 5);
   });
 
+  it('presets: how a figure shows each (name, strobe, selection, body points) comes from the core', () => {
+    const finite3 = (p) => Array.isArray(p) && p.length === 3 && p.every(Number.isFinite);
+    for (const s of sb.presets()) {
+      assert.ok(typeof s.name === 'string' && s.name !== s.id, s.id);
+      assert.ok(Number.isInteger(s.strobe) && s.strobe >= 1, s.id);
+      assert.ok(s.selected === undefined || (Number.isInteger(s.selected) && s.selected < s.poseCount), s.id);
+      // The object's origin and at least one far point on it, whose trajectory shows the turning.
+      assert.ok(s.bodyPoints.length >= 2 && s.bodyPoints.every(finite3), `${s.id}: ${JSON.stringify(s.bodyPoints)}`);
+      assert.ok(s.bodyPoints.some((p) => Math.hypot(...p) > 0), s.id);
+    }
+    // A named object gets the points of the same table: the bar's are those of a preset bar.
+    const bar = sb.presets().find((s) => s.shape.kind === 'bar' && s.shape.length === 2);
+    assert.deepEqual(sb.objectBodyPoints('bar'), bar?.bodyPoints);
+    for (const name of ['bar', 'block', 'cylinder', 'cone', 'sphere', 'star', 'pendulum', 'wedge']) {
+      const points = sb.objectBodyPoints(name);
+      assert.ok(points.length >= 2 && points.every(finite3), name);
+    }
+    assert.equal(sb.objectBodyPoints('teapot'), undefined);
+    assert.equal(sb.objectBodyPoints(42), undefined);
+  });
+
   it('screw: example A of docs/math/screw.md §7 (quarter turn about x = y = 1, lift 1)', () => {
     const b = { origin: [2, 0, 1], rotation: rz(Math.PI / 2) };
     const mid = sb.screw({ origin: [0, 0, 0], rotation: ID }, 0.5, b);

@@ -180,7 +180,8 @@ fn preset(a: PresetArgs) -> Result<String, Failure> {
         None => {
             let mut s = String::new();
             for sc in presets::all() {
-                s += &format!("{:<18} {:<4} {}\n", sc.id, sc.label, sc.description);
+                let name = presets::display(sc.id).name;
+                s += &format!("{:<18} {:<4} {name}: {}\n", sc.id, sc.label, sc.description);
             }
             Ok(s)
         }

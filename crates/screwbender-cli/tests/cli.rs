@@ -198,6 +198,18 @@ fn help_version_and_presets() {
     ] {
         assert!(list.contains(id), "{id} missing from the preset list");
     }
+    // Each preset by its name in words, the core's (as the page's chooser shows it).
+    for p in screwbender::presets::all() {
+        let line = list
+            .lines()
+            .find(|l| l.split_whitespace().next() == Some(p.id));
+        let name = screwbender::presets::display(p.id).name;
+        assert!(
+            line.is_some_and(|l| l.contains(&format!(" {name}: "))),
+            "{}: {line:?} does not name it '{name}'",
+            p.id
+        );
+    }
 }
 
 /// Bad usage and bad input: exit status 2, one line on stderr naming the problem, nothing on

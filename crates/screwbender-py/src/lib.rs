@@ -25,6 +25,7 @@ pub mod motion;
 pub mod screw;
 
 use pyo3::prelude::*;
+use pyo3::types::PyDict;
 
 /// The preset ids (`Motion.from_preset(id)`), in the order of the page's menu.
 #[pyfunction]
@@ -41,6 +42,30 @@ fn preset_descriptions() -> Vec<(&'static str, &'static str, &'static str)> {
         .collect()
 }
 
+/// How the page shows preset `id` (the core's table, which the page's chooser and figure
+/// read): a dict with `name` (in words), `strobe` (copies of the object), `selected` (the pose
+/// selected on load, or `None`) and `body_points` (the local points whose trajectories are
+/// drawn, a list of `[x, y, z]`). An unknown id raises `ValueError` naming `id`.
+#[pyfunction]
+fn preset_display<'py>(py: Python<'py>, id: &str) -> PyResult<Bound<'py, PyDict>> {
+    let preset = screwbender::presets::preset(id).ok_or_else(|| {
+        pyo3::exceptions::PyValueError::new_err(format!(
+            "id: '{id}' is not a preset (expected one of: {})",
+            presets().join(", ")
+        ))
+    })?;
+    let display = screwbender::presets::display(preset.id);
+    let out = PyDict::new(py);
+    out.set_item("name", display.name)?;
+    out.set_item("strobe", display.strobe)?;
+    out.set_item("selected", display.selected)?;
+    out.set_item(
+        "body_points",
+        screwbender::presets::body_points(&preset.shape),
+    )?;
+    Ok(out)
+}
+
 /// The module.
 #[pymodule]
 fn _screwbender(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -51,6 +76,7 @@ fn _screwbender(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fit::fit, m)?)?;
     m.add_function(wrap_pyfunction!(presets, m)?)?;
     m.add_function(wrap_pyfunction!(preset_descriptions, m)?)?;
+    m.add_function(wrap_pyfunction!(preset_display, m)?)?;
     m.add("MAX_REFINED_POSES", screwbender::MAX_REFINED_POSES)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

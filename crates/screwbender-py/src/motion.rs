@@ -1,10 +1,11 @@
 //! The `Motion` class: control poses (a cycle or an open sequence), their key timing and the
 //! subdivision options, and the smooth motion they define.
 //!
-//! Every change builds the new state, validates it completely (poses, options, timing, the
-//! memory guard [`screwbender::MAX_REFINED_POSES`]) and only then stores it, so after any raised
-//! error the object keeps its exact previous state. The refined motion is computed on first use
-//! (without the GIL) and cached until the next change.
+//! A wrapper of the core's [`EditableMotion`], which the JavaScript class wraps too: every change
+//! converts its arguments and hands them to it, which validates the new state completely (poses,
+//! options, timing, the memory guard [`screwbender::MAX_REFINED_POSES`]) and only then stores
+//! it, so after any raised error the object keeps its exact previous state. The refined motion
+//! is computed on first use (without the GIL) and cached until the next change.
 
 use std::path::Path;
 
@@ -13,10 +14,10 @@ use numpy::{PyArrayDyn, PyArrayMethods};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyType};
-use screwbender::frontend::{self, OptionsInput};
+use screwbender::frontend::{self, EditableMotion, OptionsInput};
 use screwbender::{
     presets, Error, ErrorKind, Motion, MotionDocument, Pose, Rules, Scheme, ScrewBender,
-    Subdivision, SubdivisionBuffers,
+    Subdivision,
 };
 
 use crate::convert::{
@@ -28,22 +29,6 @@ use crate::{compare, files};
 
 /// The default number of subdivision levels: the core's, as the CLI and the JS API.
 pub use screwbender::frontend::DEFAULT_LEVELS;
-
-/// What a `Motion` stores: always valid (see [`State::check`]).
-#[derive(Clone, Debug)]
-pub struct State {
-    /// The control poses, closedness, name and key timing.
-    pub doc: MotionDocument,
-    /// Scheme, rules and levels.
-    pub subdivision: Subdivision,
-}
-
-impl State {
-    /// Everything that can make a state unusable ([`MotionDocument::check_with`]).
-    fn check(&self) -> Result<(), Error> {
-        self.doc.check_with(&self.subdivision)
-    }
-}
 
 /// A rule set's name: `"direct"` or `"split"`, and the core's aliases ([`Rules`]' `FromStr`:
 /// `"split-then-tweak"`, `"v1"`, `"v2"`, …), with the core's error words.
@@ -163,97 +148,49 @@ fn point_from(obj: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<Option<DVe
     }
 }
 
-/// The memory `subdivide()` and `refined_matrices()` subdivide in, kept from one call to the
-/// next: the subdivision's working sequences, and the refined poses of a state changed since
-/// (their capacity). Subdividing into fresh memory pays a page fault for every 4 KB it touches
-/// (see [`Subdivision::apply_into`]); with these, only the returned array is fresh. A copy of a
-/// `Motion` starts without them.
-#[derive(Default)]
-struct Workspace {
-    buffers: SubdivisionBuffers<Pose>,
-    spare: Vec<Pose>,
-}
-
-impl Clone for Workspace {
-    fn clone(&self) -> Self {
-        Workspace::default()
-    }
-}
-
 /// Control poses (a cycle or an open sequence) smoothed by screw subdivision.
 #[pyclass(module = "screwbender._screwbender", name = "Motion")]
 #[derive(Clone)]
 pub struct PyMotion {
-    state: State,
-    /// The refined poses of `state` alone, from `subdivide()` / `refined_matrices()`.
-    refined: Option<Vec<Pose>>,
-    /// The refined motion with its span screws, for evaluation.
-    motion: Option<ScrewBender>,
-    /// Where `refined` is computed.
-    work: Workspace,
+    inner: EditableMotion,
 }
 
 impl PyMotion {
-    /// A motion of a checked state.
-    pub fn from_state(state: State) -> PyResult<PyMotion> {
-        state.check().map_err(value_error)?;
+    /// A motion of a document and options that are valid together.
+    pub fn from_state(doc: MotionDocument, subdivision: Subdivision) -> PyResult<PyMotion> {
         Ok(PyMotion {
-            state,
-            refined: None,
-            motion: None,
-            work: Workspace::default(),
+            inner: EditableMotion::new(doc, subdivision).map_err(value_error)?,
         })
     }
 
-    /// The current state.
-    pub fn state(&self) -> &State {
-        &self.state
+    /// The motion document.
+    pub fn document(&self) -> &MotionDocument {
+        self.inner.document()
     }
 
-    /// Applies `change` to a copy of the state, validates the copy and only then stores it.
-    fn update(&mut self, change: impl FnOnce(&mut State) -> PyResult<()>) -> PyResult<()> {
-        let mut next = self.state.clone();
-        change(&mut next)?;
-        next.check().map_err(value_error)?;
-        self.state = next;
-        self.work.spare = self.refined.take().unwrap_or_default();
-        self.motion = None;
-        Ok(())
+    /// The subdivision options.
+    pub fn subdivision(&self) -> Subdivision {
+        self.inner.subdivision()
+    }
+
+    /// Applies an edit of the core's (validated there; on error nothing changes).
+    fn edit(
+        &mut self,
+        change: impl FnOnce(&mut EditableMotion) -> Result<(), Error>,
+    ) -> PyResult<()> {
+        change(&mut self.inner).map_err(value_error)
     }
 
     /// The refined poses (subdividing without the GIL if not done since the last change).
     fn refined_poses(&mut self, py: Python<'_>) -> PyResult<&[Pose]> {
-        if self.motion.is_none() && self.refined.is_none() {
-            let State { doc, subdivision } = &self.state;
-            let Workspace { buffers, spare } = &mut self.work;
-            let mut poses = std::mem::take(spare);
-            detached(py, || {
-                subdivision.apply_into(&doc.poses, doc.closed, &mut poses, buffers)
-            })?
-            .map_err(value_error)?;
-            self.refined = Some(poses);
-        }
-        match (&self.motion, &self.refined) {
-            (Some(m), _) => Ok(m.refined().poses()),
-            (None, Some(poses)) => Ok(poses),
-            (None, None) => Err(PyValueError::new_err("motion: not subdivided")),
-        }
+        let inner = &mut self.inner;
+        detached(py, || inner.refined_poses())?.map_err(value_error)
     }
 
     /// The refined motion (built without the GIL if not done since the last change).
     fn motion(&mut self, py: Python<'_>) -> PyResult<&ScrewBender> {
-        if self.motion.is_none() {
-            let State { doc, subdivision } = &self.state;
-            let motion = detached(py, || {
-                ScrewBender::new(doc.poses.clone(), doc.closed, *subdivision)
-            })?
-            .map_err(value_error)?;
-            self.refined = None;
-            self.motion = Some(motion);
-        }
-        self.motion
-            .as_ref()
-            .ok_or_else(|| PyValueError::new_err("motion: not subdivided"))
+        let inner = &mut self.inner;
+        detached(py, || inner.refined())?.map_err(value_error)
     }
 }
 
@@ -270,7 +207,7 @@ fn state_from(
     velocities: Option<&Bound<'_, PyAny>>,
     name: Option<String>,
     defaults: Subdivision,
-) -> PyResult<State> {
+) -> PyResult<(MotionDocument, Subdivision)> {
     let scheme = scheme_from(scheme, s, defaults.scheme).map_err(value_error)?;
     let rules = parse_rules(rules).map_err(value_error)?;
     let levels = match levels {
@@ -288,7 +225,7 @@ fn state_from(
     let mut doc = MotionDocument::new(poses, closed);
     doc.name = name;
     doc.set_timing(times, velocities).map_err(value_error)?;
-    Ok(State { doc, subdivision })
+    Ok((doc, subdivision))
 }
 
 #[pymethods]
@@ -319,7 +256,7 @@ impl PyMotion {
             optional_text(rules, "rules")?,
         );
         let (s, name) = (optional_number(s, "s")?, optional_text(name, "name")?);
-        PyMotion::from_state(state_from(
+        let (doc, subdivision) = state_from(
             poses,
             closed,
             scheme.as_deref(),
@@ -330,7 +267,8 @@ impl PyMotion {
             velocities,
             name,
             defaults,
-        )?)
+        )?;
+        PyMotion::from_state(doc, subdivision)
     }
 
     /// The preset `name` (see `presets()`), with the preset's scheme and levels unless given.
@@ -364,7 +302,7 @@ impl PyMotion {
             optional_text(rules, "rules")?,
         );
         let s = optional_number(s, "s")?;
-        PyMotion::from_state(state_from(
+        let (doc, subdivision) = state_from(
             preset.poses,
             closed.unwrap_or(preset.closed),
             scheme.as_deref(),
@@ -375,17 +313,15 @@ impl PyMotion {
             velocities,
             Some(preset.id.to_string()),
             defaults,
-        )?)
+        )?;
+        PyMotion::from_state(doc, subdivision)
     }
 
     /// A motion document from JSON text (the CLI's and the page's format).
     #[classmethod]
     fn from_json(_cls: &Bound<'_, PyType>, text: &str) -> PyResult<PyMotion> {
         let doc = MotionDocument::from_json(text).map_err(value_error)?;
-        PyMotion::from_state(State {
-            doc,
-            subdivision: frontend::default_subdivision(),
-        })
+        PyMotion::from_state(doc, frontend::default_subdivision())
     }
 
     /// Control poses from a `.json`, `.csv`, `.glb` or `.gltf` file (as `screwbender import`).
@@ -402,15 +338,12 @@ impl PyMotion {
         if let Some(closed) = closed {
             doc.set_closed(closed);
         }
-        PyMotion::from_state(State {
-            doc,
-            subdivision: frontend::default_subdivision(),
-        })
+        PyMotion::from_state(doc, frontend::default_subdivision())
     }
 
     /// The motion document as JSON text (two-space indent, one pose per line).
     fn to_json(&self) -> String {
-        self.state.doc.to_json()
+        self.document().to_json()
     }
 
     /// Writes the motion as `.glb`, `.gltf` (+ `.bin`), `.csv` or `.json` (as `screwbender
@@ -437,8 +370,13 @@ impl PyMotion {
             radius,
             control_nodes,
         };
-        let State { doc, subdivision } = &self.state;
-        files::export(py, doc, *subdivision, Path::new(&path), &options)
+        files::export(
+            py,
+            self.inner.document(),
+            self.inner.subdivision(),
+            Path::new(&path),
+            &options,
+        )
     }
 
     /// An independent copy.
@@ -455,23 +393,22 @@ impl PyMotion {
     }
 
     fn __repr__(&self) -> String {
-        let s = &self.state;
-        let scheme = match s.subdivision.scheme {
+        let (doc, sub) = (self.inner.document(), self.inner.subdivision());
+        let scheme = match sub.scheme {
             Scheme::J(v) => format!("s={v}"),
             other => format!("scheme='{}'", scheme_name(other)),
         };
-        let name = s
-            .doc
+        let name = doc
             .name
             .as_ref()
             .map(|n| format!(", name={n:?}"))
             .unwrap_or_default();
         format!(
             "Motion({} poses, closed={}, {scheme}, levels={}, rules='{}'{name})",
-            s.doc.poses.len(),
-            if s.doc.closed { "True" } else { "False" },
-            s.subdivision.levels,
-            rules_name(s.subdivision.rules),
+            doc.poses.len(),
+            if doc.closed { "True" } else { "False" },
+            sub.levels,
+            rules_name(sub.rules),
         )
     }
 
@@ -480,95 +417,76 @@ impl PyMotion {
     /// The control poses, `(n, 7)`: `x y z qw qx qy qz` (unit quaternions).
     #[getter]
     fn get_poses<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        poses_to_array(py, &[self.state.doc.poses.len()], &self.state.doc.poses)
+        let poses = &self.document().poses;
+        poses_to_array(py, &[poses.len()], poses)
     }
 
     #[setter]
     fn set_poses(&mut self, value: &Bound<'_, PyAny>) -> PyResult<()> {
         let poses = poses_from(value, "poses")?;
-        self.update(|s| {
-            s.doc.poses = poses;
-            Ok(())
-        })
+        self.edit(|m| m.set_poses(poses))
     }
 
     /// Control pose `i` as 7 numbers.
     fn pose<'py>(&self, py: Python<'py>, i: isize) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let k = self.index(i)?;
-        poses_to_array(py, &[], &self.state.doc.poses[k..k + 1])
+        poses_to_array(py, &[], &self.document().poses[k..k + 1])
     }
 
     /// Replaces control pose `i` (`(7,)` or `(4, 4)`; negative `i` counts from the end).
     fn set_pose(&mut self, i: isize, pose: &Bound<'_, PyAny>) -> PyResult<()> {
         let k = self.index(i)?;
         let pose = pose_from(pose, "pose")?;
-        self.update(|s| {
-            s.doc.poses[k] = pose;
-            Ok(())
-        })
+        self.edit(|m| m.set_pose(k, pose))
     }
 
     /// Whether the poses form a cycle.
     #[getter]
     fn get_closed(&self) -> bool {
-        self.state.doc.closed
+        self.document().closed
     }
 
     #[setter]
     fn set_closed(&mut self, closed: &Bound<'_, PyAny>) -> PyResult<()> {
         let closed = flag(closed, "closed")?;
-        self.update(|s| {
-            s.doc.set_closed(closed);
-            Ok(())
-        })
+        self.edit(|m| m.set_closed(closed))
     }
 
     /// The document's name (a preset's id), or `None`.
     #[getter]
     fn get_name(&self) -> Option<String> {
-        self.state.doc.name.clone()
+        self.document().name.clone()
     }
 
     #[setter]
     fn set_name(&mut self, name: Option<&Bound<'_, PyAny>>) -> PyResult<()> {
         let name = optional_text(name, "name")?;
-        self.update(|s| {
-            s.doc.name = name;
-            Ok(())
-        })
+        self.edit(|m| m.set_name(name))
     }
 
     /// Key times in seconds (`n` for an open motion, `n + 1` for a cycle), or `None` (one
     /// second per span).
     #[getter]
     fn get_times(&self) -> Option<Vec<f64>> {
-        self.state.doc.times.clone()
+        self.document().times.clone()
     }
 
     #[setter]
     fn set_times(&mut self, times: Option<&Bound<'_, PyAny>>) -> PyResult<()> {
         let times = times_from(times)?;
-        self.update(|s| {
-            s.doc
-                .set_timing(times, s.doc.velocities.clone())
-                .map_err(value_error)
-        })
+        self.edit(|m| m.set_times(times))
     }
 
     /// Key velocities (poses per second, `None` where free), or `None` (all free).
     #[getter]
     fn get_velocities(&self) -> Option<Vec<Option<f64>>> {
-        self.state.doc.velocities.clone()
+        self.document().velocities.clone()
     }
 
     #[setter]
     fn set_velocities(&mut self, velocities: Option<&Bound<'_, PyAny>>) -> PyResult<()> {
         let velocities = velocities_from(velocities)?;
-        self.update(|s| {
-            s.doc
-                .set_timing(s.doc.times.clone(), velocities)
-                .map_err(value_error)
-        })
+        self.edit(|m| m.set_velocities(velocities))
     }
 
     // ---- the options -----------------------------------------------------------------------
@@ -576,17 +494,19 @@ impl PyMotion {
     /// The scheme: `"bspline"`, `"fourpoint"`, `"jarek"`, or `"j"` for the J_s family.
     #[getter]
     fn get_scheme(&self) -> &'static str {
-        scheme_name(self.state.subdivision.scheme)
+        scheme_name(self.subdivision().scheme)
     }
 
     #[setter]
     fn set_scheme(&mut self, scheme: &Bound<'_, PyAny>) -> PyResult<()> {
         let scheme = text(scheme, "scheme")?;
-        let current = self.state.subdivision.scheme;
+        let current = self.subdivision().scheme;
         let scheme = scheme_from(Some(&scheme), None, current).map_err(value_error)?;
-        self.update(|s| {
-            s.subdivision.scheme = scheme;
-            Ok(())
+        self.edit(|m| {
+            m.update(|_, sub| {
+                sub.scheme = scheme;
+                Ok(())
+            })
         })
     }
 
@@ -594,15 +514,17 @@ impl PyMotion {
     /// selects the J_s family.
     #[getter]
     fn get_s(&self) -> f64 {
-        self.state.subdivision.scheme.s()
+        self.subdivision().scheme.s()
     }
 
     #[setter]
     fn set_s(&mut self, s: &Bound<'_, PyAny>) -> PyResult<()> {
         let s = number(s, "s")?;
-        self.update(|st| {
-            st.subdivision.scheme = Scheme::J(s);
-            Ok(())
+        self.edit(|m| {
+            m.update(|_, sub| {
+                sub.scheme = Scheme::J(s);
+                Ok(())
+            })
         })
     }
 
@@ -610,41 +532,40 @@ impl PyMotion {
     /// `"split-then-tweak"`).
     #[getter]
     fn get_rules(&self) -> &'static str {
-        rules_name(self.state.subdivision.rules)
+        rules_name(self.subdivision().rules)
     }
 
     #[setter]
     fn set_rules(&mut self, rules: &Bound<'_, PyAny>) -> PyResult<()> {
         let rules = parse_rules(&text(rules, "rules")?).map_err(value_error)?;
-        self.update(|s| {
-            s.subdivision.rules = rules;
-            Ok(())
+        self.edit(|m| {
+            m.update(|_, sub| {
+                sub.rules = rules;
+                Ok(())
+            })
         })
     }
 
     /// Subdivision levels (`0`: the plain polyscrew).
     #[getter]
     fn get_levels(&self) -> u32 {
-        self.state.subdivision.levels
+        self.subdivision().levels
     }
 
     #[setter]
     fn set_levels(&mut self, levels: &Bound<'_, PyAny>) -> PyResult<()> {
         let levels = level_count(levels)?;
-        self.update(|s| {
-            s.subdivision.levels = levels;
-            Ok(())
+        self.edit(|m| {
+            m.update(|_, sub| {
+                sub.levels = levels;
+                Ok(())
+            })
         })
     }
 
     /// Warnings about the options on these poses (e.g. a span close to a half turn).
     fn warnings(&self) -> Vec<String> {
-        let s = &self.state;
-        s.subdivision
-            .warnings(&s.doc.poses, s.doc.closed)
-            .iter()
-            .map(|w| w.to_string())
-            .collect()
+        self.inner.warnings()
     }
 
     // ---- the motion ------------------------------------------------------------------------
@@ -652,18 +573,13 @@ impl PyMotion {
     /// How many poses `subdivide()` returns.
     #[getter]
     fn refined_count(&self) -> PyResult<usize> {
-        let s = &self.state;
-        s.subdivision
-            .output_len(s.doc.poses.len(), s.doc.closed)
-            .map_err(value_error)
+        self.inner.refined_count().map_err(value_error)
     }
 
     /// The parameter interval `(0, n)` for a cycle of `n` poses, `(0, m - 1)` for an open one.
     #[getter]
     fn domain(&self) -> (f64, f64) {
-        let n = self.state.doc.poses.len();
-        let spans = if self.state.doc.closed { n } else { n - 1 };
-        (0.0, spans as f64)
+        self.inner.domain()
     }
 
     /// The refined poses, `(N, 7)`; refined pose `j` sits at `u = j / 2**levels`.
@@ -800,19 +716,19 @@ impl PyMotion {
         methods: Option<&Bound<'py, PyAny>>,
         body_points: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let doc = &self.state.doc;
+        let doc = self.document();
         compare::table(py, &doc.poses, doc.closed, methods, body_points)
     }
 
     /// The number of control poses (also `len(m)`).
     #[getter]
     fn pose_count(&self) -> usize {
-        self.state.doc.poses.len()
+        self.document().poses.len()
     }
 
     /// The number of control poses.
     fn __len__(&self) -> usize {
-        self.state.doc.poses.len()
+        self.document().poses.len()
     }
 }
 
@@ -831,7 +747,7 @@ fn deprecated(py: Python<'_>, message: &std::ffi::CStr) -> PyResult<()> {
 impl PyMotion {
     /// Control pose index `i` (negative counts from the end), or a named `IndexError`.
     fn index(&self, i: isize) -> PyResult<usize> {
-        let n = self.state.doc.poses.len();
+        let n = self.document().poses.len();
         let k = if i < 0 { i + n as isize } else { i };
         usize::try_from(k).ok().filter(|&k| k < n).ok_or_else(|| {
             pyo3::exceptions::PyIndexError::new_err(format!(

@@ -49,7 +49,7 @@ pub use fit::fit_poses_js;
 #[cfg(feature = "methods")]
 pub use methods::methods;
 pub use motion::MotionHandle;
-pub use presets::{presets, scenes_alias};
+pub use presets::{object_body_points, presets, scenes_alias};
 pub use screw::{poses_to_matrices_js, screw, screw_info, screw_pairs, screw_poses};
 #[cfg(feature = "teaching")]
 pub use teaching::{

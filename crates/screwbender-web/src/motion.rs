@@ -1,10 +1,11 @@
 //! The `Motion` JavaScript class: an editable motion document plus subdivision options, and the
 //! smooth motion they define.
 //!
-//! Every mutator builds the new state, validates it completely (poses, options, the memory guard
-//! [`screwbender::MAX_REFINED_POSES`]) and only then stores it, so after any thrown error the object
-//! keeps its previous state and keeps working. The refined motion is computed lazily and cached
-//! until the next change.
+//! A wrapper of the core's [`EditableMotion`], which the Python class wraps too: every mutator
+//! converts its arguments and hands them to it, which validates the new state completely (poses,
+//! options, the memory guard [`screwbender::MAX_REFINED_POSES`]) and only then stores it, so after
+//! any thrown error the object keeps its previous state and keeps working. The refined motion is
+//! computed lazily and cached until the next change.
 
 use std::cell::RefCell;
 
@@ -18,43 +19,11 @@ use super::convert::{
 };
 use super::options::{self, default_subdivision};
 use super::presets::find_preset;
+use screwbender::frontend::EditableMotion;
 use screwbender::{
-    screw, Error, ErrorKind, Motion, MotionDocument, Polyscrew, Pose, Rules, ScrewBender,
-    Subdivision, SubdivisionBuffers, MAX_REFINED_POSES,
+    Error, ErrorKind, Motion, MotionDocument, Polyscrew, Pose, Rules, ScrewBender, Subdivision,
+    MAX_REFINED_POSES,
 };
-
-/// What a `Motion` stores: always valid (see [`State::check`]).
-#[derive(Clone, Debug)]
-struct State {
-    doc: MotionDocument,
-    subdivision: Subdivision,
-}
-
-impl State {
-    /// Everything that can make a state unusable ([`MotionDocument::check_with`]).
-    fn check(&self) -> Result<(), Error> {
-        self.doc.check_with(&self.subdivision)
-    }
-
-    /// The parameter interval `[0, n)` (closed) or `[0, m − 1]` (open).
-    fn domain(&self) -> (f64, f64) {
-        let n = self.doc.poses.len();
-        let spans = if self.doc.closed { n } else { n - 1 };
-        (0.0, spans as f64)
-    }
-}
-
-#[derive(Debug)]
-struct Inner {
-    state: State,
-    /// The subdivided motion of `state`, computed on first use.
-    refined: Option<ScrewBender>,
-    /// The last subdivided motion after a change made it stale: the next subdivision is
-    /// rebuilt in its memory ([`ScrewBender::rebuild`]) instead of fresh memory.
-    spare: Option<ScrewBender>,
-    /// The subdivision's working sequences, kept from one subdivision to the next.
-    buffers: SubdivisionBuffers<Pose>,
-}
 
 /// A motion: control poses (a cycle or an open sequence) smoothed by screw subdivision.
 ///
@@ -71,7 +40,7 @@ pub struct MotionHandle {
     // conversion reads plain-data copies (`convert::plain`), so user code (a throwing getter, a
     // proxy) runs only inside a caught call and no JS exception can cross a Rust frame, which
     // would skip the release of wasm-bindgen's borrow of the object or of this cell.
-    inner: RefCell<Inner>,
+    inner: RefCell<EditableMotion>,
 }
 
 fn busy() -> JsError {
@@ -79,72 +48,37 @@ fn busy() -> JsError {
 }
 
 impl MotionHandle {
-    fn from_state(state: State) -> Result<MotionHandle, Error> {
-        state.check()?;
+    fn from_state(doc: MotionDocument, subdivision: Subdivision) -> Result<MotionHandle, Error> {
         Ok(MotionHandle {
-            inner: RefCell::new(Inner {
-                state,
-                refined: None,
-                spare: None,
-                buffers: SubdivisionBuffers::new(),
-            }),
+            inner: RefCell::new(EditableMotion::new(doc, subdivision)?),
         })
-    }
-
-    /// A copy of the current state.
-    fn state(&self) -> Result<State, JsError> {
-        Ok(self.inner.try_borrow().map_err(|_| busy())?.state.clone())
     }
 
     /// The document and subdivision options (for the other API modules: export, analysis).
     pub(crate) fn snapshot(&self) -> Result<(MotionDocument, Subdivision), JsError> {
-        self.read(|s| (s.doc.clone(), s.subdivision))
+        self.read(|m| (m.document().clone(), m.subdivision()))
     }
 
-    /// Reads the state without copying.
-    fn read<R>(&self, f: impl FnOnce(&State) -> R) -> Result<R, JsError> {
-        Ok(f(&self.inner.try_borrow().map_err(|_| busy())?.state))
+    /// Reads the motion without copying.
+    fn read<R>(&self, f: impl FnOnce(&EditableMotion) -> R) -> Result<R, JsError> {
+        Ok(f(&*self.inner.try_borrow().map_err(|_| busy())?))
     }
 
-    /// Applies `change` to a copy of the state, validates the copy and only then stores it.
-    fn update(&self, change: impl FnOnce(&mut State) -> Result<(), Error>) -> Result<(), JsError> {
-        let mut inner = self.inner.try_borrow_mut().map_err(|_| busy())?;
-        let mut next = inner.state.clone();
-        change(&mut next)?;
-        next.check()?;
-        inner.state = next;
-        if let Some(stale) = inner.refined.take() {
-            inner.spare = Some(stale);
-        }
-        Ok(())
+    /// Applies an edit of the core's (validated there; on error nothing changes).
+    fn edit<R>(
+        &self,
+        change: impl FnOnce(&mut EditableMotion) -> Result<R, Error>,
+    ) -> Result<R, JsError> {
+        Ok(change(
+            &mut *self.inner.try_borrow_mut().map_err(|_| busy())?,
+        )?)
     }
 
     /// Runs `f` on the refined motion, subdividing first if needed. `f` must not call into
     /// JavaScript.
     pub(crate) fn with_refined<R>(&self, f: impl FnOnce(&ScrewBender) -> R) -> Result<R, JsError> {
         let mut inner = self.inner.try_borrow_mut().map_err(|_| busy())?;
-        if inner.refined.is_none() {
-            let Inner {
-                state: s,
-                refined,
-                spare,
-                buffers,
-            } = &mut *inner;
-            // The same motion as `ScrewBender::new` bit for bit; in the memory of the last one
-            // when there is one (a subdivision into fresh memory pays a page fault per 4 KB).
-            let motion = match spare.take() {
-                Some(mut motion) => {
-                    motion.rebuild(&s.doc.poses, s.doc.closed, s.subdivision, buffers)?;
-                    motion
-                }
-                None => ScrewBender::new(s.doc.poses.clone(), s.doc.closed, s.subdivision)?,
-            };
-            *refined = Some(motion);
-        }
-        match &inner.refined {
-            Some(motion) => Ok(f(motion)),
-            None => Err(busy()),
-        }
+        Ok(f(inner.refined()?))
     }
 }
 
@@ -177,7 +111,7 @@ impl MotionHandle {
     ) -> Result<MotionHandle, JsError> {
         let doc = document_from_js(&document)?;
         let subdivision = options::apply(default_subdivision(), &options)?;
-        Ok(MotionHandle::from_state(State { doc, subdivision })?)
+        Ok(MotionHandle::from_state(doc, subdivision)?)
     }
 
     /// A motion from the text of a JSON motion document (the CLI's file format).
@@ -189,7 +123,7 @@ impl MotionHandle {
     ) -> Result<MotionHandle, JsError> {
         let doc = MotionDocument::from_json(&string(&text, "text")?)?;
         let subdivision = options::apply(default_subdivision(), &options)?;
-        Ok(MotionHandle::from_state(State { doc, subdivision })?)
+        Ok(MotionHandle::from_state(doc, subdivision)?)
     }
 
     /// A motion from a pose `Float64Array` (7 numbers per pose: origin `x, y, z`, quaternion
@@ -209,7 +143,7 @@ impl MotionHandle {
         };
         let subdivision = options::apply(default_subdivision(), &options)?;
         let doc = MotionDocument::new(poses, closed);
-        Ok(MotionHandle::from_state(State { doc, subdivision })?)
+        Ok(MotionHandle::from_state(doc, subdivision)?)
     }
 
     /// The preset `id` (see `presets()`), with the preset's scheme and levels and the direct
@@ -237,13 +171,13 @@ impl MotionHandle {
     /// `origin` + `rotation`).
     #[wasm_bindgen(js_name = toJson)]
     pub fn to_json(&self) -> Result<String, JsError> {
-        self.read(|s| s.doc.to_json())
+        self.read(|m| m.document().to_json())
     }
 
     /// The motion document as a plain object.
     #[wasm_bindgen(js_name = toDocument, unchecked_return_type = "MotionDocument")]
     pub fn to_document(&self) -> Result<JsValue, JsError> {
-        document_to_js(&self.state()?.doc)
+        document_to_js(&self.snapshot()?.0)
     }
 
     /// Replaces the document by the JSON text `text` (options are kept).
@@ -253,10 +187,7 @@ impl MotionHandle {
         #[wasm_bindgen(unchecked_param_type = "string")] text: JsValue,
     ) -> Result<(), JsError> {
         let doc = MotionDocument::from_json(&string(&text, "text")?)?;
-        self.update(|s| {
-            s.doc = doc;
-            Ok(())
-        })
+        self.edit(|m| m.set_document(doc))
     }
 
     /// Replaces the document by a motion document object (options are kept).
@@ -266,16 +197,13 @@ impl MotionHandle {
         #[wasm_bindgen(unchecked_param_type = "MotionDocumentInput")] document: JsValue,
     ) -> Result<(), JsError> {
         let doc = document_from_js(&document)?;
-        self.update(|s| {
-            s.doc = doc;
-            Ok(())
-        })
+        self.edit(|m| m.set_document(doc))
     }
 
     /// The document's display name, if any.
     #[wasm_bindgen(getter)]
     pub fn name(&self) -> Result<Option<String>, JsError> {
-        self.read(|s| s.doc.name.clone())
+        self.read(|m| m.document().name.clone())
     }
 
     /// Sets (a string) or clears (`undefined` / `null`) the display name.
@@ -289,16 +217,13 @@ impl MotionHandle {
         } else {
             Some(string(&name, "name")?)
         };
-        self.update(|s| {
-            s.doc.name = name;
-            Ok(())
-        })
+        self.edit(|m| m.set_name(name))
     }
 
     /// Whether the control poses form a cycle.
     #[wasm_bindgen(getter)]
     pub fn closed(&self) -> Result<bool, JsError> {
-        self.read(|s| s.doc.closed)
+        self.read(|m| m.document().closed)
     }
 
     /// Makes the motion a cycle (`true`) or an open sequence (`false`).
@@ -308,17 +233,14 @@ impl MotionHandle {
         #[wasm_bindgen(unchecked_param_type = "boolean")] closed: JsValue,
     ) -> Result<(), JsError> {
         let closed = convert::boolean(&closed, "closed")?;
-        self.update(|s| {
-            s.doc.set_closed(closed);
-            Ok(())
-        })
+        self.edit(|m| m.set_closed(closed))
     }
 
     /// The key times in seconds (`n` for an open motion, `n + 1` for a cycle: the last is when
     /// pose 0 is reached again), or `undefined` for the uniform timing (pose `i` at `i` s).
     #[wasm_bindgen(getter, unchecked_return_type = "Float64Array | undefined")]
     pub fn times(&self) -> Result<Option<Vec<f64>>, JsError> {
-        self.read(|s| s.doc.times.clone())
+        self.read(|m| m.document().times.clone())
     }
 
     /// Sets the key times (strictly increasing, finite; `null` / `undefined`: uniform). Throws
@@ -334,14 +256,14 @@ impl MotionHandle {
         } else {
             Some(f64_array(&times, "times", MAX_REFINED_POSES)?)
         };
-        self.update(|s| s.doc.set_timing(times, s.doc.velocities.clone()))
+        self.edit(|m| m.set_times(times))
     }
 
     /// The key velocities `p'(T_i)` in poses per second, one per control pose (`null` where
     /// free), or `undefined` when all are free.
     #[wasm_bindgen(getter, unchecked_return_type = "(number | null)[] | undefined")]
     pub fn velocities(&self) -> Result<JsValue, JsError> {
-        Ok(match self.read(|s| s.doc.velocities.clone())? {
+        Ok(match self.read(|m| m.document().velocities.clone())? {
             Some(v) => v
                 .iter()
                 .map(|v| v.map_or(JsValue::NULL, JsValue::from_f64))
@@ -370,13 +292,13 @@ impl MotionHandle {
                 "velocity list (numbers or null)",
             )?)
         };
-        self.update(|s| s.doc.set_timing(s.doc.times.clone(), velocities))
+        self.edit(|m| m.set_velocities(velocities))
     }
 
     /// The number of control poses.
     #[wasm_bindgen(getter, js_name = poseCount)]
     pub fn pose_count(&self) -> Result<usize, JsError> {
-        self.read(|s| s.doc.poses.len())
+        self.read(|m| m.document().poses.len())
     }
 
     /// Control pose `i` as `{origin, rotation}`.
@@ -386,15 +308,16 @@ impl MotionHandle {
         #[wasm_bindgen(unchecked_param_type = "number")] i: JsValue,
     ) -> Result<JsValue, JsError> {
         let i = convert::number(&i, "index")?;
-        let pose = self.read(|s| -> Result<Pose, Error> {
-            Ok(s.doc.poses[check_index(i, "index", s.doc.poses.len())?])
+        let pose = self.read(|m| -> Result<Pose, Error> {
+            let poses = &m.document().poses;
+            Ok(poses[check_index(i, "index", poses.len())?])
         })??;
         pose_to_js(&pose)
     }
 
     /// All control poses, 7 numbers per pose (origin `x, y, z`, quaternion `w, x, y, z`).
     pub fn poses(&self) -> Result<Vec<f64>, JsError> {
-        self.read(|s| poses_to_array(&s.doc.poses))
+        self.read(|m| poses_to_array(&m.document().poses))
     }
 
     /// Replaces control pose `i`.
@@ -406,21 +329,9 @@ impl MotionHandle {
     ) -> Result<(), JsError> {
         let i = convert::number(&i, "index")?;
         let pose = pose_from_js(&pose, "pose")?;
-        let mut inner = self.inner.try_borrow_mut().map_err(|_| busy())?;
-        let i = check_index(i, "index", inner.state.doc.poses.len())?;
-        let mut next = inner.state.clone();
-        next.doc.poses[i] = pose;
-        next.check()?;
-        // A drag calls this every frame: keep the refined motion and re-subdivide only the window
-        // the moved pose influences (bit-identical to a rebuild, independent of the pose count).
-        let Inner {
-            refined, buffers, ..
-        } = &mut *inner;
-        if let Some(motion) = refined.as_mut() {
-            motion.set_control_pose_with(i, pose, buffers)?;
-        }
-        inner.state = next;
-        Ok(())
+        // A drag calls this every frame: the core re-subdivides only the window the moved pose
+        // influences (bit-identical to a rebuild, independent of the pose count).
+        self.edit(|m| m.set_pose(check_index(i, "index", m.document().poses.len())?, pose))
     }
 
     /// Inserts a pose between control poses `i` and `i + 1` (the new pose gets index `i + 1`,
@@ -439,23 +350,16 @@ impl MotionHandle {
         } else {
             Some(pose_from_js(&pose, "pose")?)
         };
-        let mut inserted = 0;
-        self.update(|s| {
-            let n = s.doc.poses.len();
-            let i = match pose {
-                Some(_) => check_index(i, "index", n)?,
-                // Without a pose, the last pose of an open motion has no successor.
-                None => check_index(i, "index", if s.doc.closed { n } else { n - 1 })?,
+        self.edit(|m| {
+            let n = m.document().poses.len();
+            // Without a pose, the last pose of an open motion has no successor.
+            let last = if pose.is_some() || m.document().closed {
+                n
+            } else {
+                n - 1
             };
-            let new = match pose {
-                Some(p) => p,
-                None => screw(&s.doc.poses[i], 0.5, &s.doc.poses[(i + 1) % n]),
-            };
-            s.doc.insert_pose(i + 1, new);
-            inserted = i + 1;
-            Ok(())
-        })?;
-        Ok(inserted)
+            m.insert_pose(check_index(i, "index", last)?, pose)
+        })
     }
 
     /// Removes control pose `i` (a motion keeps at least 2 poses).
@@ -465,11 +369,7 @@ impl MotionHandle {
         #[wasm_bindgen(unchecked_param_type = "number")] i: JsValue,
     ) -> Result<(), JsError> {
         let i = convert::number(&i, "index")?;
-        self.update(|s| {
-            let i = check_index(i, "index", s.doc.poses.len())?;
-            s.doc.remove_pose(i);
-            Ok(())
-        })
+        self.edit(|m| m.remove_pose(check_index(i, "index", m.document().poses.len())?))
     }
 
     // ---- options -----------------------------------------------------------------------------
@@ -478,20 +378,14 @@ impl MotionHandle {
     /// scheme: 1 B-spline, 0 4-point, ½ Jarek).
     #[wasm_bindgen(unchecked_return_type = "SubdivisionOptions")]
     pub fn options(&self) -> Result<JsValue, JsError> {
-        to_js(&options::to_output(&self.state()?.subdivision))
+        to_js(&options::to_output(&self.snapshot()?.1))
     }
 
     /// Where the current options give a poor result without an error, one sentence each
     /// naming the span (the split-then-tweak 4-point and Jarek rules across half a turn or
     /// more: docs/math/subdivision.md §4); empty when the result is fine.
     pub fn warnings(&self) -> Result<Vec<String>, JsError> {
-        self.read(|s| {
-            s.subdivision
-                .warnings(&s.doc.poses, s.doc.closed)
-                .iter()
-                .map(ToString::to_string)
-                .collect()
-        })
+        self.read(EditableMotion::warnings)
     }
 
     /// Changes several options at once (validated together: e.g. `{scheme: 'j', s: 0.3,
@@ -502,18 +396,14 @@ impl MotionHandle {
         &self,
         #[wasm_bindgen(unchecked_param_type = "Partial<SubdivisionOptions>")] options: JsValue,
     ) -> Result<(), JsError> {
-        let current = self.state()?.subdivision;
-        let next = options::apply(current, &options)?;
-        self.update(|s| {
-            s.subdivision = next;
-            Ok(())
-        })
+        let next = options::apply(self.snapshot()?.1, &options)?;
+        self.edit(|m| m.set_subdivision(next))
     }
 
     /// The scheme name (`'j'` for the J_s family).
     #[wasm_bindgen(getter, unchecked_return_type = "SchemeName")]
     pub fn scheme(&self) -> Result<String, JsError> {
-        self.read(|s| options::scheme_name(&s.subdivision.scheme).to_string())
+        self.read(|m| options::scheme_name(&m.subdivision().scheme).to_string())
     }
 
     /// Sets the scheme: `'bspline'`, `'fourpoint'`, `'jarek'`, or `'j'` (the J_s family with the
@@ -524,16 +414,17 @@ impl MotionHandle {
         #[wasm_bindgen(unchecked_param_type = "SchemeName")] name: JsValue,
     ) -> Result<(), JsError> {
         let name = string(&name, "scheme")?;
-        self.update(|s| {
-            s.subdivision.scheme = options::parse_scheme(&name, s.subdivision.scheme.s())?;
-            Ok(())
+        self.edit(|m| {
+            let mut next = m.subdivision();
+            next.scheme = options::parse_scheme(&name, next.scheme.s())?;
+            m.set_subdivision(next)
         })
     }
 
     /// The J_s parameter `s` of the current scheme (1 B-spline, 0 4-point, ½ Jarek).
     #[wasm_bindgen(getter)]
     pub fn s(&self) -> Result<f64, JsError> {
-        self.read(|s| s.subdivision.scheme.s())
+        self.read(|m| m.subdivision().scheme.s())
     }
 
     /// Deprecated name of the `s` getter.
@@ -564,7 +455,7 @@ impl MotionHandle {
     /// The rule set: `'direct'` (revised paper) or `'split'` (first version).
     #[wasm_bindgen(getter, unchecked_return_type = "RulesName")]
     pub fn rules(&self) -> Result<String, JsError> {
-        self.read(|s| options::rules_name(&s.subdivision.rules).to_string())
+        self.read(|m| options::rules_name(&m.subdivision().rules).to_string())
     }
 
     /// Sets the rule set (`'direct'` or `'split'`).
@@ -574,16 +465,18 @@ impl MotionHandle {
         #[wasm_bindgen(unchecked_param_type = "RulesName")] name: JsValue,
     ) -> Result<(), JsError> {
         let rules: Rules = string(&name, "rules")?.parse()?;
-        self.update(|s| {
-            s.subdivision.rules = rules;
-            Ok(())
+        self.edit(|m| {
+            m.update(|_, sub| {
+                sub.rules = rules;
+                Ok(())
+            })
         })
     }
 
     /// The number of subdivision levels.
     #[wasm_bindgen(getter)]
     pub fn levels(&self) -> Result<u32, JsError> {
-        self.read(|s| s.subdivision.levels)
+        self.read(|m| m.subdivision().levels)
     }
 
     /// Sets the number of levels (a whole number ≥ 0). Checked at once against the memory guard
@@ -594,9 +487,11 @@ impl MotionHandle {
         #[wasm_bindgen(unchecked_param_type = "number")] levels: JsValue,
     ) -> Result<(), JsError> {
         let levels = options::parse_levels(convert::number(&levels, "levels")?)?;
-        self.update(|s| {
-            s.subdivision.levels = levels;
-            Ok(())
+        self.edit(|m| {
+            m.update(|_, sub| {
+                sub.levels = levels;
+                Ok(())
+            })
         })
     }
 
@@ -605,14 +500,14 @@ impl MotionHandle {
     /// The number of refined poses (`n·2^levels` for a cycle, `(m−1)·2^levels + 1` open).
     #[wasm_bindgen(getter, js_name = refinedCount)]
     pub fn refined_count(&self) -> Result<usize, JsError> {
-        Ok(self.read(|s| s.subdivision.output_len(s.doc.poses.len(), s.doc.closed))??)
+        Ok(self.read(EditableMotion::refined_count)??)
     }
 
     /// The parameter interval `[start, end]`: `[0, n]` for a cycle of `n` poses (periodic),
     /// `[0, m − 1]` for an open sequence.
     #[wasm_bindgen(unchecked_return_type = "[number, number]")]
     pub fn domain(&self) -> Result<JsValue, JsError> {
-        let (a, b) = self.read(State::domain)?;
+        let (a, b) = self.read(EditableMotion::domain)?;
         to_js(&[a, b])
     }
 
@@ -708,7 +603,7 @@ impl MotionHandle {
     ) -> Result<Vec<f64>, JsError> {
         let count = self::count(&count, "count", MAX_REFINED_POSES)?;
         let local = point_from_js(&local, "local")?;
-        let (domain, closed) = self.read(|s| (s.domain(), s.doc.closed))?;
+        let (domain, closed) = self.read(|m| (m.domain(), m.document().closed))?;
         self.with_refined(|m| {
             let mut out = Vec::with_capacity(count * KINEMATICS_STRIDE);
             for u in sample_parameters(domain, closed, count) {
@@ -722,8 +617,8 @@ impl MotionHandle {
     /// kind, axis point and direction, angle, slide, pitch.
     #[wasm_bindgen(js_name = spanScrews, unchecked_return_type = "ScrewInfo[]")]
     pub fn span_screws(&self) -> Result<JsValue, JsError> {
-        let state = self.state()?;
-        let control = Polyscrew::new(state.doc.poses, state.doc.closed)?;
+        let (doc, _) = self.snapshot()?;
+        let control = Polyscrew::new(doc.poses, doc.closed)?;
         let infos: Vec<ScrewInfo> = control
             .spans()
             .iter()
@@ -749,15 +644,17 @@ impl MotionHandle {
         let mut doc = MotionDocument::new(preset.poses, preset.closed);
         doc.name = Some(preset.id.to_string());
         let subdivision = Subdivision::new(preset.scheme, Rules::Direct, preset.levels);
-        MotionHandle::from_state(State { doc, subdivision })
+        MotionHandle::from_state(doc, subdivision)
     }
     /// Switches to the J_s family with parameter `s` given under the name `at` (`setS` and
     /// its deprecated alias `setJ`).
     fn set_j_s(&self, s: &JsValue, at: &str) -> Result<(), JsError> {
         let s = options::check_s(finite(s, at)?, at)?;
-        self.update(|st| {
-            st.subdivision.scheme = screwbender::Scheme::J(s);
-            Ok(())
+        self.edit(|m| {
+            m.update(|_, sub| {
+                sub.scheme = screwbender::Scheme::J(s);
+                Ok(())
+            })
         })
     }
 }

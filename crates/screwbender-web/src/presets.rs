@@ -21,6 +21,8 @@ struct PresetInfo {
     strobe: u32,
     /// The control pose selected when it loads, if any.
     selected: Option<usize>,
+    /// The body points whose trajectories a figure draws ([`presets::body_points`]).
+    body_points: Vec<[f64; 3]>,
     label: &'static str,
     figure: &'static str,
     description: &'static str,
@@ -70,6 +72,7 @@ pub fn presets() -> Result<JsValue, JsError> {
             name: presets::display(s.id).name,
             strobe: presets::display(s.id).strobe,
             selected: presets::display(s.id).selected,
+            body_points: presets::body_points(&s.shape),
             label: s.label,
             figure: s.figure,
             description: s.description,
@@ -82,6 +85,22 @@ pub fn presets() -> Result<JsValue, JsError> {
         })
         .collect();
     to_js(&list)
+}
+
+/// The body points (local coordinates) whose trajectories a figure draws for the named object
+/// `object` (`bar`, `block`, `cylinder`, `cone`, `sphere`, `star`, `pendulum`, `wedge`), as
+/// `presets()` gives them for a preset's own object; `undefined` for another name.
+#[wasm_bindgen(js_name = objectBodyPoints, unchecked_return_type = "Vec3[] | undefined")]
+pub fn object_body_points(
+    #[wasm_bindgen(unchecked_param_type = "string")] object: JsValue,
+) -> Result<JsValue, JsError> {
+    match object
+        .as_string()
+        .and_then(|o| presets::object_body_points(&o))
+    {
+        Some(points) => to_js(&points),
+        None => Ok(JsValue::UNDEFINED),
+    }
 }
 
 /// Former name of `presets()`, kept for one release.

@@ -143,6 +143,8 @@ export interface PresetInfo {
   strobe: number;
   /** The control pose selected when the preset loads (absent: none). */
   selected?: number;
+  /** The body points (local coordinates) whose trajectories a figure draws: the object's origin and a characteristic far point. */
+  bodyPoints: Vec3[];
   label: string;
   figure: string;
   description: string;

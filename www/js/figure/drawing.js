@@ -51,37 +51,6 @@ export function fetchBunny() {
 /** Scale of the control-pose and animated objects relative to the strobe (avoids z-fighting). */
 const CONTROL_SCALE = 1.01;
 
-/** Named objects (the core's `presets::object_shape`, which `Mesh::named` draws) with body points to trace. */
-const OBJECT_POINTS = {
-  bar: [[0, 0, 0], [2, 0, 0]],
-  block: [[0, 0, 0], [0.6, 0.3, 0.2]],
-  cylinder: [[0, 0, 0], [0.4, 0, 0.8]],
-  cone: [[0, 0, -0.7], [0, 0, 0.7]],
-  sphere: [[0, 0, 0], [0.5, 0, 0]],
-  star: [[0, 0, 0], [0, 0.8, 0]],
-  pendulum: [[0, 0, 0], [0, 0, 4]],
-  wedge: [[0, 0, 0], [1.2, 0, 0]],
-  obj: [[0, 0, 0], [0.8, 0, 0]],
-};
-
-/** Body points of a scene Shape (origin and a characteristic far point). */
-function shapePoints(shape) {
-  switch (shape.kind) {
-    case 'bar': return [[0, 0, 0], [shape.length, 0, 0]];
-    case 'block': return [[0, 0, 0], [shape.size[0] / 2, shape.size[1] / 2, shape.base ? shape.size[2] : shape.size[2] / 2]];
-    case 'cylinder': return [[0, 0, 0], [shape.radius, 0, shape.height / 2]];
-    case 'cone': return [[0, 0, -shape.height / 2], [0, 0, shape.height / 2]];
-    case 'sphere': return [[0, 0, 0], [shape.radius, 0, 0]];
-    case 'starPrism': return [[0, 0, 0], [0, shape.outer, 0]];
-    case 'pendulum': return [[0, 0, 0], [0, 0, shape.rod]];
-    case 'wedge': return [[0, 0, 0], [shape.size[0], 0, 0]];
-    case 'triangle': return [[0, 0, 0], shape.x, shape.y];
-    case 'iBeam': return [[0, 0, 0], [shape.flange[0] / 2, 0, (shape.web + shape.flange[2]) / 2]];
-    case 'molecule': return [[0, 0, 0], [shape.ring * 1.9, 0, 0]];
-    default: return [[0, 0, 0]];
-  }
-}
-
 export class Drawing {
   /** `viewer`: the owning Viewer (renderer, camera, model, pixelSize, requestDraw, hooks). */
   constructor(viewer) {
@@ -102,11 +71,16 @@ export class Drawing {
     return scenes.find((s) => s.id === this.model.view.scene) ?? scenes[0];
   }
 
-  /** Body points whose trajectories are drawn. */
+  /**
+   * Body points whose trajectories are drawn: the core's (a preset's `bodyPoints`, a named
+   * object's `objectBodyPoints`); an imported mesh's origin and a point at half its fitted size.
+   * @returns {number[][]}
+   */
   bodyPoints() {
     const v = this.model.view;
-    if (v.object === 'scene') return shapePoints(this.sceneInfo.shape);
-    return OBJECT_POINTS[v.object] ?? [[0, 0, 0]];
+    if (v.object === 'scene') return this.sceneInfo.bodyPoints;
+    if (v.object === 'obj') return [[0, 0, 0], [IMPORT_SIZE / 2, 0, 0]];
+    return this.viewer.wasm.objectBodyPoints(v.object) ?? [[0, 0, 0]];
   }
 
   /** True when the object morphs between per-pose shapes (scene A8 with its own object). */

@@ -10,7 +10,7 @@
 use glam::DVec3;
 
 use crate::error::{Error, ErrorKind};
-use crate::presets::{self, Shape};
+use crate::presets::{self, trig, Shape};
 
 /// Segments around the circumference of cylinders, cones and spheres.
 pub const ROUND_SEGMENTS: u32 = 32;
@@ -133,7 +133,7 @@ impl Mesh {
         let slope = (r0 - r1) / h;
         for k in 0..=segments {
             let a = std::f64::consts::TAU * k as f64 / segments as f64;
-            let (s, c) = a.sin_cos();
+            let (s, c) = trig::sin_cos(a);
             let n = DVec3::new(c, s, slope).normalize();
             m.positions.push(DVec3::new(r0 * c, r0 * s, z0));
             m.normals.push(n);
@@ -148,7 +148,7 @@ impl Mesh {
             let mut v: Vec<DVec3> = (0..segments)
                 .map(|k| {
                     let a = std::f64::consts::TAU * k as f64 / segments as f64;
-                    DVec3::new(r * a.cos(), r * a.sin(), z)
+                    DVec3::new(r * trig::cos(a), r * trig::sin(a), z)
                 })
                 .collect();
             if reverse {
@@ -175,9 +175,9 @@ impl Mesh {
             for k in 0..=segments {
                 let phi = std::f64::consts::TAU * k as f64 / segments as f64;
                 let n = DVec3::new(
-                    theta.sin() * phi.cos(),
-                    theta.sin() * phi.sin(),
-                    theta.cos(),
+                    trig::sin(theta) * trig::cos(phi),
+                    trig::sin(theta) * trig::sin(phi),
+                    trig::cos(theta),
                 );
                 m.positions.push(n * radius);
                 m.normals.push(n);
@@ -260,7 +260,7 @@ impl Mesh {
                     .map(|k| {
                         let a = std::f64::consts::FRAC_PI_2 + std::f64::consts::PI * k as f64 / 5.0;
                         let r = if k % 2 == 0 { outer } else { inner };
-                        [r * a.cos(), r * a.sin()]
+                        [r * trig::cos(a), r * trig::sin(a)]
                     })
                     .collect();
                 Mesh::prism(&outline, -thickness / 2.0, thickness / 2.0)
@@ -317,7 +317,7 @@ impl Mesh {
                 let mut m = Mesh::default();
                 for k in 0..6 {
                     let a = std::f64::consts::TAU * k as f64 / 6.0;
-                    let c = DVec3::new(ring * a.cos(), ring * a.sin(), 0.0);
+                    let c = DVec3::new(ring * trig::cos(a), ring * trig::sin(a), 0.0);
                     m.append(&Mesh::sphere(atom, 16).translated(c));
                 }
                 let heavy = DVec3::new(ring * 1.9, 0.0, 0.0);

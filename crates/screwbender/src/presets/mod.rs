@@ -12,8 +12,9 @@ pub(crate) mod hull;
 pub mod mesh;
 pub(crate) mod morph;
 pub(crate) mod pieces;
+pub(crate) mod trig;
 
-pub use display::{display, PresetDisplay, DEFAULT_STROBE};
+pub use display::{body_points, display, object_body_points, PresetDisplay, DEFAULT_STROBE};
 
 use crate::pose::Pose;
 use crate::subdivision::scheme::Scheme;

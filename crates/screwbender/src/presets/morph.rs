@@ -21,7 +21,7 @@ use super::hull::extreme_hull;
 use super::pieces::{ConvexPiece, PipShape};
 use crate::error::{Error, ErrorKind};
 use crate::presets::mesh::Mesh;
-use crate::presets::Shape;
+use crate::presets::{trig, Shape};
 
 /// Latitude bands of the direction sphere ([`morph_mesh`]); longitudes are twice as many.
 pub const MORPH_RESOLUTION: usize = 24;
@@ -106,9 +106,9 @@ pub fn morph_mesh(shapes: &[Shape], weights: &[f64], resolution: usize) -> Resul
         for j in 0..lon {
             let phi = std::f64::consts::TAU * j as f64 / lon as f64;
             let d = DVec3::new(
-                theta.sin() * phi.cos(),
-                theta.sin() * phi.sin(),
-                theta.cos(),
+                trig::sin(theta) * trig::cos(phi),
+                trig::sin(theta) * trig::sin(phi),
+                trig::cos(theta),
             );
             let p = hulls.iter().map(|(w, pts)| support(pts, d) * *w).sum();
             mesh.positions.push(p);
@@ -189,7 +189,7 @@ fn corner_normals(p: &[DVec3], tris: &[[u32; 3]]) -> Vec<DVec3> {
             let v = p[t[k] as usize];
             let e1 = p[t[(k + 1) % 3] as usize] - v;
             let e2 = p[t[(k + 2) % 3] as usize] - v;
-            around[t[k] as usize].push((f, e1.angle_between(e2)));
+            around[t[k] as usize].push((f, trig::angle_between(e1, e2)));
         }
     }
     let mut out = Vec::with_capacity(3 * tris.len());

@@ -15,7 +15,7 @@ use glam::DVec3;
 
 use super::hull::extreme_hull;
 use super::mesh::Mesh;
-use super::Shape;
+use super::{trig, Shape};
 use crate::error::{Error, ErrorKind};
 
 /// The most hull vertices one convex piece may have (the morph builds the hull of every pair
@@ -203,7 +203,7 @@ fn star_pieces(outer: f64, inner: f64, thickness: f64) -> Vec<Vec<DVec3>> {
     let corner = |k: usize| {
         let a = std::f64::consts::FRAC_PI_2 + std::f64::consts::PI * k as f64 / 5.0;
         let r = if k % 2 == 0 { outer } else { inner };
-        [r * a.cos(), r * a.sin()]
+        [r * trig::cos(a), r * trig::sin(a)]
     };
     let prism = |outline: &[[f64; 2]]| -> Vec<DVec3> {
         [-thickness / 2.0, thickness / 2.0]

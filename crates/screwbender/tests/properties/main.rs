@@ -21,6 +21,7 @@ mod control_poses_csv;
 mod export_tolerance;
 mod fit;
 mod frame_independence;
+mod frontend_editable;
 mod frontend_options;
 mod fuzz_regressions;
 mod interop;
