@@ -14,7 +14,7 @@ use screwbender::{
 
 use crate::convert::{detached, value_error};
 use crate::files;
-use crate::motion::{PyMotion, State};
+use crate::motion::PyMotion;
 
 /// The control poses of the open motion `method` (`"screwbender"`: the cubic B-spline scheme;
 /// `"se3bspline"`: the cumulative B-spline on SE(3)) fitted to the poses of the file at `path`
@@ -75,9 +75,9 @@ pub fn fit<'py>(
     report.set_item("rms_deviation", r.rms_deviation)?;
     report.set_item("max_deviation", r.max_deviation)?;
     report.set_item("iterations", r.iterations)?;
-    let motion = PyMotion::from_state(State {
-        doc: fitted.document,
-        subdivision: Subdivision::new(Scheme::BSpline, Rules::Direct, DEFAULT_LEVELS),
-    })?;
+    let motion = PyMotion::from_state(
+        fitted.document,
+        Subdivision::new(Scheme::BSpline, Rules::Direct, DEFAULT_LEVELS),
+    )?;
     Ok((motion, report))
 }
