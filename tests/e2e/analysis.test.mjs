@@ -49,7 +49,7 @@ async function noticeAbout(file) {
   return page.locator('#banner .msg').textContent();
 }
 
-test(`${BACKEND}: a CSV of 200 poses asks how to import it; Esc changes nothing; every 4th keeps 50; a fit keeps fewer`, async () => {
+test(`${BACKEND}: a CSV of 200 poses asks how to import it; Esc changes nothing; every 4th keeps 50; a tolerance keeps fewer`, async () => {
   await sb(() => window.screwbender.app.run('loadPreset', 'l_cycle_rotated'));
   const s0 = await session();
   // Esc: the dialog closes, nothing changed.
@@ -75,7 +75,7 @@ test(`${BACKEND}: a CSV of 200 poses asks how to import it; Esc changes nothing;
   assert.equal(await sb(() => window.screwbender.app.motion.poseCount), 6);
   // A fit within a tolerance: fewer poses, and the count is shown.
   await chooseDense();
-  await page.locator('#reduce-fit').check();
+  await page.locator('#reduce-within').check();
   await page.locator('#reduce-tol').fill('0.01');
   await page.waitForFunction(() => /→ \d+ control poses/.test(document.querySelector('#reduce-dialog [role=status]').textContent));
   await page.locator('#reduce-dialog button[type=submit]').click();
@@ -87,7 +87,7 @@ test(`${BACKEND}: a CSV of 200 poses asks how to import it; Esc changes nothing;
   // A bad tolerance is refused inside the dialog, which stays open; Cancel then changes nothing.
   const s1 = await session();
   await chooseDense();
-  await page.locator('#reduce-fit').check();
+  await page.locator('#reduce-within').check();
   await page.locator('#reduce-tol').fill('-1');
   await page.locator('#reduce-dialog button[type=submit]').click();
   assert.match(await page.locator('#reduce-dialog [role=alert]').textContent(), /tolerance/);
@@ -107,6 +107,80 @@ test(`${BACKEND}: a CSV of 200 poses asks how to import it; Esc changes nothing;
   await page.locator('#any-file').setInputFiles({ name: 'few.csv', mimeType: 'text/csv', buffer: denseCsv(12) });
   await page.waitForFunction(() => window.screwbender.app.motion.poseCount === 12);
   assert.equal(await page.locator('#reduce-dialog').count(), 0);
+  assert.deepEqual(problems, []);
+});
+
+/**
+ * A CSV of `n` noisy samples of an open motion (half a turn about z along an arc, rising): a
+ * uniform noise of ±`noise` scene units on every coordinate and about ±`noise` radians on the
+ * rotation, from a fixed linear congruential sequence (the same file every run).
+ */
+function noisyCsv(n, noise) {
+  let seed = 12345;
+  const jitter = () => {
+    seed = (Math.imul(seed, 1103515245) + 12345) >>> 0;
+    return seed / 2 ** 31 - 1;
+  };
+  const rows = ['x,y,z,qw,qx,qy,qz'];
+  for (let i = 0; i < n; i++) {
+    const u = i / (n - 1);
+    const a = (Math.PI * u + noise * jitter()) / 2;
+    const b = (noise * jitter()) / 2;
+    // The rotation about z by 2a, then a small turn about x by 2b: q = q_z(2a) q_x(2b).
+    const q = [Math.cos(a) * Math.cos(b), Math.cos(a) * Math.sin(b), Math.sin(a) * Math.sin(b), Math.sin(a) * Math.cos(b)];
+    const p = [3 * Math.cos(Math.PI * u) + noise * jitter(), 3 * Math.sin(Math.PI * u) + noise * jitter(), 2 * u + noise * jitter()];
+    rows.push([...p, ...q].join(','));
+  }
+  return Buffer.from(rows.join('\n'));
+}
+
+test(`${BACKEND}: the import dialog fits a smooth motion to noisy poses, shows the residuals, and the fit is one undoable command`, async () => {
+  await sb(() => window.screwbender.app.run('loadPreset', 'l_cycle_rotated'));
+  await sb(() => window.screwbender.app.run('setScheme', 'fourpoint'));
+  const s0 = await session();
+  const noise = 0.01;
+  await page.locator('#any-file').setInputFiles({ name: 'noisy.csv', mimeType: 'text/csv', buffer: noisyCsv(400, noise) });
+  await page.waitForSelector('#reduce-dialog[open]');
+  await page.locator('#reduce-fit').check();
+  await page.locator('#reduce-method').selectOption('screwbender');
+  assert.match(await page.locator('#reduce-scheme-note').textContent(), /sets the scheme to cubic B-spline/);
+  // Options the core refuses: its words in the dialog, which stays open; nothing changed.
+  await page.locator('#reduce-fit-n').fill('1');
+  await page.locator('#reduce-fit-run').click();
+  await page.waitForFunction(() => /controls/.test(document.querySelector('#reduce-dialog [role=alert]').textContent));
+  await page.locator('#reduce-dialog button[type=submit]').click();
+  await page.waitForFunction(() => !/Fitting/.test(document.querySelector('#reduce-report').textContent));
+  assert.ok(await page.locator('#reduce-dialog').isVisible());
+  assert.equal(await session(), s0);
+  // 12 control poses, robust (Huber) loss: the residuals are shown, finite, and near the noise.
+  await page.locator('#reduce-fit-n').fill('12');
+  await page.locator('#reduce-robust').selectOption('huber');
+  await page.locator('#reduce-fit-run').click();
+  await page.waitForFunction(() => /fitted to 400 poses/.test(document.querySelector('#reduce-report').textContent));
+  const report = await page.locator('#reduce-report').textContent();
+  const m = report.match(/distance RMS (\S+), max (\S+) scene units; angle RMS (\S+)°, max (\S+)°/);
+  assert.ok(m, report);
+  const [rmsPos, maxPos, rmsDeg, maxDeg] = m.slice(1).map(Number);
+  for (const x of [rmsPos, maxPos, rmsDeg, maxDeg]) assert.ok(Number.isFinite(x) && x >= 0, report);
+  assert.ok(rmsPos <= maxPos && rmsDeg <= maxDeg, report);
+  // A uniform noise of ±σ on each coordinate has an RMS length of σ (three of σ/√3): the
+  // residuals are the noise, the fit's own error being far below it at 12 control poses here.
+  assert.ok(rmsPos > noise / 2 && rmsPos < 2 * noise, report);
+  assert.ok(rmsDeg < (2 * noise * 180) / Math.PI, report);
+  assert.equal(await session(), s0, 'fitting in the dialog changed the motion');
+  await page.locator('#reduce-dialog button[type=submit]').click();
+  await page.waitForSelector('#reduce-dialog', { state: 'detached' });
+  const state = await sb(() => {
+    const app = window.screwbender.app;
+    return { poses: app.motion.poseCount, scheme: app.motion.options().scheme, label: app.history.undoLabels[0] };
+  });
+  assert.deepEqual(state, { poses: 12, scheme: 'bspline', label: 'Fit 12 control poses' });
+  assert.match(await noticeAbout('noisy.csv'), /fitted 12 control poses \(ScrewBender B-spline\) to 400 poses/);
+  // One undo restores the motion, the scheme and the rest of the design (the camera, framed on
+  // the fitted poses, is no part of an undo step).
+  await sb(() => window.screwbender.app.parts.session.undo());
+  const design = (s) => JSON.stringify({ ...JSON.parse(s), camera: null });
+  assert.equal(design(await session()), design(s0));
   assert.deepEqual(problems, []);
 });
 

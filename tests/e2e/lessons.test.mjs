@@ -93,6 +93,7 @@ const ANSWERS = {
   'methods:1': { wrong: (L) => L.choose(2), right: (L) => L.choose(1) },
   'methods:2': { wrong: (L) => L.choose(0), right: (L) => L.choose(3) },
   'methods:3': { wrong: (L, app) => app.run('setScheme', 'bspline'), right: (L, app) => app.run('setScheme', 'fourpoint') },
+  'methods:4': { wrong: (L) => L.choose(0), right: (L) => L.choose(1) },
 };
 
 test('every lesson opens and every step applies without errors; math is MathML', async () => {
@@ -179,6 +180,7 @@ test('the multiple-choice answers agree with what the wasm API measures', async 
       vj: Object.fromEntries(Object.entries(rows).map(([k, v]) => [k, v.velocity_jump])),
       fd: Object.fromEntries(Object.entries(rows).map(([k, v]) => [k, v.frame_dependence])),
       jarekInterp: rows.jarek.interpolation_error,
+      interp: Object.fromEntries(Object.entries(rows).map(([k, v]) => [k, v.interpolation_error])),
     };
   });
   // Lesson 5 Q2 / lesson 1: screw methods are frame-independent (round-off), Squad + CR is not.
@@ -196,6 +198,10 @@ test('the multiple-choice answers agree with what the wasm API measures', async 
   assert.ok(r.fd.jarek < 1e-12 && r.fd.slerp > 1e-2 && r.fd.decoupled > 1e-2 && r.fd.rb > 1e-2, JSON.stringify(r.fd));
   // Lesson 6 text: Jarek's interpolation error "about 0.17".
   assert.ok(Math.abs(r.jarekInterp - 0.17) < 0.01, String(r.jarekInterp));
+  // Lesson 6 Q4: the SE(3) B-spline is frame-independent, Kim–Kim–Shin (split) is not; the SE(3)
+  // B-spline's interpolation error is "about 0.31", close to ScrewBender's B-spline's.
+  assert.ok(r.fd.se3bspline < 1e-12 && r.fd.kks > 1e-2, JSON.stringify(r.fd));
+  assert.ok(Math.abs(r.interp.se3bspline - 0.31) < 0.01 && Math.abs(r.interp.bspline - 0.31) < 0.01, JSON.stringify(r.interp));
 });
 
 test('schema.json names what the page accepts; index.json lists every lesson', async () => {

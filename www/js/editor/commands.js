@@ -118,6 +118,26 @@ export const COMMANDS = {
       if (step.timing?.times !== undefined) app.motion.setTimes(step.timing.times ?? null);
     },
   },
+  loadFit: {
+    label: (app, doc) => `Fit ${doc.poses.length} control poses`,
+    /**
+     * A motion fitted to imported samples (the full module's fitPoses, offered by the import
+     * dialog, editor/reduce-dialog.js): its document, with the scheme set to `scheme` when given
+     * (the fit's control poses are those of that scheme) and `mesh` (a glTF file's own object,
+     * validated by the caller) as the object.
+     */
+    run(app, doc, scheme = null, mesh = null) {
+      const motion = new app.wasm.Motion(doc, app.motion.options());
+      try {
+        if (scheme) motion.setOptions({ scheme });
+      } catch (e) {
+        motion.free();
+        throw e;
+      }
+      showImported(app, motion, mesh);
+      return true;
+    },
+  },
   setTimes: {
     label: (app, times) => (times ? 'Retime the keys' : 'Uniform timing'),
     /**
@@ -137,6 +157,23 @@ export const COMMANDS = {
     run: (app, s) => app.parts.session.applySession({ ...s, camera: undefined }),
   },
 };
+
+/**
+ * Makes an imported `motion` the app's, with `mesh` ({kind, data}: a glTF file's own object,
+ * validated by the caller) as the object when given, and frames its poses.
+ * @param {import('../app.js').App} app
+ * @param {any} motion
+ * @param {any} [mesh]
+ */
+export function showImported(app, motion, mesh = null) {
+  app.setMotion(motion);
+  if (mesh) {
+    app.setImported(mesh);
+    app.updateView({ object: 'obj' });
+    app.viewer.meshesChanged();
+  }
+  app.parts.viewpoint.fit();
+}
 
 /** The Undo menu's words for command `name` with `args` (its name where the label fails). */
 function labelOf(app, name, args) {

@@ -11,6 +11,7 @@ import { SLOT } from '../figure/slots.js';
 import { MAX_SAVED_MESH } from './session.js';
 import { SESSION_VERSION } from '../share-link.js';
 import { askReduction, MANY_POSES } from './reduce-dialog.js';
+import { showImported } from './commands.js';
 
 /** Largest file the page reads (the core refuses more than 64 MiB as well). */
 export const MAX_IMPORT_BYTES = 64 << 20;
@@ -144,21 +145,25 @@ export async function importFiles(app, fileList) {
   }
   // Many poses (samples of a motion, e.g. an exported CSV): ask whether to thin them.
   let kept = null;
+  let fit = null;
   if (doc.poses.length > MANY_POSES) {
     if (document.getElementById('reduce-dialog')) {
       app.parts.notices.show(`${main.name}: another import is waiting for an answer; nothing was changed.`);
       return false;
     }
     const radius = Math.max(1e-3, ...app.viewer.bodyPoints().map((p) => Math.hypot(...p)));
-    const choice = await askReduction(doc, main.name, radius, app.wasm.reducePoses);
+    // Fitting is the analysis module's (fetched on first use).
+    const fitPoses = async (d, o) => (await app.analysis()).fitPoses(d, o);
+    const choice = await askReduction(doc, main.name, radius, app.wasm.reducePoses, fitPoses);
     if (!choice) {
       app.parts.notices.show(`${main.name}: import cancelled, nothing was changed.`, 'info');
       return false;
     }
     doc = choice.doc;
     kept = choice.how;
+    fit = choice.fit ?? null;
   }
-  const ok = importDocument(app, doc, main.name, mesh);
+  const ok = importDocument(app, doc, main.name, mesh, fit);
   if (ok && kept) app.parts.notices.show(`${main.name}: ${kept}.`, 'info');
   return ok;
 }
@@ -233,8 +238,10 @@ function importJson(app, text, fileName = 'JSON') {
 /**
  * Imports a motion document (from importMotionFile); the subdivision options are kept. `mesh`
  * (a glTF file's own object, {kind, data}) becomes the object, in the same undoable edit.
+ * `fit` ({scheme}: the scheme its control poses were fitted for, or null) marks a fitted
+ * document, loaded by the command loadFit (labelled with its control-pose count).
  */
-function importDocument(app, doc, fileName, mesh = null) {
+function importDocument(app, doc, fileName, mesh = null, fit = null) {
   let motion;
   try {
     motion = new app.wasm.Motion(doc, app.motion.options());
@@ -246,22 +253,19 @@ function importDocument(app, doc, fileName, mesh = null) {
     app.parts.notices.show(`Import failed, nothing was changed: ${fileName}: ${e.message}`);
     return false;
   }
-  const ok = replaceMotion(app, motion, mesh);
-  if (ok) app.ui?.toast(`${fileName}: ${motion.poseCount} control poses (${motion.closed ? 'cycle' : 'open'})`);
+  const what = `${motion.poseCount} control poses (${motion.closed ? 'cycle' : 'open'})`;
+  let ok;
+  if (fit) {
+    motion.free();
+    ok = app.run('loadFit', doc, fit.scheme, mesh) === true;
+  } else ok = replaceMotion(app, motion, mesh);
+  if (ok) app.ui?.toast(`${fileName}: ${what}`);
   return ok;
 }
 
 /** Replaces the motion by `motion` as one undoable edit (the view frames the new poses). */
 function replaceMotion(app, motion, mesh = null) {
-  app.parts.session.edit(() => {
-    app.setMotion(motion);
-    if (mesh) {
-      app.setImported(mesh);
-      app.updateView({ object: 'obj' });
-      app.viewer.meshesChanged();
-    }
-    app.parts.viewpoint.fit();
-  });
+  app.parts.session.edit(() => showImported(app, motion, mesh));
   return true;
 }
 
