@@ -13,7 +13,7 @@
 //
 // The first frame needs only the renderer's wasm module (editor/modules.js): the dock, its views
 // and the analysis module are fetched when a view is first opened (editor/dock-host.js).
-import { Viewer } from './figure/viewer.js';
+import { Viewer, newModel } from './figure/viewer.js';
 import { buildUi } from './editor/ui.js';
 import { renderModule, glModule, analysisModule } from './editor/modules.js';
 import notices from './editor/notices.js';
@@ -112,23 +112,7 @@ export class App {
   /** @type {any} the wasm Motion being edited (one owner: replaced only through setMotion). */
   #motion = null;
   /** @type {ViewState} */
-  #view = {
-    scene: DEFAULT_SCENE,
-    object: 'scene',
-    strobe: 64,
-    showStrobe: true,
-    showControl: true,
-    showTrajectories: true,
-    showPolyscrew: false,
-    showPolygon: true,
-    showTriads: true,
-    showPoseNumbers: true,
-    gizmoLocal: false,
-    showGrid: true,
-    snap: false,
-    theme: 'auto',
-    dock: '',
-  };
+  #view = { ...newModel(DEFAULT_SCENE).view, showPoseNumbers: true, gizmoLocal: false, snap: false, theme: 'auto', dock: '' };
   /** @type {Playback} (t is unknown until the first motion: figure/viewer.js playTime derives it from u) */
   #anim = { playing: false, u: 0, t: undefined, tu: undefined, speed: 1, loop: true, visible: false };
   #selected = -1;

@@ -13,7 +13,7 @@
 import { VIEW_IDS } from '../../dock/index.js';
 import { History } from '../../editor/session.js';
 import { applyStep } from '../apply.js';
-import { el } from '../../dom.js';
+import { el, button } from '../../dom.js';
 import { newDraftId, saveDraft } from '../drafts.js';
 import { lessonFromLink, lessonLink } from '../link.js';
 import { MAX_LESSON_BYTES } from '../format.js';
@@ -128,17 +128,6 @@ export function createLessonEditor(app, player) {
   const history = new History();
   /** The merge key and history version of the last edit (a run of typing is one undo step). */
   let last = { key: '', version: -1 };
-
-  function button(text, label, onClick, cls = '') {
-    const b = el('button', { class: cls }, text);
-    b.type = 'button';
-    if (label) {
-      b.title = label;
-      b.setAttribute('aria-label', label);
-    }
-    b.addEventListener('click', onClick);
-    return b;
-  }
 
   /**
    * Changes the lesson by `f(doc)` as one undo step named `label`. `merge`: a key that folds a
