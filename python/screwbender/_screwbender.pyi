@@ -142,6 +142,14 @@ class Motion:
         """Control pose ``i``, ``(7,)``."""
     def set_pose(self, i: int, pose: PoseArray) -> None:
         """Replaces control pose ``i`` (``(7,)`` or ``(4, 4)``)."""
+    def insert_pose(self, i: int, pose: Optional[PoseArray] = None) -> int:
+        """Inserts a pose between control poses ``i`` and ``i + 1`` and returns its index.
+
+        Without ``pose``, the screw midpoint ``screw(P_i, 0.5, P_{i+1})`` (a cycle's last pose is
+        followed by its first; after an open motion's last pose a pose must be given).
+        Raises ``ValueError`` naming the element, and changes nothing, on bad input."""
+    def remove_pose(self, i: int) -> None:
+        """Removes control pose ``i`` (a motion keeps at least 2 poses)."""
     closed: bool
     name: Optional[str]
     times: Optional[list[float]]

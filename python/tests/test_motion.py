@@ -191,3 +191,28 @@ def test_split_then_tweak_is_accepted_and_reported_as_split():
 def test_pose_count_is_the_number_of_control_poses():
     m = sb.Motion(P)
     assert m.pose_count == len(m) == 6
+
+
+def test_insert_and_remove_pose_as_the_js_api_does():
+    m = sb.Motion(P, closed=True)
+    before = m.poses.copy()
+    assert m.insert_pose(5) == 6  # after a cycle's last pose: the screw midpoint to the first
+    assert len(m) == 7
+    np.testing.assert_allclose(m.pose(6), sb.screw(before[5], 0.5, before[0]), rtol=0, atol=1e-15)
+    m.remove_pose(-1)
+    assert np.array_equal(m.poses, before)
+    given = before[2] + np.array([0.5, 0, 0, 0, 0, 0, 0])
+    assert m.insert_pose(1, given) == 2
+    np.testing.assert_array_equal(m.pose(2), given)
+    # Bad input: the element named, nothing changed.
+    m = sb.Motion(P[:2], closed=False)
+    kept = m.poses.copy()
+    with pytest.raises(ValueError, match="index"):
+        m.insert_pose(1)  # an open motion's last pose has no successor
+    with pytest.raises(ValueError):
+        m.remove_pose(0)  # two poses at least
+    with pytest.raises(IndexError, match="index"):
+        m.remove_pose(2)
+    with pytest.raises(ValueError, match="pose"):
+        m.insert_pose(0, [1, 2, 3])
+    assert np.array_equal(m.poses, kept)

@@ -440,6 +440,23 @@ impl PyMotion {
         self.edit(|m| m.set_pose(k, pose))
     }
 
+    /// Inserts a pose between control poses `i` and `i + 1` and returns its index, `i + 1`
+    /// (negative `i` counts from the end). Without `pose`, inserts the screw midpoint
+    /// `screw(P_i, ½, P_{i+1})` (a cycle's last pose is followed by its first; after an open
+    /// motion's last pose a pose must be given).
+    #[pyo3(signature = (i, pose=None))]
+    fn insert_pose(&mut self, i: isize, pose: Option<&Bound<'_, PyAny>>) -> PyResult<usize> {
+        let k = self.index(i)?;
+        let pose = pose.map(|p| pose_from(p, "pose")).transpose()?;
+        self.inner.insert_pose(k, pose).map_err(value_error)
+    }
+
+    /// Removes control pose `i` (negative `i` counts from the end; a motion keeps at least 2).
+    fn remove_pose(&mut self, i: isize) -> PyResult<()> {
+        let k = self.index(i)?;
+        self.edit(|m| m.remove_pose(k))
+    }
+
     /// Whether the poses form a cycle.
     #[getter]
     fn get_closed(&self) -> bool {
