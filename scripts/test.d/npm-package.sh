@@ -19,12 +19,12 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../lib.sh"
 cd "$REPO_ROOT"
 
-# The math module's budget (the main entry): 151 000 bytes gzip (docs/speed/history.md says why
+# The math module's budget (the main entry): 152 000 bytes gzip (docs/speed/history.md says why
 # it is no longer 150 000). It holds the motion API only;
 # file export/import, the comparison methods, the three.js keyframe tracks and the teaching
 # views' functions are in the `screwbender/full` entry (its own module, reported, not budgeted:
 # who imports it asked for those), the renderer in `screwbender/viewer` (scripts/viewer-size.sh).
-WASM_GZIP_BUDGET=${WASM_GZIP_BUDGET:-151000}
+WASM_GZIP_BUDGET=${WASM_GZIP_BUDGET:-152000}
 VITE_VERSION=7.3.8
 TYPESCRIPT_VERSION=5.9.3
 TYPES_NODE_VERSION=20.19.43
