@@ -185,7 +185,7 @@ fi
 # renderer), for developers who want those without the playground. A module of its own, so that
 # the main entry stays light; -Os like the main module (speed matters more than a few KB here).
 if [[ ${FULL:-1} == 1 ]]; then
-  start_module full export,methods,tracks,teaching "$PKG_DIR/full" -Os node
+  start_module full export,methods,tracks,teaching,fit "$PKG_DIR/full" -Os node
 fi
 wait_modules
 

@@ -14,7 +14,7 @@
 #
 #   www/pkg-webgpu/  features webgpu,files: the first frame (the <screw-bender> figure's module)
 #   www/pkg-gl/      features webgl,files: where WebGPU has no usable adapter (or ?backend=webgl2)
-#   www/pkg-full/    features export,methods,tracks,teaching, no renderer: the analysis views,
+#   www/pkg-full/    features export,methods,tracks,teaching,fit, no renderer: the analysis views,
 #                    fetched when first used (www/js/editor/modules.js)
 set -euo pipefail
 # shellcheck source=scripts/lib.sh
@@ -31,7 +31,7 @@ build() {
 
   ./scripts/wasm-module.sh webgpu,files "$WWW_DIR/pkg-webgpu" -Oz
   ./scripts/wasm-module.sh webgl,files "$WWW_DIR/pkg-gl" -Oz
-  ./scripts/wasm-module.sh export,methods,tracks,teaching "$WWW_DIR/pkg-full" -Os
+  ./scripts/wasm-module.sh export,methods,tracks,teaching,fit "$WWW_DIR/pkg-full" -Os
   # www/pkg/ is no module of the page's (nothing imports it): a stale copy is not served.
   rm -rf "$WWW_DIR/pkg"
 

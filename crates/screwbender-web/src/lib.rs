@@ -27,7 +27,7 @@ pub mod convert;
 mod export;
 #[cfg(feature = "files")]
 mod files;
-#[cfg(feature = "files")]
+#[cfg(feature = "fit")]
 mod fit;
 #[cfg(feature = "methods")]
 mod methods;
@@ -44,7 +44,7 @@ mod types;
 pub use analysis::timing_map;
 #[cfg(feature = "files")]
 pub use files::import_motion_file_js;
-#[cfg(feature = "files")]
+#[cfg(feature = "fit")]
 pub use fit::fit_poses_js;
 #[cfg(feature = "methods")]
 pub use methods::methods;
