@@ -179,6 +179,12 @@ test(`${BACKEND}: with the view focused, keys select, move and rotate a pose; un
   assert.deepEqual(problems, []);
 });
 
+/** An open motion of 5 control poses, as fitPoses returns one. */
+const FITTED = {
+  closed: false,
+  poses: [0, 1, 2, 3, 4].map((i) => ({ origin: [i, 0.5 * Math.sin(i), 0], rotation: [Math.cos(0.2 * i), 0, 0, Math.sin(0.2 * i)] })),
+};
+
 // Every command of editor/commands.js, as a page would run it: [name, args, the Undo menu's label].
 // `prepare` runs first (no command of its own: a selection).
 const COMMAND_CASES = [
@@ -191,6 +197,8 @@ const COMMAND_CASES = [
   ['insertPose', [], 'Insert a pose after pose 0', 0],
   ['deletePose', [], 'Delete pose 1', 1],
   ['setPose', [0, { origin: [0.5, 0.25, 0], rotation: [1, 0, 0, 0] }], 'Move pose 0'],
+  // What the import dialog's Fit runs: the fitted control poses, with the B-spline scheme.
+  ['loadFit', [FITTED, 'bspline'], 'Fit 5 control poses'],
   ['setTimes', [], 'Retime the keys'],
   ['setVelocities', [], 'Set the key velocities'],
   ['lessonStep', [{ title: 'Fewer copies', display: { strobe: 7 } }], 'Lesson: Fewer copies'],
