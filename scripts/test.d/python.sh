@@ -2,9 +2,10 @@
 # Stage: the Python package `screwbender` (python/, the PyO3 crate crates/screwbender-py).
 #
 # Installs a virtual environment in .venv/ (ignored) with the pinned python/requirements-dev.txt
-# (maturin, zig, numpy, pytest, modern_robotics, pytransform3d, the notebook stack), builds into
-# artifacts/python/ the one wheel (release, stable ABI: tag cp39-abi3, linked by zig against
-# glibc 2.28: tag manylinux_2_28, both checked) and the sdist, installs that wheel into the venv,
+# (maturin, zig, numpy, pytest, modern_robotics, pytransform3d, the notebook stack), makes in
+# artifacts/python/ the sdist and builds the one wheel from it, as pip builds an sdist (release,
+# stable ABI: tag cp39-abi3, linked by zig against glibc 2.28: tag manylinux_2_28, both checked;
+# the figure bundle inside): every test below then also tests the sdist. Installs that wheel into the venv,
 # checks that its SIMD lanes are inlined (scripts/check-lanes-inlined.sh), and runs pytest on
 # python/tests: the CLI's poses bit for bit (the CLI as the native test stage built it:
 # scripts/lib.sh `test_cli`), the reference libraries, bad input, files, the notebook figure,
@@ -16,9 +17,7 @@
 # package supports (3.9) and the newest one on the machine (pyenv's, part of the machine image, or
 # pythonX.Y on PATH), made with python/requirements-compat.txt while the wheel builds: the
 # package's tests on each but the notebook and browser ones (they test the Jupyter stack and the
-# JS bundle, the same on every CPython). Last, the sdist builds a wheel in the newest one (cargo
-# offline, its dependencies from this build's target directory) and that wheel is imported and
-# used. With CI=true a missing interpreter fails
+# JS bundle, the same on every CPython). With CI=true a missing interpreter fails
 # the stage; elsewhere it is a warning and that interpreter is left out.
 #
 #   PYTHON=python3.12 scripts/test.d/python.sh    # another interpreter for .venv (default python3)
@@ -82,27 +81,6 @@ test_wheel_on() {
   )
 }
 
-# test_sdist_on PYTHON: `pip wheel` of the sdist in PYTHON's venv (made by test_wheel_on):
-# maturin from PyPI in pip's build isolation, cargo offline with this build's target directory
-# (only the project's two crates compile again); the wheel it makes is installed and used.
-test_sdist_on() {
-  local label dir built
-  label=$("$1" -c 'import platform; print(platform.python_version())')
-  dir=$compat/$label
-  timed "pip wheel the sdist (CPython $label)" env CARGO_NET_OFFLINE=true \
-    CARGO_TARGET_DIR="$(cargo_target_dir)" MATURIN_PEP517_ARGS="$MATURIN_ARGS" \
-    PATH="$venv/bin:$PATH" "$dir/bin/pip" wheel --quiet --disable-pip-version-check --no-deps \
-    -w "$compat/from-sdist" "$sdist"
-  built=$(ls "$compat"/from-sdist/screwbender-*.whl)
-  "$dir/bin/pip" install --quiet --disable-pip-version-check --force-reinstall --no-deps "$built"
-  (cd / && "$dir/bin/python" -c '
-import screwbender as sb
-m = sb.Motion.from_preset("l_cycle_rotated", levels=3)
-rows = m.subdivide()
-assert rows.shape == (len(m) * 8, 7), rows.shape
-print("from the sdist:", sb.__file__, rows.shape)')
-  log "sdist: $(basename "$built") built from $(basename "$sdist") and imported"
-}
 ./scripts/python-env.sh
 
 # The clean venvs of the oldest and the newest CPython, made beside the builds below (their
@@ -131,21 +109,28 @@ fi
 
 rm -rf artifacts/python
 mkdir -p artifacts/python
-# maturin reads python/pyproject.toml (which names the crate's Cargo.toml) from its directory. It
-# runs zig as `python3 -m ziglang`: the venv's bin first on PATH. MATURIN_ARGS: also the sdist
-# test's (as MATURIN_PEP517_ARGS), so that its build reuses this one's compiled dependencies.
-MATURIN_ARGS="--zig --compatibility manylinux_2_28"
-# zig's linker drops the whole symbol table for the strip-debug flag that cargo's release profile
-# passes by default (`strip = "debuginfo"`), and the lanes check below reads the symbols: no
-# strip for these builds (the sdist test's included, so that it reuses this build).
-export CARGO_PROFILE_RELEASE_STRIP=none
-timed "maturin build (abi3, manylinux_2_28, zig)" bash -c 'cd python && PATH="$1:$PATH" \
-  "$1/maturin" build --release $2 --quiet -o ../artifacts/python --interpreter "$1/python"' \
-  _ "$venv/bin" "$MATURIN_ARGS"
-timed "maturin sdist" bash -c 'cd python && "$1" sdist         -o ../artifacts/python' _ "$venv/bin/maturin"
-wheel=$(ls artifacts/python/screwbender-*.whl)
+# maturin reads python/pyproject.toml (which names the crate's Cargo.toml) from its directory.
+timed "maturin sdist" bash -c 'cd python && "$1" sdist -o ../artifacts/python' _ "$venv/bin/maturin"
 sdist=$(ls artifacts/python/screwbender-*.tar.gz)
+# The wheel from the sdist, as `pip install screwbender-*.tar.gz` builds it (maturin's PEP 517
+# backend, the release profile), in this build's target directory (the dependencies the other
+# stages compiled are reused where their flags agree). Without pip's build isolation: the venv's
+# pinned maturin, which finds zig (`python3 -m ziglang`, the venv's bin first on PATH) beside it,
+# where an isolated build environment has maturin but not zig. No cache: pip would otherwise
+# hand back a wheel it built before from an sdist of the same bytes.
+# zig's linker drops the whole symbol table for the strip-debug flag that cargo's release profile
+# passes by default (`strip = "debuginfo"`), and the lanes check below reads the symbols: no strip.
+timed "pip wheel the sdist (abi3, manylinux_2_28, zig)" env CARGO_PROFILE_RELEASE_STRIP=none \
+  CARGO_TARGET_DIR="$(cargo_target_dir)" MATURIN_PEP517_ARGS="--zig --compatibility manylinux_2_28" \
+  PATH="$venv/bin:$PATH" "$venv/bin/pip" wheel --quiet --disable-pip-version-check --no-deps --no-cache-dir \
+  --no-build-isolation -w artifacts/python "$sdist"
+wheel=$(ls artifacts/python/screwbender-*.whl)
 check_wheel_tag "$wheel"
+if [[ -f python/screwbender/static/figure.js ]]; then
+  listing=$("$venv/bin/python" -m zipfile -l "$wheel")
+  [[ $listing == *screwbender/static/figure.js* ]] ||
+    die "$(basename "$wheel") (built from $(basename "$sdist")) has no figure bundle"
+fi
 timed "pip install the wheel" "$venv/bin/pip" install --quiet --disable-pip-version-check \
   --force-reinstall --no-deps "$wheel"
 
@@ -154,14 +139,13 @@ timed "pip install the wheel" "$venv/bin/pip" install --quiet --disable-pip-vers
 module=$(cd / && "$venv/bin/python" -c 'import screwbender._screwbender as m; print(m.__file__)')
 ./scripts/check-lanes-inlined.sh "$module"
 
-# The wheel on the oldest and the newest CPython, and the sdist's build, beside the main pytest
+# The wheel on the oldest and the newest CPython, beside the main pytest
 # (whose notebook and browser tests leave a core idle most of the time); their output follows it.
 wait "$compat_pid" || { cat "$compat_log" >&2; die "the clean venvs could not be made"; }
 (
   for py in $oldest $newest; do
     test_wheel_on "$py"
   done
-  if [[ -n $newest ]]; then test_sdist_on "$newest"; fi
 ) >>"$compat_log" 2>&1 &
 compat_pid=$!
 
@@ -174,11 +158,11 @@ timed "pytest" "$venv/bin/python" -m pytest -q -p no:cacheprovider \
   --junit-xml="$REPO_ROOT/artifacts/python/pytest.xml" --rootdir="$REPO_ROOT/python/tests" . || rc=$?
 cd "$REPO_ROOT"
 
-header "the wheel on the oldest and the newest CPython, and the sdist"
+header "the wheel on the oldest and the newest CPython"
 compat_rc=0
 wait "$compat_pid" || compat_rc=$?
 cat "$compat_log" >&2
 ((rc == 0)) || die "pytest python/tests failed"
-((compat_rc == 0)) || die "the wheel on the oldest or the newest CPython, or the sdist, failed"
-log "python: $(basename "$wheel") and $(basename "$sdist") built and tested" \
+((compat_rc == 0)) || die "the wheel on the oldest or the newest CPython failed"
+log "python: $(basename "$wheel"), built from $(basename "$sdist"), tested" \
   "(wheel $(stat -c %s "$wheel") B, sdist $(stat -c %s "$sdist") B)"
