@@ -110,8 +110,14 @@ test('every lesson opens and every step applies without errors; math is MathML',
         const c = card.getBoundingClientRect();
         const s = L.spot();
         const covered = !!s && s.x + s.w / 2 > c.left && s.x + s.w / 2 < c.right && s.y + s.h / 2 > c.top && s.y + s.h / 2 < c.bottom;
-        return { step: L.step, covered, dollars: card.querySelector('.text').textContent.includes('$'), hidden: card.hidden };
+        // The ring pulses as it points at a new target, and stops within 5 s (WCAG 2.2.2).
+        const pulse = s ? document.getElementById('lesson-spot').getAnimations().map((a) => ({ t: a.currentTime, end: a.effect.getComputedTiming().endTime, state: a.playState })) : [];
+        return { step: L.step, covered, pulse, dollars: card.querySelector('.text').textContent.includes('$'), hidden: card.hidden };
       }, i);
+      for (const a of info.pulse) {
+        assert.ok(a.end <= 5000, `${id} step ${i}: the highlight pulses for ${a.end} ms (at most 5 s)`);
+        assert.ok(a.state === 'running' && a.t < 1000, `${id} step ${i}: the highlight's pulse did not start again (${a.state} at ${a.t} ms)`);
+      }
       assert.equal(info.step, i);
       assert.equal(info.covered, false, `${id} step ${i}: the card covers its own highlight`);
       assert.equal(info.hidden, false);

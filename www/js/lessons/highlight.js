@@ -47,8 +47,14 @@ export function createHighlight(app, { card, proxy }) {
     cancelAnimationFrame(raf);
     lastKey = '';
     setProxy(null);
-    if (h) place();
-    else spotEl.hidden = true;
+    if (h) {
+      place();
+      // A new target pulses again (css/lessons.css: a few pulses, then a steady ring).
+      for (const a of spotEl.getAnimations()) {
+        a.currentTime = 0;
+        a.play();
+      }
+    } else spotEl.hidden = true;
   }
 
   /** The DOM node of a control or panel target, or null (a pose or the gizmo is no node). */
