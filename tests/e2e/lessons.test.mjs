@@ -213,9 +213,8 @@ test('lesson 7 as a student does it: the dialog opens on the measured poses; Red
   const fb = card.locator('.feedback');
   assert.match(await fb.textContent(), /^Not yet: 3[01] control poses; wanted a count ≤ 12\./);
   assert.equal(await fb.getAttribute('class'), 'feedback no again');
-  // Back and Next again: the dialog opens once more; the fit of 12 control poses, then Import.
-  await card.locator('button.prev').click();
-  await card.locator('button.next').click();
+  // The card's Measured poses… opens the dialog once more: the fit of 12 control poses, Import.
+  await card.getByRole('button', { name: 'Measured poses…' }).click();
   await dialog.waitFor();
   await dialog.locator('#reduce-fit').check();
   await dialog.locator('#reduce-fit-n').fill('12');

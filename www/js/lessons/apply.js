@@ -36,7 +36,15 @@ export function applyStep(app, s, setTarget) {
   setTarget(s.highlight ?? null);
   app.ui.refresh();
   app.viewer.requestDraw();
-  // The step's measured poses go through the page's own import of many poses: its dialog
-  // offers to keep, thin or fit them, as for a file (editor/files.js importPoses).
-  if (s.samples) app.parts.files.importPoses(stepSamples(s).document, `“${s.title}”`);
+  if (s.samples) offerSamples(app, s);
+}
+
+/**
+ * Hands step `s`'s measured poses to the page's own import of many poses: its dialog offers to
+ * keep, thin or fit them, as for a file (editor/files.js importPoses). Resolves true when
+ * something was imported.
+ * @param {import('../app.js').App} app
+ */
+export function offerSamples(app, s) {
+  return app.parts.files.importPoses(stepSamples(s).document, `“${s.title}”`);
 }

@@ -4,6 +4,7 @@ import { renderText } from './format.js';
 import { evaluateExercise } from './checks.js';
 import { writeProgress } from './progress.js';
 import { stepSamples } from './samples.js';
+import { offerSamples } from './apply.js';
 import { el } from '../dom.js';
 
 /**
@@ -46,6 +47,14 @@ export function createExercise(app, box, bar, st, fit = () => {}) {
     const checkBtn = el('button', { class: 'check primary' }, 'Check');
     checkBtn.addEventListener('click', () => check());
     row.append(checkBtn);
+    // A step's measured poses: the import dialog again (it opened with the step).
+    const s = st.lesson.steps[st.step];
+    if (s.samples) {
+      const again = el('button', { class: 'samples' }, 'Measured poses…');
+      again.title = 'Open the import dialog on this step\'s measured poses again';
+      again.addEventListener('click', () => offerSamples(app, s));
+      row.append(again);
+    }
     if (x.hints?.length) {
       const hintBtn = el('button', { class: 'hint' }, 'Hint');
       hintBtn.addEventListener('click', () => showHint(x));
