@@ -143,6 +143,12 @@ for (const size of SIZES) {
           while (sb.frames() <= f0) await frame();
         }, i);
         const at = `${label} ${name} step ${i + 1}`;
+        // A step's measured poses open the import dialog: closed by Esc, as a student would to
+        // read the card (lessons.test.mjs answers it).
+        if (await page.locator('#reduce-dialog').count()) {
+          await page.keyboard.press('Escape');
+          await page.locator('#reduce-dialog').waitFor({ state: 'detached' });
+        }
         const g = await page.evaluate(inspectStep);
         steps++;
         if (g.highlight) {

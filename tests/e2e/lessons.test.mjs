@@ -28,12 +28,18 @@ after(async () => {
   await play?.close();
 });
 
-/** Runs `f(player, app, arg)` in the page (f must be self-contained). */
-const inPage = (f, arg) => page.evaluate(async ([src, a]) => {
+/** Runs `f(player, app, arg)` in the page (f must be self-contained, or use answerImport). */
+const inPage = (f, arg) => page.evaluate(async ([src, a, answerSrc]) => {
   const L = await window.screwbender.lessons;
   // eslint-disable-next-line no-new-func
-  return new Function('L', 'app', 'a', `return (${src})(L, app, a);`)(L, window.screwbender.app, a);
-}, [f.toString(), arg]);
+  return new Function('L', 'app', 'a', `${answerSrc}\nreturn (${src})(L, app, a);`)(L, window.screwbender.app, a);
+}, [f.toString(), arg, answerImport.toString()]);
+
+/**
+ * The messages the page showed, less the notes on what an import of a step's measured poses
+ * kept, fitted or (moving on) cancelled: the page tells a student that, as for a file.
+ */
+const pageErrors = async () => (await page.evaluate(() => window.screwbender.errors())).filter((m) => !/^“[^”]+”: (kept|fitted|import cancelled)/.test(m));
 
 /** Opens lesson `name` from its first step; asserts it opened. */
 async function openLesson(name) {
@@ -94,7 +100,34 @@ const ANSWERS = {
   'methods:2': { wrong: (L) => L.choose(0), right: (L) => L.choose(3) },
   'methods:3': { wrong: (L, app) => app.run('setScheme', 'bspline'), right: (L, app) => app.run('setScheme', 'fourpoint') },
   'methods:4': { wrong: (L) => L.choose(0), right: (L) => L.choose(1) },
+  // The measured poses' import dialog is open: Reduce (every k-th, the dialog's default) keeps
+  // too many noisy poses; a fit of 12 control poses passes.
+  'fitting:2': { wrong: () => answerImport({ how: 'every' }), right: (L) => (L.go(L.step), answerImport({ how: 'fit', controls: 12, robust: 'huber' })) },
+  // Outliers: least squares (robust loss none) is dragged off the inliers; Huber is not. The
+  // wrong answer's fit closes the dialog, so the step is applied again for the right one.
+  'fitting:3': {
+    wrong: () => answerImport({ how: 'fit', controls: 14, robust: 'none' }),
+    right: (L) => (L.go(L.step), answerImport({ how: 'fit', controls: 14, robust: 'huber' })),
+  },
+  'fitting:4': { wrong: (L) => L.choose(1), right: (L) => L.choose(0) },
 };
+
+/**
+ * In the page: answers the open import dialog as the options `o` say (`how`: a choice's value;
+ * for a fit its number of `controls` and its `robust` loss) and resolves once it has closed.
+ */
+function answerImport(o) {
+  const d = document.getElementById('reduce-dialog');
+  if (!d) throw new Error('no import dialog is open');
+  d.querySelector(`#reduce-${o.how}`).click();
+  if (o.controls) d.querySelector('#reduce-fit-n').value = String(o.controls);
+  if (o.robust) d.querySelector('#reduce-robust').value = o.robust;
+  d.querySelector('button[type=submit]').click();
+  return new Promise((resolve) => {
+    const wait = () => (document.getElementById('reduce-dialog') ? setTimeout(wait, 20) : resolve());
+    wait();
+  });
+}
 
 test('every lesson opens and every step applies without errors; math is MathML', async () => {
   for (const { file, id } of LESSONS) {
@@ -124,7 +157,7 @@ test('every lesson opens and every step applies without errors; math is MathML',
       assert.equal(info.dollars, false, `${id} step ${i}: unrendered $ in the text`);
       await waitFrames(page, 1);
     }
-    const errs = await page.evaluate(() => window.screwbender.errors());
+    const errs = await pageErrors();
     assert.deepEqual(errs, [], `${id}: ${errs.join(' | ')}`);
   }
   // Every lesson has some typeset math, and no CSP violation happened (MathML needs no styles).
@@ -163,7 +196,43 @@ test('every exercise fails on a scripted wrong answer and passes on a right one;
     }
   }
   assert.deepEqual([...seen].sort(), Object.keys(ANSWERS).sort(), 'every scripted answer belongs to an exercise');
-  assert.deepEqual(await page.evaluate(() => window.screwbender.errors()), []);
+  assert.deepEqual(await pageErrors(), []);
+});
+
+test('lesson 7 as a student does it: the dialog opens on the measured poses; Reduce fails Check, a fit of 12 passes', async () => {
+  await inPage((L) => {
+    localStorage.removeItem('screwbender.lesson.fitting');
+    return L.open('07-fitting', { resume: false, seed: 5 });
+  });
+  const dialog = page.locator('#reduce-dialog');
+  const card = page.locator('#lesson');
+  // Steps 1 and 2 by Next; step 3 opens the import dialog on this student's 240 poses.
+  await card.locator('button.next').click();
+  await card.locator('button.next').click();
+  await dialog.waitFor();
+  assert.match(await dialog.locator('h2').textContent(), /^240 poses in /);
+  // Reduce (every k-th, the dialog's default): too many control poses, still noisy.
+  await dialog.locator('#reduce-every').check();
+  await dialog.getByRole('button', { name: 'Import' }).click();
+  await dialog.waitFor({ state: 'detached' });
+  await card.locator('button.check').click();
+  const fb = card.locator('.feedback');
+  assert.match(await fb.textContent(), /^Not yet: 3[01] control poses; wanted a count ≤ 12\./);
+  assert.equal(await fb.getAttribute('class'), 'feedback no again');
+  // The card's Measured poses… opens the dialog once more: the fit of 12 control poses, Import.
+  await card.getByRole('button', { name: 'Measured poses…' }).click();
+  await dialog.waitFor();
+  await dialog.locator('#reduce-fit').check();
+  await dialog.locator('#reduce-fit-n').fill('12');
+  await dialog.locator('#reduce-fit-run').click();
+  await page.waitForFunction(() => /12 control poses fitted to 240 poses/.test(document.getElementById('reduce-report')?.textContent ?? ''));
+  await dialog.getByRole('button', { name: 'Import' }).click();
+  await dialog.waitFor({ state: 'detached' });
+  await card.locator('button.check').click();
+  await page.waitForFunction(() => document.querySelector('#lesson .feedback')?.classList.contains('ok'));
+  const r = await inPage((L, app) => ({ n: app.motion.poseCount, scheme: app.motion.options().scheme, solved: L.progress('fitting').solved }));
+  assert.deepEqual(r, { n: 12, scheme: 'bspline', solved: [2] });
+  assert.deepEqual(await pageErrors(), []);
 });
 
 test('the multiple-choice answers agree with what the wasm API measures', async () => {
@@ -328,7 +397,7 @@ test('a pasted lesson opens; URLs outside lessons/ are refused; L and Esc open a
   await inPage((L) => L.close());
   for (const bad of ['../index', 'https://example.com/x.json', '/js/main.js', 'lessons/../js/x.json']) {
     assert.equal(await inPage((L, app, b) => L.open(b), bad), false, bad);
-    assert.match((await page.evaluate(() => window.screwbender.errors())).at(-1), /Nothing was changed/);
+    assert.match((await pageErrors()).at(-1), /Nothing was changed/);
   }
 });
 
@@ -384,7 +453,7 @@ test("a teacher's dropped lesson: pose checks, hints one at a time, feedback on 
   assert.equal(await page.locator('#lesson button.next').textContent(), 'Close ✓');
   await page.locator('#lesson button.next').click();
   assert.equal(await page.locator('#lesson').isHidden(), true);
-  assert.deepEqual(await page.evaluate(() => window.screwbender.errors().filter((e) => !/Nothing was changed/.test(e))), []);
+  assert.deepEqual((await pageErrors()).filter((e) => !/Nothing was changed/.test(e)), []);
 });
 
 test('?lesson= opens a lesson and resumes it after a reload with its solved exercises; ?tour=1 points at the controls', async () => {

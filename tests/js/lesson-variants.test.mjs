@@ -11,6 +11,7 @@ import { fileURLToPath } from 'node:url';
 import { drawParams, fnv1a, mulberry32, paramValues, substitute } from '../../www/js/lessons/variants.js';
 import { LessonError, lessonProblems, lessonVariant, parseLesson, validateLesson } from '../../www/js/lessons/format.js';
 import { evaluateCheck } from '../../www/js/lessons/checks.js';
+import { generateSamples, stepSamples } from '../../www/js/lessons/samples.js';
 import { variantSeed } from '../../www/js/lessons/lms.js';
 
 const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
@@ -261,5 +262,83 @@ describe('a lesson variant', () => {
       assert.ok(v.steps[k].exercise.task.includes(`$h = ${h}$`), v.steps[k].exercise.task);
       assert.ok(!JSON.stringify(v.steps[k]).includes('{{'), 'a reference was left');
     }
+  });
+});
+
+describe('measured poses (samples) and the fit checks', () => {
+  const spec = { motion: 'helix', count: 400, duration: 10, noise: 0.05, angleNoise: 2, outliers: 0.05, outlierSize: 1.5 };
+  const clean = generateSamples({ ...spec, noise: 0, angleNoise: 0, outliers: 0 }, 1);
+
+  it('are the same for the same seed, other for another, with the asked noise and outliers', () => {
+    const a = generateSamples(spec, 7);
+    assert.deepEqual(generateSamples(spec, 7), a);
+    assert.notDeepEqual(generateSamples(spec, 8).document.poses, a.document.poses);
+    const { poses, times } = a.document;
+    assert.equal(poses.length, 400);
+    assert.equal(times[0], 0);
+    assert.equal(times.at(-1), 10);
+    assert.equal(a.outlier.filter(Boolean).length, 20);
+    // The inliers' offsets from the noise-free motion: N(0, 0.05²) per coordinate.
+    const d = [];
+    poses.forEach((p, i) => {
+      if (!a.outlier[i]) p.origin.forEach((x, k) => d.push(x - clean.document.poses[i].origin[k]));
+    });
+    const sd = Math.sqrt(d.reduce((s, x) => s + x * x, 0) / d.length);
+    assert.ok(Math.abs(sd - 0.05) < 0.005, `deviation ${sd}`);
+    // Every outlier is 1.5 ± 5 noise deviations off.
+    poses.forEach((p, i) => {
+      if (!a.outlier[i]) return;
+      const off = Math.hypot(...p.origin.map((x, k) => x - clean.document.poses[i].origin[k]));
+      assert.ok(Math.abs(off - 1.5) < 0.25, `outlier ${i} is ${off} off`);
+    });
+    for (const p of poses) assert.ok(Math.abs(Math.hypot(...p.rotation) - 1) < 1e-12);
+  });
+
+  it('a student gets their own noise: the variant seeds the samples by the seed and the step', () => {
+    const l = JSON.parse(read('07-fitting.json'));
+    validateLesson(l, ctx);
+    const s = l.steps.findIndex((x) => x.samples);
+    const a = lessonVariant(l, 11).lesson.steps[s];
+    assert.equal(lessonVariant(l, 11).lesson.steps[s].samples.seed, a.samples.seed);
+    assert.notEqual(lessonVariant(l, 12).lesson.steps[s].samples.seed, a.samples.seed);
+    assert.notDeepEqual(stepSamples(a).document.poses, stepSamples(lessonVariant(l, 12).lesson.steps[s]).document.poses);
+  });
+
+  it('bad samples and fit checks name their step and field', () => {
+    const l = JSON.parse(read('07-fitting.json'));
+    const s = l.steps.findIndex((x) => x.samples);
+    l.steps[s].samples = { motion: 'spiral', count: 10, noise: -1, outliers: 0.9, colour: 1 };
+    l.steps[s].exercise.checks = [{ kind: 'controlPoses' }, { kind: 'residuals', rmsPosition: 'small' }, { kind: 'residuals', inliers: 1, maxAngle: 2 }];
+    l.steps[0].exercise = { task: 'x', checks: [{ kind: 'residuals', rmsPosition: 1 }, { kind: 'controlPoses', min: 5, max: 2 }] };
+    const problems = lessonProblems(l, ctx).map((p) => `${p.path}: ${p.message}`);
+    assert.deepEqual(problems, [
+      'steps[0].exercise.checks[0]: a residuals check needs the step to give measured poses (samples)',
+      'steps[0].exercise.checks[1].max: max is smaller than min',
+      `steps[${s}].samples.colour: unknown field (expected one of motion, count, duration, noise, angleNoise, outliers, outlierSize)`,
+      `steps[${s}].samples.motion: "spiral" is not one of helix, wave`,
+      `steps[${s}].samples.count: expected a whole number from 65 to 5000`,
+      `steps[${s}].samples.noise: expected a number ≥ 0 (scene units)`,
+      `steps[${s}].samples.outliers: expected a share from 0 to 0.5`,
+      `steps[${s}].exercise.checks[0]: give min, max or both`,
+      `steps[${s}].exercise.checks[1].rmsPosition: expected a number or {min, max}`,
+      `steps[${s}].exercise.checks[2].inliers: expected true or false`,
+    ]);
+  });
+
+  it('controlPoses counts the control poses; residuals says what it measured against what', () => {
+    const motion = { poseCount: 14, options: () => ({ scheme: 'bspline' }), toDocument: () => ({ poses: [] }) };
+    assert.deepEqual(evaluateCheck({ kind: 'controlPoses', max: 12 }, motion, null), { ok: false, got: '14 control poses', want: 'a count ≤ 12' });
+    assert.equal(evaluateCheck({ kind: 'controlPoses', min: 4, max: 14 }, motion, null).ok, true);
+    const samples = generateSamples(spec, 3);
+    let given = null;
+    const analysis = { measureFit: (doc, s) => ((given = s), { rmsPosition: 0.08, maxPosition: 0.3, rmsAngle: 0.01, maxAngle: 0.05 }) };
+    const r = evaluateCheck({ kind: 'residuals', inliers: true, rmsPosition: { max: 0.07 }, maxAngle: { max: 5 } }, motion, null, { samples, analysis });
+    assert.equal(given.poses.length, 380);
+    assert.equal(r.ok, false);
+    assert.equal(r.got, 'RMS distance 0.08, largest angle 2.865° from the 380 measured poses that are no outliers');
+    assert.equal(r.want, 'RMS distance ≤ 0.07, largest angle ≤ 5°');
+    const other = { ...motion, options: () => ({ scheme: 'fourpoint' }) };
+    assert.match(evaluateCheck({ kind: 'residuals', rmsPosition: 1 }, other, null, { samples, analysis }).got, /fourpoint scheme/);
+    assert.match(evaluateCheck({ kind: 'residuals', rmsPosition: 1 }, motion, null, { samples, analysis: null }).got, /not loaded yet/);
   });
 });

@@ -8,7 +8,10 @@ use wasm_bindgen::prelude::*;
 
 use super::convert::{check_keys, check_object, document_from_js, document_to_js, from_js, plain};
 use super::files::set;
-use screwbender::{fit_poses, ControlCount, Error, ErrorKind, FitMethod, FitOptions, RobustLoss};
+use screwbender::{
+    fit_poses, measure_fit, ControlCount, Error, ErrorKind, FitMethod, FitOptions, FitReport,
+    RobustLoss,
+};
 
 #[wasm_bindgen(typescript_custom_section)]
 const TS_FIT: &'static str = r#"
@@ -41,6 +44,14 @@ export interface FitReport {
   rmsDeviation: number;
   maxDeviation: number;
   iterations: number;
+}
+
+/** Options of `measureFit`. */
+export interface MeasureFitOptions {
+  /** The motion the control poses are of (default `"screwbender"`, its cubic B-spline scheme). */
+  method?: "screwbender" | "se3bspline";
+  /** Length weighing angles against distances in the deviation (default 1). */
+  radius?: number;
 }
 
 /** A fitted motion: its open document (key times spread over the samples' times) and its residuals. */
@@ -141,7 +152,61 @@ pub fn fit_poses_js(
         "robust_scale" => Error::new("options.robustScale", e.kind().clone()),
         _ => e,
     })?;
-    let r = fit.report;
+    let report = report_to_js(&fit.report);
+    let out = Object::new();
+    set(&out, "document", document_to_js(&fit.document)?);
+    set(&out, "report", report);
+    Ok(out.into())
+}
+
+/// How far the motion whose control poses (and key times) are those of `document` is from the
+/// poses of `samples` at their times: the `FitReport` a fit gives for its own result
+/// (`iterations` 0), for any motion — a fit, a reduction, poses moved by hand. Throws naming
+/// the bad element (`controls.times[2]`, `samples.poses[5]`, `options.radius`, …).
+#[wasm_bindgen(js_name = measureFit, unchecked_return_type = "FitReport")]
+pub fn measure_fit_js(
+    #[wasm_bindgen(unchecked_param_type = "MotionDocumentInput")] document: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "MotionDocumentInput")] samples: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "MeasureFitOptions | undefined")] options: JsValue,
+) -> Result<JsValue, JsError> {
+    #[derive(Deserialize)]
+    #[serde(deny_unknown_fields)]
+    struct Options {
+        method: Option<String>,
+        radius: Option<f64>,
+    }
+    let controls = document_from_js(&document).map_err(|e| e.within("controls"))?;
+    let samples = document_from_js(&samples).map_err(|e| e.within("samples"))?;
+    let o = if options.is_undefined() || options.is_null() {
+        Options {
+            method: None,
+            radius: None,
+        }
+    } else {
+        let options = plain(&options, "options")?;
+        check_object(&options, "options", "measure options", "{method, radius}")?;
+        check_keys(
+            &options,
+            &["method", "radius"],
+            "options",
+            "measure options",
+        )?;
+        from_js(&options, "options", "measure options")?
+    };
+    let method = match &o.method {
+        Some(m) => FitMethod::from_name(m).map_err(|e| e.within("options"))?,
+        None => FitMethod::ScrewBender,
+    };
+    let radius = o.radius.unwrap_or(FitOptions::default().radius);
+    let report = measure_fit(&controls, &samples, method, radius).map_err(|e| match e.path() {
+        "radius" => e.within("options"),
+        _ => e,
+    })?;
+    Ok(report_to_js(&report))
+}
+
+/// A `FitReport` as the typings spell it.
+fn report_to_js(r: &FitReport) -> JsValue {
     let report = Object::new();
     for (key, value) in [
         ("controls", r.controls as f64),
@@ -156,8 +221,5 @@ pub fn fit_poses_js(
     ] {
         set(&report, key, value.into());
     }
-    let out = Object::new();
-    set(&out, "document", document_to_js(&fit.document)?);
-    set(&out, "report", report.into());
-    Ok(out.into())
+    report.into()
 }

@@ -45,7 +45,7 @@ pub use analysis::timing_map;
 #[cfg(feature = "files")]
 pub use files::import_motion_file_js;
 #[cfg(feature = "fit")]
-pub use fit::fit_poses_js;
+pub use fit::{fit_poses_js, measure_fit_js};
 #[cfg(feature = "methods")]
 pub use methods::methods;
 pub use motion::MotionHandle;

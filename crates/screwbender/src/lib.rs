@@ -123,8 +123,8 @@ struct ReadmeDoctests;
 pub use closure::Closure;
 pub use error::{Error, ErrorKind};
 pub use fit::{
-    fit_poses, ControlCount, FitMethod, FitOptions, FitReport, FittedMotion, RobustLoss,
-    DEFAULT_FIT_ITERATIONS, FIT_LEVELS, MAX_FIT_CONTROLS, ROBUST_SCALE_FACTOR,
+    fit_poses, measure_fit, ControlCount, FitMethod, FitOptions, FitReport, FittedMotion,
+    RobustLoss, DEFAULT_FIT_ITERATIONS, FIT_LEVELS, MAX_FIT_CONTROLS, ROBUST_SCALE_FACTOR,
 };
 pub use formats::csv::{
     control_poses_csv, parse_csv_poses, poses_csv, trajectory_csv, write_poses_csv,

@@ -143,28 +143,36 @@ export async function importFiles(app, fileList) {
       mesh = null; // an animation without a readable mesh: the current object stays
     }
   }
-  // Many poses (samples of a motion, e.g. an exported CSV): ask whether to thin them.
+  return importPoses(app, doc, main.name, mesh);
+}
+
+/**
+ * Imports the poses of `doc` (read from `fileName`; `mesh`: its own object or null): more than
+ * MANY_POSES (samples of a motion, an exported CSV, a lesson's measured poses) first ask whether
+ * to keep, thin or fit them (editor/reduce-dialog.js). Resolves true when something was imported.
+ */
+async function importPoses(app, doc, fileName, mesh = null) {
   let kept = null;
   let fit = null;
   if (doc.poses.length > MANY_POSES) {
     if (document.getElementById('reduce-dialog')) {
-      app.parts.notices.show(`${main.name}: another import is waiting for an answer; nothing was changed.`);
+      app.parts.notices.show(`${fileName}: another import is waiting for an answer; nothing was changed.`);
       return false;
     }
     const radius = Math.max(1e-3, ...app.viewer.bodyPoints().map((p) => Math.hypot(...p)));
     // Fitting is the analysis module's (fetched on first use).
     const fitPoses = async (d, o) => (await app.analysis()).fitPoses(d, o);
-    const choice = await askReduction(doc, main.name, radius, app.wasm.reducePoses, fitPoses);
+    const choice = await askReduction(doc, fileName, radius, app.wasm.reducePoses, fitPoses);
     if (!choice) {
-      app.parts.notices.show(`${main.name}: import cancelled, nothing was changed.`, 'info');
+      app.parts.notices.show(`${fileName}: import cancelled, nothing was changed.`, 'info');
       return false;
     }
     doc = choice.doc;
     kept = choice.how;
     fit = choice.fit ?? null;
   }
-  const ok = importDocument(app, doc, main.name, mesh, fit);
-  if (ok && kept) app.parts.notices.show(`${main.name}: ${kept}.`, 'info');
+  const ok = importDocument(app, doc, fileName, mesh, fit);
+  if (ok && kept) app.parts.notices.show(`${fileName}: ${kept}.`, 'info');
   return ok;
 }
 
@@ -322,6 +330,7 @@ export default {
       bind: () => bindDrop(app),
       importJson: (text, fileName) => importJson(app, text, fileName),
       importDocument: (doc, fileName, mesh) => importDocument(app, doc, fileName, mesh),
+      importPoses: (doc, fileName, mesh) => importPoses(app, doc, fileName, mesh),
       importMesh: (kind, data, fileName, failure) => importMesh(app, kind, data, fileName, failure),
       exportJson: () => exportJson(app),
       exportControlCsv: (options) => exportControlCsv(app, options),

@@ -3,15 +3,19 @@
 // page's commands.
 import { tryCommand } from '../editor/commands.js';
 import { withS } from './format.js';
+import { stepSamples } from './samples.js';
 
 /**
  * Applies step `s` to `app` and points the highlight at `s.highlight` through `setTarget`.
+ * Measured poses (`samples`) open the import dialog on them once the rest is set up.
  * Its scene is the command loadPreset, its document, options, display and key times the command
  * lessonStep (editor/commands.js): undoable, named in the Undo menu. Throws (the player shows
  * the message) if the app refuses a part of it.
  * @param {import('../app.js').App} app
  */
 export function applyStep(app, s, setTarget) {
+  // An import dialog the last step's measured poses opened is answered by moving on: cancelled.
+  document.getElementById('reduce-dialog')?.dispatchEvent(new Event('cancel'));
   if (s.scene) app.run('loadPreset', s.scene);
   if (s.document || s.options || s.display || s.timing?.times !== undefined) tryCommand(app, 'lessonStep', s, s.options ? withS(s.options) : null);
   if (s.select !== undefined) app.select(s.select < app.motion.poseCount ? s.select : -1);
@@ -32,4 +36,15 @@ export function applyStep(app, s, setTarget) {
   setTarget(s.highlight ?? null);
   app.ui.refresh();
   app.viewer.requestDraw();
+  if (s.samples) offerSamples(app, s);
+}
+
+/**
+ * Hands step `s`'s measured poses to the page's own import of many poses: its dialog offers to
+ * keep, thin or fit them, as for a file (editor/files.js importPoses). Resolves true when
+ * something was imported.
+ * @param {import('../app.js').App} app
+ */
+export function offerSamples(app, s) {
+  return app.parts.files.importPoses(stepSamples(s).document, `“${s.title}”`);
 }

@@ -1,7 +1,7 @@
 // The checks of a lesson exercise, evaluated against the app's Motion through the wasm API
 // (kinds and fields: www/lessons/README.md). Each returns {ok, got, want}: `got` says what was
 // measured, in words the feedback line shows.
-import { withS } from './format.js';
+import { RESIDUAL_FIELDS, withS } from './format.js';
 
 const DEG = 180 / Math.PI;
 /** Offset either side of a knot for the velocity on each side (well inside a refined span: ≥ 2^-8). */
@@ -28,8 +28,12 @@ export function velocityJumpAt(motion, i, point = [0, 0, 0]) {
   return norm(sub(b.velocity, a.velocity));
 }
 
-/** Evaluates one check; `answer` is the chosen index of a multiple-choice exercise (or null). */
-export function evaluateCheck(check, motion, answer) {
+/**
+ * Evaluates one check; `answer` is the chosen index of a multiple-choice exercise (or null).
+ * `ctx`: what a check of the step's measured poses needs — `samples` (samples.js stepSamples of
+ * the step, or null) and `analysis` (the analysis module once loaded, or null).
+ */
+export function evaluateCheck(check, motion, answer, ctx = {}) {
   switch (check.kind) {
     case 'choice':
       return { kind: 'choice', ok: answer === check.answer, got: answer === null ? 'no answer chosen' : `answer ${answer + 1}`, want: 'the right answer' };
@@ -130,16 +134,52 @@ export function evaluateCheck(check, motion, answer) {
       const r = { min: check.min, max: check.max };
       return { ok: inRange(v, r), got: `${check.field.replace(/_/g, ' ')} ${fmt(v)}`, want: rangeText(r) };
     }
+    case 'controlPoses': {
+      const r = { min: check.min, max: check.max };
+      return { ok: inRange(motion.poseCount, r), got: `${motion.poseCount} control poses`, want: `a count ${rangeText(r)}` };
+    }
+    case 'residuals':
+      return residualsCheck(check, motion, ctx);
     default:
       return { ok: false, got: `unknown check ${check.kind}`, want: '' };
   }
 }
 
-/** Evaluates every check of an exercise: {ok, results}. Errors of the wasm API count as failures. */
-export function evaluateExercise(exercise, motion, answer) {
+/**
+ * A `residuals` check: how far the motion on the page — its control poses at their key times,
+ * as the cubic B-spline draws them — is from the step's measured poses (all of them, or with
+ * `inliers` those that are no outliers), by the core's measureFit (the report a fit gives).
+ */
+function residualsCheck(check, motion, { samples = null, analysis = null }) {
+  if (!samples) return { ok: false, got: 'this step has no measured poses', want: '' };
+  if (!analysis) return { ok: false, got: 'the analysis functions are not loaded yet; check again in a moment', want: '' };
+  const scheme = motion.options().scheme;
+  if (scheme !== 'bspline') return { ok: false, got: `the motion is drawn with the ${scheme} scheme`, want: 'the cubic B-spline (a fit sets it; or choose it in the panel)' };
+  let doc = samples.document;
+  if (check.inliers) doc = { ...doc, poses: doc.poses.filter((_, i) => !samples.outlier[i]), times: doc.times.filter((_, i) => !samples.outlier[i]) };
+  const report = analysis.measureFit(motion.toDocument(), doc);
+  const got = [];
+  const want = [];
+  let ok = true;
+  for (const [f, { label, unit }] of Object.entries(RESIDUAL_FIELDS)) {
+    if (check[f] === undefined) continue;
+    const v = unit === '°' ? report[f] * DEG : report[f];
+    ok &&= inRange(v, check[f]);
+    got.push(`${label} ${fmt(v)}${unit}`);
+    want.push(`${label} ${rangeText(check[f])}${unit}`);
+  }
+  const of = check.inliers ? `the ${doc.poses.length} measured poses that are no outliers` : `the ${doc.poses.length} measured poses`;
+  return { ok, got: `${got.join(', ')} from ${of}`, want: want.join(', ') };
+}
+
+/**
+ * Evaluates every check of an exercise: {ok, results}. Errors of the wasm API count as failures.
+ * `ctx` as evaluateCheck's.
+ */
+export function evaluateExercise(exercise, motion, answer, ctx = {}) {
   const results = exercise.checks.map((c) => {
     try {
-      return evaluateCheck(c, motion, answer);
+      return evaluateCheck(c, motion, answer, ctx);
     } catch (e) {
       return { ok: false, got: `could not check: ${e.message}`, want: '' };
     }

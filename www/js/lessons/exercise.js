@@ -3,12 +3,14 @@
 import { renderText } from './format.js';
 import { evaluateExercise } from './checks.js';
 import { writeProgress } from './progress.js';
+import { stepSamples } from './samples.js';
+import { offerSamples } from './apply.js';
 import { el } from '../dom.js';
 
 /**
  * Creates the exercise part of the lesson card in `box`; `bar` is the card's step bar (its dot
  * of a solved step is marked). `st` is the player's state {lesson, step, answer, hintShown,
- * progress, emit}, read and updated here (a check is told to emit('check', …), player.js);
+ * progress, analysis, emit}, read and updated here (a check is told to emit('check', …), player.js);
  * `fit` fits the card again when the box grows. Returns {render(x), choose(k), check()}.
  */
 export function createExercise(app, box, bar, st, fit = () => {}) {
@@ -45,6 +47,14 @@ export function createExercise(app, box, bar, st, fit = () => {}) {
     const checkBtn = el('button', { class: 'check primary' }, 'Check');
     checkBtn.addEventListener('click', () => check());
     row.append(checkBtn);
+    // A step's measured poses: the import dialog again (it opened with the step).
+    const s = st.lesson.steps[st.step];
+    if (s.samples) {
+      const again = el('button', { class: 'samples' }, 'Measured poses…');
+      again.title = 'Open the import dialog on this step\'s measured poses again';
+      again.addEventListener('click', () => offerSamples(app, s));
+      row.append(again);
+    }
     if (x.hints?.length) {
       const hintBtn = el('button', { class: 'hint' }, 'Hint');
       hintBtn.addEventListener('click', () => showHint(x));
@@ -99,9 +109,10 @@ export function createExercise(app, box, bar, st, fit = () => {}) {
   /** Runs the open step's checks (the Check button); saves a solved state and the answer. */
   function check() {
     const { lesson, step, progress } = st;
-    const x = lesson?.steps[step]?.exercise;
+    const s = lesson?.steps[step];
+    const x = s?.exercise;
     if (!x) return null;
-    const r = evaluateExercise(x, app.motion, st.answer);
+    const r = evaluateExercise(x, app.motion, st.answer, { samples: s.samples ? stepSamples(s) : null, analysis: st.analysis });
     if (st.answer !== null) progress.answers[step] = st.answer;
     if (r.ok && !progress.solved.includes(step)) progress.solved.push(step);
     writeProgress(lesson.id, progress);

@@ -5,7 +5,8 @@
 // under the page's CSP).
 import katex from '../../vendor/katex.min.mjs';
 import { MAX_LEVELS } from '../element/options.js';
-import { drawParams, extremeParams, paramProblems, references, substitute } from './variants.js';
+import { drawParams, extremeParams, fnv1a, paramProblems, references, substitute } from './variants.js';
+import { MAX_OUTLIERS, MAX_SAMPLES, MIN_SAMPLES, SAMPLE_FIELDS, SAMPLE_MOTIONS } from './samples.js';
 
 /** Largest lesson file accepted, in bytes. */
 export const MAX_LESSON_BYTES = 512 * 1024;
@@ -19,8 +20,18 @@ export const CHECK_FIELDS = {
   options: ['scheme', 'rules', 'levels', 's', 'j', 'closed'],
   velocityJump: ['pose', 'point', 'min', 'max'],
   metric: ['field', 'min', 'max', 'points'],
+  controlPoses: ['min', 'max'],
+  residuals: ['rmsPosition', 'maxPosition', 'rmsAngle', 'maxAngle', 'inliers'],
   choice: ['answer'],
 };
+/** The fields of a `residuals` check: the FitReport field each reads, and its unit (angles in degrees). */
+export const RESIDUAL_FIELDS = {
+  rmsPosition: { label: 'RMS distance', unit: '' },
+  maxPosition: { label: 'largest distance', unit: '' },
+  rmsAngle: { label: 'RMS angle', unit: '°' },
+  maxAngle: { label: 'largest angle', unit: '°' },
+};
+
 /** The origin coordinates a `pose` check may test one at a time (`coordinate`). */
 export const COORDINATES = ['x', 'y', 'z'];
 /** Metrics fields a `metric` check may read (MetricsRow of Motion.motionMetrics). */
@@ -46,7 +57,7 @@ export const DISPLAY_FIELDS = {
   object: 'string', strobe: 'number', showStrobe: 'boolean', showControl: 'boolean', showTriads: 'boolean',
   showTrajectories: 'boolean', showPolyscrew: 'boolean', showPolygon: 'boolean', showGrid: 'boolean',
 };
-const STEP_FIELDS = ['title', 'text', 'params', 'scene', 'document', 'options', 'display', 'timing', 'camera', 'dock', 'stepsAt', 'select', 'highlight', 'exercise'];
+const STEP_FIELDS = ['title', 'text', 'params', 'scene', 'document', 'samples', 'options', 'display', 'timing', 'camera', 'dock', 'stepsAt', 'select', 'highlight', 'exercise'];
 const HIGHLIGHT_KINDS = ['control', 'panel', 'pose', 'gizmo'];
 const GIZMO_PARTS = ['axis-x', 'axis-y', 'axis-z', 'plane-x', 'plane-y', 'plane-z', 'ring-x', 'ring-y', 'ring-z', 'trackball'];
 
@@ -292,7 +303,26 @@ function checkStepBody(s, p, ctx, P) {
   }
   if (s.select !== undefined && s.select !== -1) guard(P, () => index(s.select, `${p}.select`));
   if (s.highlight !== undefined) guard(P, () => validateHighlight(s.highlight, `${p}.highlight`, ctx));
-  if (s.exercise !== undefined) validateExercise(s.exercise, `${p}.exercise`, P);
+  if (s.samples !== undefined) guard(P, () => validateSamples(s.samples, `${p}.samples`, P));
+  if (s.exercise !== undefined) validateExercise(s.exercise, `${p}.exercise`, P, s.samples !== undefined);
+}
+
+/** A step's measured poses (samples.js): a motion, a count, noise and outliers. */
+function validateSamples(o, p, P) {
+  if (!isObj(o)) fail(p, 'expected {motion, count, noise?, angleNoise?, outliers?, outlierSize?, duration?}');
+  onlyKeys(o, Object.keys(SAMPLE_FIELDS), p, P);
+  guard(P, () => oneOf(o.motion, Object.keys(SAMPLE_MOTIONS), `${p}.motion`));
+  guard(P, () => {
+    if (!(Number.isInteger(o.count) && o.count >= MIN_SAMPLES && o.count <= MAX_SAMPLES)) fail(`${p}.count`, `expected a whole number from ${MIN_SAMPLES} to ${MAX_SAMPLES}`);
+  });
+  const at = (f, ok, what) => {
+    if (o[f] !== undefined && !(isNum(o[f]) && ok(o[f]))) P.push(new LessonError(`${p}.${f}`, what));
+  };
+  at('duration', (x) => x > 0, 'expected a number > 0 (seconds)');
+  at('noise', (x) => x >= 0, 'expected a number ≥ 0 (scene units)');
+  at('angleNoise', (x) => x >= 0 && x <= 90, 'expected a number from 0 to 90 (degrees)');
+  at('outliers', (x) => x >= 0 && x <= MAX_OUTLIERS, `expected a share from 0 to ${MAX_OUTLIERS}`);
+  at('outlierSize', (x) => x >= 0, 'expected a number ≥ 0 (scene units)');
 }
 
 /** A step's camera, as the page's session keeps it (figure/camera.js OrbitCamera.toJSON). */
@@ -380,7 +410,7 @@ function text(o, f, p, P, required = false) {
   });
 }
 
-function validateExercise(x, p, P) {
+function validateExercise(x, p, P, hasSamples = false) {
   if (!isObj(x)) return P.push(new LessonError(p, 'expected an object'));
   onlyKeys(x, ['task', 'choices', 'checks', 'hints', 'success'], p, P);
   text(x, 'task', `${p}.task`, P, true);
@@ -403,7 +433,7 @@ function validateExercise(x, p, P) {
     }
   }
   if (!Array.isArray(x.checks) || x.checks.length === 0) P.push(new LessonError(`${p}.checks`, 'expected a non-empty list of checks'));
-  else x.checks.forEach((c, k) => guard(P, () => validateCheck(c, `${p}.checks[${k}]`, x, choices, P)));
+  else x.checks.forEach((c, k) => guard(P, () => validateCheck(c, `${p}.checks[${k}]`, x, choices, P, hasSamples)));
   if (x.hints !== undefined) {
     if (!Array.isArray(x.hints)) P.push(new LessonError(`${p}.hints`, 'expected a list of texts'));
     else x.hints.forEach((h, k) => text(x.hints, k, `${p}.hints[${k}]`, P, true));
@@ -422,7 +452,7 @@ function normaliseChoices(x) {
   x.choices = x.choices.map((c) => (isObj(c) ? c.text : c));
 }
 
-function validateCheck(c, p, x, choices, P) {
+function validateCheck(c, p, x, choices, P, hasSamples) {
   if (!isObj(c)) fail(p, 'expected a check object');
   if (!Object.hasOwn(CHECK_FIELDS, c.kind)) fail(`${p}.kind`, `${JSON.stringify(c.kind)} is not one of ${Object.keys(CHECK_FIELDS).join(', ')}`);
   if (c.kind === 'options') return validateOptions(c, p, true, P);
@@ -465,6 +495,19 @@ function validateCheck(c, p, x, choices, P) {
       if (c.min !== undefined) num(c.min, `${p}.min`);
       if (c.max !== undefined) num(c.max, `${p}.max`);
       break;
+    case 'controlPoses':
+      if (c.min === undefined && c.max === undefined) fail(p, 'give min, max or both');
+      for (const f of ['min', 'max']) if (c[f] !== undefined && !(Number.isInteger(c[f]) && c[f] >= 0)) fail(`${p}.${f}`, 'expected a whole number ≥ 0');
+      if (c.min !== undefined && c.max !== undefined && c.min > c.max) fail(`${p}.max`, 'max is smaller than min');
+      break;
+    case 'residuals': {
+      if (!hasSamples) fail(p, 'a residuals check needs the step to give measured poses (samples)');
+      const given = Object.keys(RESIDUAL_FIELDS).filter((f) => c[f] !== undefined);
+      if (given.length === 0) fail(p, `give at least one of ${Object.keys(RESIDUAL_FIELDS).join(', ')}`);
+      for (const f of given) range(c[f], `${p}.${f}`);
+      if (c.inliers !== undefined && typeof c.inliers !== 'boolean') fail(`${p}.inliers`, 'expected true or false');
+      break;
+    }
     case 'choice':
       if (!Array.isArray(x.choices)) fail(p, 'a choice check needs the exercise to list choices');
       index(c.answer, `${p}.answer`);
@@ -488,13 +531,15 @@ export function lessonVariant(lesson, seed) {
   if (!hasParams(lesson)) return { lesson, values: lesson.steps.map(() => null) };
   const values = [];
   const steps = lesson.steps.map((s, i) => {
+    // Measured poses are the student's own: their noise is drawn from the seed and the step.
+    const own = (step) => (step.samples ? { ...step, samples: { ...step.samples, seed: fnv1a(`${seed >>> 0}:${i}:samples`) } } : step);
     if (!s.params) {
       values.push(null);
-      return s;
+      return own(s);
     }
     const v = drawParams(s.params, seed, i);
     values.push(v);
-    const step = substitute(s, v);
+    const step = own(substitute(s, v));
     delete step.params;
     if (step.exercise) normaliseChoices(step.exercise);
     return step;
@@ -502,9 +547,12 @@ export function lessonVariant(lesson, seed) {
   return { lesson: { ...lesson, steps }, values };
 }
 
-/** Whether a step of `lesson` declares parameters (so its students get variants). */
+/**
+ * Whether a step of `lesson` declares parameters or gives measured poses (so its students get
+ * variants: their own numbers, their own noise).
+ */
 export function hasParams(lesson) {
-  return lesson.steps.some((s) => s.params !== undefined);
+  return lesson.steps.some((s) => s.params !== undefined || s.samples !== undefined);
 }
 
 // ---------------------------------------------------------------- text

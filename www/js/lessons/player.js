@@ -56,7 +56,7 @@ export function startLessons(app) {
   };
 
   // The open lesson, its step, the step's chosen answer and hints shown, and its saved progress.
-  const st = { lesson: null, step: -1, answer: null, hintShown: 0, progress: null, variant: null, emit };
+  const st = { lesson: null, step: -1, answer: null, hintShown: 0, progress: null, variant: null, analysis: null, emit };
   const events = new EventTarget();
   /** Tells listeners of player.events about `type` (see the file's head). */
   function emit(type, detail = {}) {
@@ -121,14 +121,23 @@ export function startLessons(app) {
       return false;
     }
     if (!openText(text, url.pathname.split('/').pop(), { resume, progress, seed })) return false;
-    // A `metric` check measures in the analysis module: fetched now, before the first Check.
-    if (measures(st.lesson)) await app.analysis().catch((e) => app.parts.notices.show(`${e.message}: this lesson's checks cannot measure the motion.`));
+    // A `metric` or `residuals` check measures in the analysis module: fetched now, before the
+    // first Check.
+    if (measures(st.lesson)) await analysis().catch((e) => app.parts.notices.show(`${e.message}: this lesson's checks cannot measure the motion.`));
     return true;
   }
 
-  /** True when a check of `lesson` needs the analysis module (Motion.motionMetrics). */
+  /**
+   * True when `lesson` needs the analysis module: a check measures with it (Motion.motionMetrics,
+   * measureFit) or a step's measured poses may be fitted (fitPoses).
+   */
   function measures(lesson) {
-    return lesson.steps.some((s) => s.exercise?.checks.some((c) => c.kind === 'metric'));
+    return lesson.steps.some((s) => s.samples || s.exercise?.checks.some((c) => c.kind === 'metric' || c.kind === 'residuals'));
+  }
+
+  /** Loads the analysis module and keeps it for the checks (st.analysis). */
+  function analysis() {
+    return app.analysis().then((m) => (st.analysis = m));
   }
 
   /** Opens a lesson from its text; `source` names it in messages. */
@@ -168,7 +177,7 @@ export function startLessons(app) {
     card.lessonTitle.textContent = st.lesson.title;
     emit('open');
     go(resume ? Math.min(st.progress.step, st.lesson.steps.length - 1) : 0);
-    if (measures(st.lesson)) app.analysis().catch(() => {});
+    if (measures(st.lesson)) analysis().catch(() => {});
     return true;
   }
 

@@ -7,16 +7,19 @@
 //!
 //! From the bottom up: `banded.rs` (the banded Cholesky solve), `loss.rs` (robust losses),
 //! `residual.rs` (one sample's residual, the report), `model.rs` (the two motions),
-//! `solve.rs` (Levenberg–Marquardt), and here the checks, the start and the choice of the number
+//! `solve.rs` (Levenberg–Marquardt), `measure.rs` (the report of a motion not fitted here),
+//! and here the checks, the start and the choice of the number
 //! of control poses.
 
 mod banded;
 mod loss;
+mod measure;
 mod model;
 mod residual;
 mod solve;
 
 pub use loss::RobustLoss;
+pub use measure::measure_fit;
 pub use model::{FitMethod, FIT_LEVELS};
 pub use residual::FitReport;
 

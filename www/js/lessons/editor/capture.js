@@ -58,6 +58,7 @@ export function describeSetup(s) {
   else if (s.document) parts.push(`${s.document.poses?.length ?? 0} poses${s.document.closed ? ', closed' : ''}`);
   else parts.push('the motion as it is');
   if (s.options) parts.push(`${s.options.scheme ?? 'scheme as it is'}, ${s.options.levels ?? '?'} levels`);
+  if (s.samples) parts.push(`${typeof s.samples.count === 'number' ? s.samples.count : 'n'} measured poses (${s.samples.motion})`);
   if (s.dock) parts.push(`view ${s.dock}`);
   if (Number.isInteger(s.select) && s.select >= 0) parts.push(`pose ${s.select} selected`);
   return parts.join(' · ');

@@ -1,7 +1,7 @@
 // An exercise's checks in the editor: each check as a row of fields, and the form that makes a
 // new check from what is on the page now — a pose's origin (or one coordinate of it, where the
 // format has single-coordinate pose checks) or its rotation, a span's angle, slide or pitch, the
-// scheme and levels, a metric's threshold — with the tolerance the teacher sets ("pose 1 within
+// scheme and levels, a metric's threshold, the number of control poses — with the tolerance the teacher sets ("pose 1 within
 // 0.1 of where it is now", "the velocity jump at most its value now + 0.01"). The check kinds and fields are the lesson format's
 // (format.js CHECK_FIELDS, www/lessons/README.md).
 import { CHECK_FIELDS, METRIC_FIELDS } from '../format.js';
@@ -22,6 +22,7 @@ export const FROM_PAGE = {
   slide: "a span's slide",
   pitch: "a span's pitch",
   options: 'the scheme and levels',
+  controlPoses: 'at most: the number of control poses',
   ...Object.fromEntries(METRIC_FIELDS.map((f) => [`metric:${f}`, `at most: ${f.replace(/_/g, ' ')}`])),
 };
 
@@ -40,6 +41,7 @@ export function checkFromPage(app, what, index, tol) {
     if (what === 'rotation') return { kind: 'pose', pose: index, rotation: p.rotation.map(round), angleTolerance: tol };
     return { kind: 'pose', pose: index, coordinate: what, value: round(p.origin['xyz'.indexOf(what)]), tolerance: tol };
   }
+  if (what === 'controlPoses') return { kind: 'controlPoses', max: m.poseCount };
   if (what === 'options') {
     const o = m.options();
     return { kind: 'options', scheme: o.scheme, levels: o.levels };
@@ -148,8 +150,9 @@ export function checksForm(ed, i) {
   add.type = 'button';
   const sync = () => {
     ed.ui.checkWhat = what.value;
-    indexLabel.hidden = what.value === 'options' || what.value.startsWith('metric:');
-    tolLabel.hidden = what.value === 'options';
+    const whole = what.value === 'options' || what.value === 'controlPoses';
+    indexLabel.hidden = whole || what.value.startsWith('metric:');
+    tolLabel.hidden = whole;
     indexLabel.firstChild.textContent = ['angle', 'slide', 'pitch'].includes(what.value) ? 'span ' : 'pose ';
   };
   what.addEventListener('change', sync);
@@ -160,7 +163,7 @@ export function checksForm(ed, i) {
     let c;
     try {
       if (what.value.startsWith('metric:')) await ed.app.analysis();
-      c = checkFromPage(ed.app, what.value, Number(index.value), what.value === 'options' ? 1 : Number(tol.value));
+      c = checkFromPage(ed.app, what.value, Number(index.value), tolLabel.hidden ? 1 : Number(tol.value));
     } catch (e) {
       ed.say(`Cannot make the check: ${e.message}.`, true);
       return;
