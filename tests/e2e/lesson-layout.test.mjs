@@ -6,8 +6,12 @@
 // 3-D view's canvas) or offered on the card by a stand-in button that is itself hittable; an
 // exercise's Check is hittable as the step opens (no scrolling by hand); after a real click on
 // Check the feedback has text, lies inside the window and nothing covers it. A highlight that
-// cannot be found fails the step. Screenshots of lesson 1 step 4 and of an exercise after
-// Check at each size go to artifacts/e2e-<backend>/lesson-layout/.
+// cannot be found fails the step. The card covers neither the highlight, nor the open dock, nor
+// the selected pose's handle; its Back / Next / close buttons are on screen; its text has no
+// untypeset `$`; the ring pulses as it points at something new and stops within 5 s (WCAG
+// 2.2.2). Each lesson shows no error message, and no page breaks its content security policy.
+// Screenshots of lesson 1 step 4 and of an exercise after Check at each size go to
+// artifacts/e2e-<backend>/lesson-layout/.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
@@ -58,6 +62,24 @@ function inspectStep() {
     return r.w > 0 && r.h > 0 && hitsAt(node, r.x + r.w / 2, r.y + r.h / 2);
   };
   const out = { title: s.title, highlight: s.highlight ?? null, exercise: !!s.exercise };
+  // The card: shown, its math typeset, clear of what the step asks the student to look at or
+  // press, its own buttons on screen.
+  const card = document.getElementById('lesson');
+  const box = rectOf(card);
+  const meets = (a, b) => a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
+  const spot = L.spot();
+  const dock = document.querySelector('#dock.open');
+  const sel = app.selected >= 0 ? app.viewer.screenOfPose(app.selected) : null;
+  out.card = {
+    hidden: card.hidden,
+    dollars: card.querySelector('.text').textContent.includes('$'),
+    covers: [
+      spot && meets(box, spot) ? `the highlight ${JSON.stringify(spot)}` : '',
+      dock && meets(box, rectOf(dock)) ? 'the open dock' : '',
+      sel && meets(box, { x: sel.x - 12, y: sel.y - 12, w: 24, h: 24 }) ? "the selected pose's handle" : '',
+    ].filter(Boolean),
+    offscreen: [...card.querySelectorAll('.nav button, .head .close')].map(rectOf).filter((b) => !(b.w > 0 && inside(b))),
+  };
   const h = s.highlight;
   if (h) {
     let node = null;
@@ -112,6 +134,10 @@ for (const size of SIZES) {
   const label = `${size.width}x${size.height}`;
   test(`${label}: every step of every lesson and the tour keeps its highlight reachable, Check in reach and the feedback in view`, async () => {
     const context = await browser.newContext({ viewport: { width: size.width, height: size.height }, hasTouch: size.touch });
+    await context.addInitScript(() => {
+      window.__csp = [];
+      document.addEventListener('securitypolicyviolation', (e) => window.__csp.push(`${e.violatedDirective}: ${e.blockedURI}`));
+    });
     const page = await context.newPage();
     const problems = [];
     page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
@@ -123,15 +149,18 @@ for (const size of SIZES) {
     });
     const failures = [];
     let steps = 0;
+    let seenErrors = 0;
     for (const name of LESSONS) {
       const n = await page.evaluate((f) => window.__player.open(f, { resume: false }).then((ok) => (ok ? window.__player.lesson.steps.length : 0)), name);
       assert.ok(n > 0, `${label}: lesson ${name} did not open`);
       for (let i = 0; i < n; i++) {
         // The step applied, an analysis view it opens loaded, the layout settled and a frame
         // drawn with it.
-        await page.evaluate(async (k) => {
+        const pulse = await page.evaluate(async (k) => {
           const L = window.__player;
           if (L.step !== k) L.go(k);
+          // The ring's pulses as the step opens (they restart for each new target).
+          const ring = L.spot() ? document.getElementById('lesson-spot').getAnimations().map((a) => ({ t: a.currentTime, end: a.effect.getComputedTiming().endTime, state: a.playState })) : [];
           const sb = window.screwbender;
           while (sb.app.parts.dockHost.loading) await sb.app.parts.dockHost.loading;
           sb.app.dock?.flush();
@@ -141,6 +170,7 @@ for (const size of SIZES) {
           const f0 = sb.frames();
           sb.app.viewer.requestDraw();
           while (sb.frames() <= f0) await frame();
+          return ring;
         }, i);
         const at = `${label} ${name} step ${i + 1}`;
         // A step's measured poses open the import dialog: closed by Esc, as a student would to
@@ -151,6 +181,14 @@ for (const size of SIZES) {
         }
         const g = await page.evaluate(inspectStep);
         steps++;
+        if (g.card.hidden) failures.push(`${at}: the card is hidden`);
+        if (g.card.dollars) failures.push(`${at}: an untypeset $ in the card's text`);
+        for (const what of g.card.covers) failures.push(`${at}: the card covers ${what}`);
+        for (const b of g.card.offscreen) failures.push(`${at}: a button of the card is off screen ${JSON.stringify(b)}`);
+        for (const a of pulse) {
+          if (!(a.end <= 5000)) failures.push(`${at}: the highlight pulses for ${a.end} ms (at most 5 s)`);
+          if (!(a.state === 'running' && a.t < 1000)) failures.push(`${at}: the highlight's pulse did not start again (${a.state} at ${a.t} ms)`);
+        }
         if (g.highlight) {
           if (!g.found) failures.push(`${at}: the highlighted ${JSON.stringify(g.highlight)} is not on the page`);
           else if (!g.ring) failures.push(`${at}: no ring around ${JSON.stringify(g.highlight)}`);
@@ -173,10 +211,17 @@ for (const size of SIZES) {
         if (name.startsWith('01-screw') && i === 3) await page.screenshot({ path: shotPath(`lesson-layout/${label}-01-step4.png`) });
       }
       await page.evaluate(() => window.__player.close());
+      // Messages shown while the lesson ran, less the notes on what an import of a step's
+      // measured poses kept, fitted or (Esc) cancelled: the page tells a student that, as for a file.
+      const all = await page.evaluate(() => window.screwbender.errors());
+      const shown = all.slice(seenErrors).filter((m) => !/^“[^”]+”: (kept|fitted|import cancelled)/.test(m));
+      seenErrors = all.length;
+      for (const m of shown) failures.push(`${label} ${name}: the page showed "${m}"`);
     }
     assert.ok(steps >= 30, `only ${steps} steps swept`);
     assert.deepEqual(failures, []);
     assert.deepEqual(problems, []);
+    assert.deepEqual(await page.evaluate(() => window.__csp), []);
     await context.close();
   });
 }
