@@ -116,17 +116,20 @@ const ANSWERS = {
  * In the page: answers the open import dialog as the options `o` say (`how`: a choice's value;
  * for a fit its number of `controls` and its `robust` loss) and resolves once it has closed.
  */
-function answerImport(o) {
+async function answerImport(o) {
+  // The dialog opens once the step's samples module is there (fetched as the step opens).
+  const until = (done) => new Promise((resolve, reject) => {
+    const t0 = performance.now();
+    const poll = () => (done() ? resolve() : performance.now() - t0 > 10000 ? reject(new Error('no import dialog is open')) : setTimeout(poll, 20));
+    poll();
+  });
+  await until(() => document.getElementById('reduce-dialog'));
   const d = document.getElementById('reduce-dialog');
-  if (!d) throw new Error('no import dialog is open');
   d.querySelector(`#reduce-${o.how}`).click();
   if (o.controls) d.querySelector('#reduce-fit-n').value = String(o.controls);
   if (o.robust) d.querySelector('#reduce-robust').value = o.robust;
   d.querySelector('button[type=submit]').click();
-  return new Promise((resolve) => {
-    const wait = () => (document.getElementById('reduce-dialog') ? setTimeout(wait, 20) : resolve());
-    wait();
-  });
+  await until(() => !document.getElementById('reduce-dialog'));
 }
 
 // Every step of every lesson applied, at three sizes, its card's math typeset, clear of its

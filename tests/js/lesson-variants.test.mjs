@@ -9,9 +9,9 @@ import path from 'node:path';
 import { describe, it } from 'node:test';
 import { fileURLToPath } from 'node:url';
 import { drawParams, fnv1a, mulberry32, paramValues, substitute } from '../../www/js/lessons/variants.js';
-import { LessonError, lessonProblems, lessonVariant, parseLesson, validateLesson } from '../../www/js/lessons/format.js';
+import { LessonError, SAMPLE_MOTION_NAMES, lessonProblems, lessonVariant, parseLesson, validateLesson } from '../../www/js/lessons/format.js';
 import { evaluateCheck } from '../../www/js/lessons/checks.js';
-import { generateSamples, stepSamples } from '../../www/js/lessons/samples.js';
+import { SAMPLE_MOTIONS, generateSamples, stepSamples } from '../../www/js/lessons/samples.js';
 import { variantSeed } from '../../www/js/lessons/lms.js';
 
 const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
@@ -269,6 +269,10 @@ describe('measured poses (samples) and the fit checks', () => {
   const spec = { motion: 'helix', count: 400, duration: 10, noise: 0.05, angleNoise: 2, outliers: 0.05, outlierSize: 1.5 };
   const clean = generateSamples({ ...spec, noise: 0, angleNoise: 0, outliers: 0 }, 1);
 
+  it('the format names exactly the motions samples.js can sample', () => {
+    assert.deepEqual(Object.keys(SAMPLE_MOTIONS), SAMPLE_MOTION_NAMES);
+  });
+
   it('are the same for the same seed, other for another, with the asked noise and outliers', () => {
     const a = generateSamples(spec, 7);
     assert.deepEqual(generateSamples(spec, 7), a);
@@ -329,7 +333,8 @@ describe('measured poses (samples) and the fit checks', () => {
     const motion = { poseCount: 14, options: () => ({ scheme: 'bspline' }), toDocument: () => ({ poses: [] }) };
     assert.deepEqual(evaluateCheck({ kind: 'controlPoses', max: 12 }, motion, null), { ok: false, got: '14 control poses', want: 'a count ≤ 12' });
     assert.equal(evaluateCheck({ kind: 'controlPoses', min: 4, max: 14 }, motion, null).ok, true);
-    const samples = generateSamples(spec, 3);
+    // A step's samples (stepSamples: with their residuals check), seed 3.
+    const samples = stepSamples({ samples: { ...spec, seed: 3 } });
     let given = null;
     const analysis = { measureFit: (doc, s) => ((given = s), { rmsPosition: 0.08, maxPosition: 0.3, rmsAngle: 0.01, maxAngle: 0.05 }) };
     const r = evaluateCheck({ kind: 'residuals', inliers: true, rmsPosition: { max: 0.07 }, maxAngle: { max: 5 } }, motion, null, { samples, analysis });

@@ -3,7 +3,6 @@
 // page's commands.
 import { tryCommand } from '../editor/commands.js';
 import { withS } from './format.js';
-import { stepSamples } from './samples.js';
 
 /**
  * Applies step `s` to `app` and points the highlight at `s.highlight` through `setTarget`.
@@ -45,6 +44,16 @@ export function applyStep(app, s, setTarget) {
  * something was imported.
  * @param {import('../app.js').App} app
  */
-export function offerSamples(app, s) {
+export async function offerSamples(app, s) {
+  const { stepSamples } = await loadSamples();
   return app.parts.files.importPoses(stepSamples(s).document, `“${s.title}”`);
 }
+
+let samplesModule = null;
+/**
+ * samples.js, fetched with a step that has measured poses only.
+ * @returns {Promise<typeof import('./samples.js')>}
+ */
+export const loadSamples = () => import('./samples.js').then((m) => (samplesModule = m));
+/** samples.js once fetched, else null. */
+export const loadedSamples = () => samplesModule;

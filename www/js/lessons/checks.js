@@ -1,15 +1,15 @@
 // The checks of a lesson exercise, evaluated against the app's Motion through the wasm API
 // (kinds and fields: www/lessons/README.md). Each returns {ok, got, want}: `got` says what was
 // measured, in words the feedback line shows.
-import { RESIDUAL_FIELDS, withS } from './format.js';
+import { withS } from './format.js';
 
-const DEG = 180 / Math.PI;
+export const DEG = 180 / Math.PI;
 /** Offset either side of a knot for the velocity on each side (well inside a refined span: ≥ 2^-8). */
 const KNOT_EPS = 1e-9;
 
-const fmt = (x) => (Math.abs(x) >= 1e-3 || x === 0 ? Number(x.toPrecision(4)).toString() : x.toExponential(2));
-const inRange = (x, r) => (typeof r === 'number' ? Math.abs(x - r) <= 1e-9 * Math.max(1, Math.abs(r)) : (r.min === undefined || x >= r.min) && (r.max === undefined || x <= r.max));
-const rangeText = (r) => (typeof r === 'number' ? `= ${fmt(r)}` : r.min !== undefined && r.max !== undefined ? `in [${fmt(r.min)}, ${fmt(r.max)}]` : r.min !== undefined ? `≥ ${fmt(r.min)}` : `≤ ${fmt(r.max)}`);
+export const fmt = (x) => (Math.abs(x) >= 1e-3 || x === 0 ? Number(x.toPrecision(4)).toString() : x.toExponential(2));
+export const inRange = (x, r) => (typeof r === 'number' ? Math.abs(x - r) <= 1e-9 * Math.max(1, Math.abs(r)) : (r.min === undefined || x >= r.min) && (r.max === undefined || x <= r.max));
+export const rangeText = (r) => (typeof r === 'number' ? `= ${fmt(r)}` : r.min !== undefined && r.max !== undefined ? `in [${fmt(r.min)}, ${fmt(r.max)}]` : r.min !== undefined ? `≥ ${fmt(r.min)}` : `≤ ${fmt(r.max)}`);
 const norm = (v) => Math.hypot(...v);
 const sub = (a, b) => a.map((x, k) => x - b[k]);
 
@@ -139,37 +139,11 @@ export function evaluateCheck(check, motion, answer, ctx = {}) {
       return { ok: inRange(motion.poseCount, r), got: `${motion.poseCount} control poses`, want: `a count ${rangeText(r)}` };
     }
     case 'residuals':
-      return residualsCheck(check, motion, ctx);
+      // samples.js's, fetched with the step's measured poses.
+      return ctx.samples ? ctx.samples.residuals(check, motion, ctx.analysis ?? null) : { ok: false, got: 'this step has no measured poses', want: '' };
     default:
       return { ok: false, got: `unknown check ${check.kind}`, want: '' };
   }
-}
-
-/**
- * A `residuals` check: how far the motion on the page — its control poses at their key times,
- * as the cubic B-spline draws them — is from the step's measured poses (all of them, or with
- * `inliers` those that are no outliers), by the core's measureFit (the report a fit gives).
- */
-function residualsCheck(check, motion, { samples = null, analysis = null }) {
-  if (!samples) return { ok: false, got: 'this step has no measured poses', want: '' };
-  if (!analysis) return { ok: false, got: 'the analysis functions are not loaded yet; check again in a moment', want: '' };
-  const scheme = motion.options().scheme;
-  if (scheme !== 'bspline') return { ok: false, got: `the motion is drawn with the ${scheme} scheme`, want: 'the cubic B-spline (a fit sets it; or choose it in the panel)' };
-  let doc = samples.document;
-  if (check.inliers) doc = { ...doc, poses: doc.poses.filter((_, i) => !samples.outlier[i]), times: doc.times.filter((_, i) => !samples.outlier[i]) };
-  const report = analysis.measureFit(motion.toDocument(), doc);
-  const got = [];
-  const want = [];
-  let ok = true;
-  for (const [f, { label, unit }] of Object.entries(RESIDUAL_FIELDS)) {
-    if (check[f] === undefined) continue;
-    const v = unit === '°' ? report[f] * DEG : report[f];
-    ok &&= inRange(v, check[f]);
-    got.push(`${label} ${fmt(v)}${unit}`);
-    want.push(`${label} ${rangeText(check[f])}${unit}`);
-  }
-  const of = check.inliers ? `the ${doc.poses.length} measured poses that are no outliers` : `the ${doc.poses.length} measured poses`;
-  return { ok, got: `${got.join(', ')} from ${of}`, want: want.join(', ') };
 }
 
 /**

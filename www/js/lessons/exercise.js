@@ -3,8 +3,7 @@
 import { renderText } from './format.js';
 import { evaluateExercise } from './checks.js';
 import { writeProgress } from './progress.js';
-import { stepSamples } from './samples.js';
-import { offerSamples } from './apply.js';
+import { loadSamples, loadedSamples, offerSamples } from './apply.js';
 import { el } from '../dom.js';
 
 /**
@@ -112,7 +111,13 @@ export function createExercise(app, box, bar, st, fit = () => {}) {
     const s = lesson?.steps[step];
     const x = s?.exercise;
     if (!x) return null;
-    const r = evaluateExercise(x, app.motion, st.answer, { samples: s.samples ? stepSamples(s) : null, analysis: st.analysis });
+    // A step's measured poses: samples.js, which the step fetched as it opened (a Check that
+    // comes first runs once it is there).
+    if (s.samples && !loadedSamples()) {
+      loadSamples().then(() => check());
+      return null;
+    }
+    const r = evaluateExercise(x, app.motion, st.answer, { samples: s.samples ? loadedSamples().stepSamples(s) : null, analysis: st.analysis });
     if (st.answer !== null) progress.answers[step] = st.answer;
     if (r.ok && !progress.solved.includes(step)) progress.solved.push(step);
     writeProgress(lesson.id, progress);

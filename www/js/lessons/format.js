@@ -6,7 +6,16 @@
 import katex from '../../vendor/katex.min.mjs';
 import { MAX_LEVELS } from '../element/options.js';
 import { drawParams, extremeParams, fnv1a, paramProblems, references, substitute } from './variants.js';
-import { MAX_OUTLIERS, MAX_SAMPLES, MIN_SAMPLES, SAMPLE_FIELDS, SAMPLE_MOTIONS } from './samples.js';
+
+/** Fields of a step's `samples` (its measured poses: samples.js), and their defaults (null: required). */
+export const SAMPLE_FIELDS = { motion: null, count: null, duration: 10, noise: 0, angleNoise: 0, outliers: 0, outlierSize: 1 };
+/** The smooth motions `samples.motion` may name (samples.js SAMPLE_MOTIONS). */
+export const SAMPLE_MOTION_NAMES = ['helix', 'wave'];
+/** Fewest and most samples a step may ask for (more than the import dialog's 64, so it opens). */
+export const MIN_SAMPLES = 65;
+export const MAX_SAMPLES = 5000;
+/** Largest share of outliers. */
+export const MAX_OUTLIERS = 0.5;
 
 /** Largest lesson file accepted, in bytes. */
 export const MAX_LESSON_BYTES = 512 * 1024;
@@ -311,7 +320,7 @@ function checkStepBody(s, p, ctx, P) {
 function validateSamples(o, p, P) {
   if (!isObj(o)) fail(p, 'expected {motion, count, noise?, angleNoise?, outliers?, outlierSize?, duration?}');
   onlyKeys(o, Object.keys(SAMPLE_FIELDS), p, P);
-  guard(P, () => oneOf(o.motion, Object.keys(SAMPLE_MOTIONS), `${p}.motion`));
+  guard(P, () => oneOf(o.motion, SAMPLE_MOTION_NAMES, `${p}.motion`));
   guard(P, () => {
     if (!(Number.isInteger(o.count) && o.count >= MIN_SAMPLES && o.count <= MAX_SAMPLES)) fail(`${p}.count`, `expected a whole number from ${MIN_SAMPLES} to ${MAX_SAMPLES}`);
   });

@@ -49,7 +49,7 @@ export function createHighlight(app, { card, proxy }) {
     setProxy(null);
     if (h) {
       place();
-      // A new target pulses again (css/lessons.css: a few pulses, then a steady ring).
+      // A new target pulses again (css/lessons.css).
       for (const a of spotEl.getAnimations()) {
         a.currentTime = 0;
         a.play();

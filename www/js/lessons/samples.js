@@ -6,15 +6,12 @@
 // mulberry32: the sequence is part of the lesson format (a reload, or the same seed anywhere,
 // gives the same poses), so no library whose generator might change is used. The normal draws
 // are Box–Muller, a few lines on top of it.
+//
+// Fetched only with a step that has measured poses (apply.js loadSamples): a lesson link without
+// one never downloads it. The rules of the `samples` field live with the format (format.js).
 import { fnv1a, mulberry32 } from './variants.js';
-
-/** Fields of `samples`, and their defaults (null: required). */
-export const SAMPLE_FIELDS = { motion: null, count: null, duration: 10, noise: 0, angleNoise: 0, outliers: 0, outlierSize: 1 };
-/** Fewest and most samples a step may ask for (more than the import dialog's 64, so it opens). */
-export const MIN_SAMPLES = 65;
-export const MAX_SAMPLES = 5000;
-/** Largest share of outliers. */
-export const MAX_OUTLIERS = 0.5;
+import { RESIDUAL_FIELDS, SAMPLE_FIELDS } from './format.js';
+import { DEG, fmt, inRange, rangeText } from './checks.js';
 /** How far an outlier's rotation is turned, in radians, per scene unit of `outlierSize`. */
 const OUTLIER_TURN = 0.5;
 
@@ -41,6 +38,7 @@ function qmul(a, b) {
  * origin and rotation [w, x, y, z].
  */
 export const SAMPLE_MOTIONS = {
+  // The names are format.js's SAMPLE_MOTION_NAMES (tests/js/lesson-variants.test.mjs compares them).
   /** A body climbing 1¼ turns of a helix of radius 3 and height 2, facing along it, rocking. */
   helix: (s) => {
     const a = 1.25 * TAU * s;
@@ -105,8 +103,42 @@ export function generateSamples(spec, seed = 0) {
 /** The samples of each step object, generated once: a Check reads the poses the dialog was given. */
 const made = new WeakMap();
 
-/** The measured poses of step `s` (which has `samples`): generateSamples of its spec and seed. */
+/**
+ * The measured poses of step `s` (which has `samples`): generateSamples of its spec and seed,
+ * with `residuals(check, motion, analysis)`, the evaluation of a `residuals` check against them.
+ */
 export function stepSamples(s) {
-  if (!made.has(s)) made.set(s, generateSamples(s.samples, s.samples.seed ?? 0));
+  if (!made.has(s)) {
+    const samples = generateSamples(s.samples, s.samples.seed ?? 0);
+    samples.residuals = (check, motion, analysis) => residualsCheck(samples, check, motion, analysis);
+    made.set(s, samples);
+  }
   return made.get(s);
 }
+
+/**
+ * A `residuals` check (checks.js evaluateCheck hands it here): how far the motion on the page — its control poses at their key times,
+ * as the cubic B-spline draws them — is from the step's measured poses (all of them, or with
+ * `inliers` those that are no outliers), by the core's measureFit (the report a fit gives).
+ */
+function residualsCheck(samples, check, motion, analysis) {
+  if (!analysis) return { ok: false, got: 'the analysis functions are not loaded yet; check again in a moment', want: '' };
+  const scheme = motion.options().scheme;
+  if (scheme !== 'bspline') return { ok: false, got: `the motion is drawn with the ${scheme} scheme`, want: 'the cubic B-spline (a fit sets it; or choose it in the panel)' };
+  let doc = samples.document;
+  if (check.inliers) doc = { ...doc, poses: doc.poses.filter((_, i) => !samples.outlier[i]), times: doc.times.filter((_, i) => !samples.outlier[i]) };
+  const report = analysis.measureFit(motion.toDocument(), doc);
+  const got = [];
+  const want = [];
+  let ok = true;
+  for (const [f, { label, unit }] of Object.entries(RESIDUAL_FIELDS)) {
+    if (check[f] === undefined) continue;
+    const v = unit === '°' ? report[f] * DEG : report[f];
+    ok &&= inRange(v, check[f]);
+    got.push(`${label} ${fmt(v)}${unit}`);
+    want.push(`${label} ${rangeText(check[f])}${unit}`);
+  }
+  const of = check.inliers ? `the ${doc.poses.length} measured poses that are no outliers` : `the ${doc.poses.length} measured poses`;
+  return { ok, got: `${got.join(', ')} from ${of}`, want: want.join(', ') };
+}
+
