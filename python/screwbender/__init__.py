@@ -6,7 +6,8 @@ Motions*): cubic B-spline, 4-point and Jarek schemes, the revised paper's ``"dir
 the first version's split-then-tweak rules (id ``"split"``), and the J_s family (parameter
 ``s``). :func:`compare_methods` measures the other methods of the comparison on the same poses,
 as ``screwbender compare --json``; :func:`method_poses` evaluates one of them. :func:`fit`
-fits a smooth motion to many measured poses, as ``screwbender fit``.
+fits a smooth motion to many measured poses, as ``screwbender fit``; :func:`measure_fit` measures
+any motion against them.
 
 Poses are numpy arrays: ``(n, 7)`` rows ``x y z qw qx qy qz`` (quaternions scalar first) or
 ``(n, 4, 4)`` homogeneous matrices, accepted everywhere a pose array is (so ``modern_robotics``,
@@ -33,6 +34,7 @@ from ._screwbender import (
     __version__,
     compare_methods,
     fit,
+    measure_fit,
     method_poses,
     preset_descriptions,
     preset_display,
@@ -47,6 +49,7 @@ __all__ = [
     "__version__",
     "compare_methods",
     "fit",
+    "measure_fit",
     "method_poses",
     "preset_descriptions",
     "preset_display",

@@ -291,6 +291,23 @@ def fit(
     report. Raises ``ValueError`` naming the bad element. Computed without the GIL.
     """
 
+def measure_fit(
+    motion: Motion,
+    path: Union[str, "os.PathLike[str]"],
+    *,
+    method: Literal["screwbender", "se3bspline"] = "screwbender",
+    radius: float = 1.0,
+    node: Optional[str] = None,
+    nodes: Optional[Sequence[str]] = None,
+) -> FitReport:
+    """The residuals of the open motion ``method`` whose control poses (and key times) are
+    ``motion``'s against the timestamped poses of the file at ``path`` (read as :func:`fit`
+    reads it): the report :func:`fit` gives for its own result, for any motion (a reduced or
+    edited one; ``iterations`` 0). Control poses without key times are spread over the samples'
+    time span, as a fit places them. Raises ``ValueError`` naming the bad element. Computed
+    without the GIL.
+    """
+
 def presets() -> list[str]:
     """The preset ids for ``Motion.from_preset``."""
 

@@ -56,3 +56,31 @@ def test_fit_refuses_bad_options(samples):
         sb.fit(samples, method="kks", controls=4)
     with pytest.raises(ValueError, match="poses"):
         sb.fit(samples, controls=301)
+
+
+def test_measure_fit_of_a_fit_is_its_report(cli, samples, tmp_path):
+    """A fit's own motion measured against its samples gives the fit's report, and the numbers
+    of `screwbender fit --measure`; a motion that covers half the path is far, and bad input is
+    named."""
+    for method in ("screwbender", "se3bspline"):
+        motion, report = sb.fit(samples, method=method, controls=10)
+        got = sb.measure_fit(motion, samples, method=method)
+        saved = tmp_path / f"{method}.json"
+        saved.write_text(motion.to_json())
+        by_cli = json.loads(cli(["fit", str(samples), "--method", method, "--measure", str(saved), "--json"]))
+        assert set(got) == set(by_cli)
+        for key, value in by_cli.items():
+            assert got[key] == (pytest.approx(value, rel=0, abs=1e-12) if isinstance(value, float) else value), key
+        assert got["iterations"] == 0
+        for key in ("controls", "samples"):
+            assert got[key] == report[key], key
+        for key in ("rms_position", "max_position", "rms_angle", "max_angle", "rms_deviation", "max_deviation"):
+            assert got[key] == pytest.approx(report[key], rel=0, abs=1e-12), (method, key)
+    # Half of the path stretched over the whole time span is far from the samples.
+    half = sb.Motion(sb.Motion.load(samples).poses[[0, 75, 150]], closed=False, times=[0.0, 7.5, 14.95])
+    fitted, report = sb.fit(samples, controls=10)
+    assert sb.measure_fit(half, samples)["rms_position"] > 10 * report["rms_position"]
+    with pytest.raises(ValueError, match="radius"):
+        sb.measure_fit(fitted, samples, radius=0.0)
+    with pytest.raises(ValueError, match="method"):
+        sb.measure_fit(fitted, samples, method="kks")

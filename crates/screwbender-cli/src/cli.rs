@@ -475,6 +475,10 @@ pub struct FitArgs {
     /// Write the document to OUT instead of standard output
     #[arg(long, short, value_name = "OUT", allow_hyphen_values = true)]
     pub output: Option<String>,
+    /// Fit nothing: report how far the motion of the document MOTION (its control poses and
+    /// key times, as a fit writes them) is from FILE's poses
+    #[arg(long, value_name = "MOTION", conflicts_with_all = ["controls", "tolerance", "smoothness", "robust", "output"])]
+    pub measure: Option<String>,
 }
 
 /// The whole command line as clap sees it (for parsing, completion scripts and the man page).

@@ -507,4 +507,50 @@ fn fit_writes_the_document_and_reports_the_core_residuals() {
         &run(&["fit", &input, "--controls", "4", "--robust", "l1"], ""),
         "--robust",
     );
+    // --measure: the fitted document measured against its samples gives the fit's report (no
+    // iterations); a motion that covers half the path is far; bad input is named.
+    let measured = run(
+        &[
+            "fit",
+            &input,
+            "--method",
+            "se3bspline",
+            "--measure",
+            &output,
+            "--json",
+        ],
+        "",
+    );
+    assert_eq!(measured.code, 0, "{}", measured.stderr);
+    let again: serde_json::Value = serde_json::from_str(&measured.stdout).unwrap();
+    assert_eq!(again["iterations"], 0);
+    assert_eq!(again["controls"], 6);
+    for key in ["rms_position", "max_position", "rms_angle", "max_deviation"] {
+        let (a, b) = (again[key].as_f64().unwrap(), report[key].as_f64().unwrap());
+        assert!((a - b).abs() <= 1e-12, "{key}: {a} against {b}");
+    }
+    let ends = dir.path("ends.json");
+    // Half of the path stretched over the whole time span.
+    let mut two = MotionDocument::new(vec![doc.poses[0], doc.poses[60]], false);
+    two.times = Some(vec![0.0, 11.9]);
+    std::fs::write(&ends, two.to_json()).unwrap();
+    let coarse = run(&["fit", &input, "--measure", &ends, "--json"], "");
+    assert_eq!(coarse.code, 0, "{}", coarse.stderr);
+    let coarse: serde_json::Value = serde_json::from_str(&coarse.stdout).unwrap();
+    let (c, f) = (
+        coarse["rms_position"].as_f64().unwrap(),
+        report["rms_position"].as_f64().unwrap(),
+    );
+    assert!(c > 10.0 * f, "half the path: {c}, the fit: {f}");
+    assert_fails(
+        &run(&["fit", &input, "--measure", &input, "--radius", "0"], ""),
+        "radius",
+    );
+    assert_fails(
+        &run(
+            &["fit", &input, "--measure", &output, "--controls", "4"],
+            "",
+        ),
+        "--controls",
+    );
 }

@@ -1,6 +1,7 @@
 //! `fit(path, …)`: a smooth motion fitted to the many timestamped poses of a file, as
 //! `screwbender fit` fits it (the core's `fit_poses`, docs/math/fitting.md), with the residual
-//! report under the CLI's `--json` names.
+//! report under the CLI's `--json` names; `measure_fit(motion, path, …)`: the same report for
+//! any motion against such poses (the core's `measure_fit`, as the page's lesson checks do).
 
 use std::path::PathBuf;
 
@@ -9,7 +10,8 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use screwbender::frontend::DEFAULT_LEVELS;
 use screwbender::{
-    fit_poses, ControlCount, FitMethod, FitOptions, RobustLoss, Rules, Scheme, Subdivision,
+    fit_poses, measure_fit as core_measure_fit, ControlCount, FitMethod, FitOptions, FitReport,
+    RobustLoss, Rules, Scheme, Subdivision,
 };
 
 use crate::convert::{detached, value_error};
@@ -63,7 +65,45 @@ pub fn fit<'py>(
         ..FitOptions::default()
     };
     let fitted = detached(py, || fit_poses(&doc, &options))?.map_err(value_error)?;
-    let r = fitted.report;
+    let report = report_dict(py, method, &fitted.report)?;
+    let motion = PyMotion::from_state(
+        fitted.document,
+        Subdivision::new(Scheme::BSpline, Rules::Direct, DEFAULT_LEVELS),
+    )?;
+    Ok((motion, report))
+}
+
+/// The residuals of the open motion `method` whose control poses (and key times) are those of
+/// `motion` against the timestamped poses of the file at `path` (read as [`fit`] reads it): the
+/// report [`fit`] gives for its own result, for any motion (a reduced or edited one). Control
+/// poses without key times are spread over the samples' time span, as a fit places them.
+/// Raises `ValueError` naming the bad element (`controls.…`, `samples.…`, `radius`).
+#[pyfunction]
+#[pyo3(signature = (motion, path, *, method="screwbender", radius=1.0, node=None, nodes=None))]
+pub fn measure_fit<'py>(
+    py: Python<'py>,
+    motion: PyRef<'_, PyMotion>,
+    path: PathBuf,
+    method: &str,
+    radius: f64,
+    node: Option<String>,
+    nodes: Option<Vec<String>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let method = FitMethod::from_name(method).map_err(value_error)?;
+    let samples = files::load(&path, node, nodes)?;
+    let controls = motion.document().clone();
+    drop(motion);
+    let report = detached(py, || core_measure_fit(&controls, &samples, method, radius))?
+        .map_err(value_error)?;
+    report_dict(py, method, &report)
+}
+
+/// A residual report under `screwbender fit --json`'s names.
+fn report_dict<'py>(
+    py: Python<'py>,
+    method: FitMethod,
+    r: &FitReport,
+) -> PyResult<Bound<'py, PyDict>> {
     let report = PyDict::new(py);
     report.set_item("method", method.name())?;
     report.set_item("controls", r.controls)?;
@@ -75,9 +115,5 @@ pub fn fit<'py>(
     report.set_item("rms_deviation", r.rms_deviation)?;
     report.set_item("max_deviation", r.max_deviation)?;
     report.set_item("iterations", r.iterations)?;
-    let motion = PyMotion::from_state(
-        fitted.document,
-        Subdivision::new(Scheme::BSpline, Rules::Direct, DEFAULT_LEVELS),
-    )?;
-    Ok((motion, report))
+    Ok(report)
 }

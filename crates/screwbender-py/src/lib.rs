@@ -8,7 +8,8 @@
 //!   compare --json`).
 //! * [`method_poses`]: `method_poses`, one comparison method's poses at chosen parameters.
 //! * [`files`]: `Motion.load` / `Motion.export` in the CLI's formats.
-//! * [`fit`]: `fit`, a smooth motion fitted to many measured poses (as `screwbender fit`).
+//! * [`fit`]: `fit`, a smooth motion fitted to many measured poses (as `screwbender fit`), and
+//!   `measure_fit`, any motion's residuals against such poses.
 //! * [`convert`]: numpy arrays ↔ poses, with errors naming the element.
 //!
 //! Every function validates its input and raises `ValueError` / `TypeError` naming the
@@ -74,6 +75,7 @@ fn _screwbender(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(compare::compare_methods, m)?)?;
     m.add_function(wrap_pyfunction!(method_poses::method_poses, m)?)?;
     m.add_function(wrap_pyfunction!(fit::fit, m)?)?;
+    m.add_function(wrap_pyfunction!(fit::measure_fit, m)?)?;
     m.add_function(wrap_pyfunction!(presets, m)?)?;
     m.add_function(wrap_pyfunction!(preset_descriptions, m)?)?;
     m.add_function(wrap_pyfunction!(preset_display, m)?)?;
