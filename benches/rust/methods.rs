@@ -16,26 +16,11 @@ mod native {
     use glam::{DQuat, DVec3};
     use screwbender::methods::{
         compare_methods, fit_quaternion_spline, Continuity, EndCondition, Method, MetricsOptions,
-        RationalMotion, RbOptions, ReferenceTriangle, Se3BSpline, TriangleSample,
+        RationalMotion, ReferenceTriangle, Se3BSpline, TriangleSample,
     };
     use screwbender::{Motion, Pose, Rules, Scheme, ScrewBender, Subdivision};
 
-    /// Scene C1's keyframes (`presets.md`), pose `i` at `t = i`.
-    fn sphere7() -> (Vec<f64>, Vec<DQuat>) {
-        let scene = screwbender::presets::preset("rb_sphere7").expect("scene C1");
-        let q: Vec<DQuat> = scene.poses.iter().map(|p| p.rotation).collect();
-        ((0..q.len()).map(|i| i as f64).collect(), q)
-    }
-
-    fn sphere7_options(frames: usize) -> RbOptions {
-        RbOptions {
-            omega_start: Some(DVec3::ZERO),
-            omega_end: Some(DVec3::ZERO),
-            variable_frames: frames,
-            min_relative_decrease: 0.0,
-            ..RbOptions::default()
-        }
-    }
+    use testkit::methods::{sphere7, sphere7_options};
 
     fn triangle7() -> Vec<TriangleSample> {
         (0..7)

@@ -2,6 +2,7 @@
 //! assertion helpers (no clock, no threads, no files: the same code runs under wasm).
 
 use glam::{DQuat, DVec3};
+use screwbender::methods::RbOptions;
 use screwbender::Pose;
 
 use crate::rng::Rng;
@@ -73,6 +74,25 @@ pub fn assert_rel(got: f64, want: f64, tol: f64, what: &str) {
         (got - want).abs() <= tol * want.abs().max(1e-300),
         "{what}: got {got}, expected {want} (relative tol {tol:e})"
     );
+}
+
+/// Scene C1's keyframes (`presets.md`, the preset `rb_sphere7`), keyframe `i` at `t = i`.
+pub fn sphere7() -> (Vec<f64>, Vec<DQuat>) {
+    let scene = screwbender::presets::preset("rb_sphere7").expect("scene C1");
+    let q: Vec<DQuat> = scene.poses.iter().map(|p| p.rotation).collect();
+    ((0..q.len()).map(|i| i as f64).collect(), q)
+}
+
+/// Ramamoorthi–Barr options of scene C1: zero end angular velocities, `frames` variable frames,
+/// and no early stop (the table of docs/math/quaternion-splines.md §8 runs all rounds).
+pub fn sphere7_options(frames: usize) -> RbOptions {
+    RbOptions {
+        omega_start: Some(DVec3::ZERO),
+        omega_end: Some(DVec3::ZERO),
+        variable_frames: frames,
+        min_relative_decrease: 0.0,
+        ..RbOptions::default()
+    }
 }
 
 /// The poses of scene A2 `l_cycle_rotated` (presets.md), cyclic: the library's preset.

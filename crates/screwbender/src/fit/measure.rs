@@ -3,9 +3,9 @@
 //! that did not come out of this fit (a lesson checks the motion a student made, whichever way
 //! it was made).
 
-use super::check_input;
 use super::model::{FitMethod, Model};
 use super::residual::FitReport;
+use super::{as_open, check_input, key_times};
 use crate::error::{Error, ErrorKind};
 use crate::formats::document::MotionDocument;
 
@@ -38,36 +38,19 @@ pub fn measure_fit(
             },
         ));
     }
-    let mut opened = controls.clone();
-    if opened.closed {
-        opened.set_closed(false);
-    }
-    let mut samples_open = samples.clone();
-    if samples_open.closed {
-        samples_open.set_closed(false);
-    }
-    check_input(&opened).map_err(|e| e.within("controls"))?;
-    check_input(&samples_open).map_err(|e| e.within("samples"))?;
-    let sample_times = times_of(&samples_open);
-    let (t0, t1) = (sample_times[0], sample_times[sample_times.len() - 1]);
-    let m = opened.poses.len();
-    let key_times: Vec<f64> = match &opened.times {
+    let (controls, samples) = (as_open(controls), as_open(samples));
+    check_input(&controls).map_err(|e| e.within("controls"))?;
+    check_input(&samples).map_err(|e| e.within("samples"))?;
+    let m = controls.poses.len();
+    let keys = match &controls.times {
         Some(t) => t.clone(),
-        None => (0..m)
-            .map(|k| t0 + (t1 - t0) * k as f64 / (m - 1) as f64)
-            .collect(),
+        None => key_times(&samples, m),
     };
-    let model = Model::build(method, &opened.poses)?;
-    let fitted = sample_times
-        .iter()
-        .map(|&t| model.pose_at(parameter_at(&key_times, t)));
-    Ok(FitReport::measure(
-        fitted,
-        &samples_open.poses,
-        radius,
-        m,
-        0,
-    ))
+    let model = Model::build(method, &controls.poses)?;
+    let fitted = times_of(&samples)
+        .into_iter()
+        .map(|t| model.pose_at(parameter_at(&keys, t)));
+    Ok(FitReport::measure(fitted, &samples.poses, radius, m, 0))
 }
 
 /// The sample times (`doc.times`, or one second apart).

@@ -111,16 +111,7 @@ pub struct FittedMotion {
 /// `robust_scale`, `max_iterations`), or a tolerance no fit of up to [`MAX_FIT_CONTROLS`]
 /// control poses meets (`tolerance`).
 pub fn fit_poses(doc: &MotionDocument, options: &FitOptions) -> Result<FittedMotion, Error> {
-    // Samples are a sequence in time: a cycle's return to its first pose is no sample.
-    let opened;
-    let doc = if doc.closed {
-        let mut d = doc.clone();
-        d.set_closed(false);
-        opened = d;
-        &opened
-    } else {
-        doc
-    };
+    let doc = &*as_open(doc);
     let fractions = check_input(doc)?;
     check_options(options)?;
     let n = doc.poses.len();
@@ -148,19 +139,34 @@ pub fn fit_poses(doc: &MotionDocument, options: &FitOptions) -> Result<FittedMot
             fit_tolerance(doc, &fractions, tolerance, options)?
         }
     };
-    let (t0, t1) = time_range(doc);
     let m = controls.len();
     let mut document = MotionDocument::new(controls, false);
     document.name = doc.name.clone();
-    document.times = Some(
-        (0..m)
-            .map(|k| t0 + (t1 - t0) * k as f64 / (m - 1) as f64)
-            .collect(),
-    );
+    document.times = Some(key_times(doc, m));
     Ok(FittedMotion { document, report })
 }
 
 /// The first and last sample times.
+/// `doc` as an open sequence: samples are a sequence in time, and a cycle's return to its first
+/// pose is no sample (an imported file whose last sample repeats its first reads as a cycle).
+fn as_open(doc: &MotionDocument) -> std::borrow::Cow<'_, MotionDocument> {
+    if !doc.closed {
+        return std::borrow::Cow::Borrowed(doc);
+    }
+    let mut d = doc.clone();
+    d.set_closed(false);
+    std::borrow::Cow::Owned(d)
+}
+
+/// The key times of `m` control poses spread uniformly over the samples' time span, as a fit
+/// places them.
+fn key_times(samples: &MotionDocument, m: usize) -> Vec<f64> {
+    let (t0, t1) = time_range(samples);
+    (0..m)
+        .map(|k| t0 + (t1 - t0) * k as f64 / (m - 1) as f64)
+        .collect()
+}
+
 fn time_range(doc: &MotionDocument) -> (f64, f64) {
     match &doc.times {
         Some(t) if !t.is_empty() => (t[0], t[t.len() - 1]),

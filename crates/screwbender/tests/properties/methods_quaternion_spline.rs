@@ -14,30 +14,12 @@ use screwbender::methods::{
 };
 use screwbender::ErrorKind;
 use screwbender::{Motion, Pose};
-use testkit::methods::{assert_quat_near, assert_rel, wxyz, SplitMix};
+use testkit::methods::{assert_quat_near, assert_rel, sphere7, sphere7_options, wxyz, SplitMix};
 
 /// Initial-path quantities are polynomial and exact: the values of docs/math/quaternion-splines.md §8 have six decimals.
 const SPEC_TOL: f64 = 1.5e-6;
 /// Optimised quantities: docs/math/quaternion-splines.md §8 says 1e-4 relative.
 const OPT_TOL: f64 = 1e-4;
-
-/// Scene C1's keyframes (`presets.md`, the preset `rb_sphere7`), keyframe `i` at `t = i`.
-fn sphere7() -> (Vec<f64>, Vec<DQuat>) {
-    let scene = screwbender::presets::preset("rb_sphere7").expect("scene C1");
-    let q: Vec<DQuat> = scene.poses.iter().map(|p| p.rotation).collect();
-    ((0..q.len()).map(|i| i as f64).collect(), q)
-}
-
-fn sphere7_options(frames: usize) -> RbOptions {
-    RbOptions {
-        omega_start: Some(DVec3::ZERO),
-        omega_end: Some(DVec3::ZERO),
-        variable_frames: frames,
-        // Never stop early: the table of docs/math/quaternion-splines.md §8 runs all rounds.
-        min_relative_decrease: 0.0,
-        ..RbOptions::default()
-    }
-}
 
 #[test]
 fn initial_path_numbers() {
