@@ -159,6 +159,8 @@ for (const size of SIZES) {
         const pulse = await page.evaluate(async (k) => {
           const L = window.__player;
           if (L.step !== k) L.go(k);
+          // A step's measured poses open the import dialog as it applies.
+          if (L.lesson.steps[k].samples && !document.getElementById('reduce-dialog')) throw new Error(`step ${k + 1}: its measured poses opened no import dialog`);
           // The ring's pulses as the step opens (they restart for each new target).
           const ring = L.spot() ? document.getElementById('lesson-spot').getAnimations().map((a) => ({ t: a.currentTime, end: a.effect.getComputedTiming().endTime, state: a.playState })) : [];
           const sb = window.screwbender;

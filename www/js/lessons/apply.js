@@ -45,7 +45,7 @@ export function applyStep(app, s, setTarget) {
  * @param {import('../app.js').App} app
  */
 export async function offerSamples(app, s) {
-  const { stepSamples } = await loadSamples();
+  const { stepSamples } = loadedSamples() ?? (await loadSamples());
   return app.parts.files.importPoses(stepSamples(s).document, `“${s.title}”`);
 }
 

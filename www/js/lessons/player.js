@@ -36,7 +36,7 @@ import { hasParams, lessonVariant, parseLesson } from './format.js';
 import { isSeed, newSeed } from './variants.js';
 import { readProgress, writeProgress, markTourSeen, tourSeen } from './progress.js';
 import { BASE, lessonUrl, resolveLessonName } from './urls.js';
-import { applyStep } from './apply.js';
+import { applyStep, loadSamples } from './apply.js';
 import { createCard } from './card.js';
 import { createExercise } from './exercise.js';
 import { createHighlight } from './highlight.js';
@@ -121,6 +121,7 @@ export function startLessons(app) {
       return false;
     }
     if (!openText(text, url.pathname.split('/').pop(), { resume, progress, seed })) return false;
+    if (st.lesson.steps.some((s) => s.samples)) await loadSamples().catch(() => {});
     // A `metric` or `residuals` check measures in the analysis module: fetched now, before the
     // first Check.
     if (measures(st.lesson)) await analysis().catch((e) => app.parts.notices.show(`${e.message}: this lesson's checks cannot measure the motion.`));
@@ -176,6 +177,9 @@ export function startLessons(app) {
     card.card.classList.toggle('tour', !!st.lesson.tour);
     card.lessonTitle.textContent = st.lesson.title;
     emit('open');
+    // A lesson with measured poses: their code fetched now (open() waits for it), so that a
+    // step opens its import dialog as it applies and a Check finds them.
+    if (st.lesson.steps.some((s) => s.samples)) loadSamples().catch(() => {});
     go(resume ? Math.min(st.progress.step, st.lesson.steps.length - 1) : 0);
     if (measures(st.lesson)) analysis().catch(() => {});
     return true;
