@@ -282,17 +282,27 @@ export class Viewer {
 
   requestDraw() {
     this.dirty = true;
+    this.wake();
+  }
+
+  /**
+   * Starts the frame loop unless it runs. It stops by itself when nothing is due (paused, the
+   * last frame drawn): a page that shows a still figure then asks the processor for nothing,
+   * where a loop that looked every display frame kept it awake.
+   */
+  wake() {
+    if (!this.raf && this.visible && this.renderer) this.raf = requestAnimationFrame(this.loop);
   }
 
   loop(now) {
-    if (!this.visible || !this.renderer) {
-      this.raf = 0;
-      return;
-    }
-    this.raf = requestAnimationFrame(this.loop);
+    this.raf = 0;
+    if (!this.visible || !this.renderer) return;
     const { anim, motion } = this.model;
     // Nothing to draw until the model has a motion (the loop runs from start()).
-    if (!motion) return;
+    if (!motion) {
+      this.raf = requestAnimationFrame(this.loop);
+      return;
+    }
     if (anim.playing) {
       // Real time: t advances in seconds (times the speed, which may be negative); the object
       // shows u = p(t). Past an end, playback wraps while passes remain (a cycle or a looping
@@ -321,6 +331,11 @@ export class Viewer {
     }
     this.lastNow = now;
     if (this.dirty && this.isShown()) this.draw();
+    // Playing, or a frame still due (not shown yet, or the surface was not ready): the next
+    // display frame looks again. Otherwise the loop rests until requestDraw or setPlaying.
+    // (Something in this frame may have started it again already: requestDraw from a callback.)
+    if (anim.playing || this.dirty) this.raf ||= requestAnimationFrame(this.loop);
+    else if (!this.raf) this.lastNow = undefined;
   }
 
   draw() {
@@ -401,6 +416,7 @@ export class Viewer {
     anim.visible = true;
     this.lastNow = undefined;
     this.onPlay(on);
+    this.requestDraw();
   }
 
   // ---------------------------------------------------------------- theme and pictures
