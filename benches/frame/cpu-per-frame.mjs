@@ -46,7 +46,7 @@ const browserPid = execSync(`pgrep -f -o -- '--user-data-dir=${os.tmpdir()}/${mi
 const looks = {};
 for (const [name, defaultLook] of [['default look', true], ['reduced transparency', false]]) {
   const { page } = await openPage(play.context, play.url, 'webgpu', { defaultLook });
-  await page.evaluate(() => window.screwbender.app.loadPreset('l_cycle_rotated'));
+  await page.evaluate(() => window.screwbender.app.run('loadPreset', 'l_cycle_rotated'));
   await waitFrames(page, 5);
   looks[name] = { page, ms: [] };
 }

@@ -7,7 +7,7 @@
 // On phones the Plots view shows one chart at a time, picked from a list, with nothing to scroll.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { waitFrames, playgroundPage, BACKEND } from './lib.mjs';
+import { BACKEND, DESKTOP, playgroundPage, waitFrames } from './lib.mjs';
 
 let play;
 let page;
@@ -261,7 +261,7 @@ test(`${BACKEND}: plots have units on the y axes and at least 3 labelled ticks o
 });
 
 test(`${BACKEND}: by default |α| is the limit motion's, non-zero where |ω| changes; the refined polyscrew's reads as 0 between its knots`, async () => {
-  await page.setViewportSize({ width: 1280, height: 800 });
+  await page.setViewportSize(DESKTOP);
   await openPlots();
   const alpha = () =>
     sb(() => {
@@ -352,7 +352,7 @@ test(`${BACKEND}: the playhead of every plot follows the time; hovering a plot s
 });
 
 test(`${BACKEND}: dark theme (D key): the charts switch to light ink live, keeping their zoom, data and playhead`, async () => {
-  await page.setViewportSize({ width: 1280, height: 800 });
+  await page.setViewportSize(DESKTOP);
   await sb(() => (window.screwbender.app.updateView({ theme: 'light' })));
   await openPlots();
   await sb((t) => window.screwbender.app.viewer.seekTime(t), 2.5);
@@ -484,7 +484,7 @@ const drawnSeries = () =>
   });
 
 test(`${BACKEND}: every series line has at least 3:1 against the dock in both themes (WCAG 1.4.11), switched live; legends show the lines' colours`, async () => {
-  await page.setViewportSize({ width: 1280, height: 800 });
+  await page.setViewportSize(DESKTOP);
   await sb(() => (window.screwbender.app.updateView({ theme: 'light' })));
   await openPlots();
   // Methods with the Chaudhry–Cameron charts (slot 1; C⁰ on this cycle) and Ramamoorthi–Barr's (slot 3).

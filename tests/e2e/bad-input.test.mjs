@@ -12,9 +12,8 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { waitFrames, playgroundPage, ROOT, BACKEND } from './lib.mjs';
+import { BACKEND, DESKTOP, ROOT, playgroundPage, waitFrames } from './lib.mjs';
 
-const VIEWPORT = { width: 1280, height: 800 };
 
 let play;
 let url;
@@ -23,7 +22,7 @@ let page;
 let problems;
 
 before(async () => {
-  ({ play, page, problems } = await playgroundPage({ viewport: VIEWPORT }));
+  ({ play, page, problems } = await playgroundPage({ viewport: DESKTOP }));
   ({ url, context } = play);
 });
 

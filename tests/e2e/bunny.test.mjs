@@ -9,7 +9,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { createRequire } from 'node:module';
-import { ROOT, BACKEND, playgroundPage, waitFrames, canvasStats } from './lib.mjs';
+import { BACKEND, DESKTOP, ROOT, canvasStats, playgroundPage, waitFrames } from './lib.mjs';
 
 const ARTIFACTS = path.join(ROOT, `artifacts/e2e-${BACKEND}`);
 let play;
@@ -60,7 +60,7 @@ test(`${BACKEND}: the bunny preset's object is the Stanford bunny mesh`, async (
   await page.setViewportSize({ width: 390, height: 844 });
   await waitFrames(page, 3);
   await page.screenshot({ path: path.join(ARTIFACTS, 'bunny6-phone.png') });
-  await page.setViewportSize({ width: 1280, height: 800 });
+  await page.setViewportSize(DESKTOP);
   assert.deepEqual(problems, []);
   assert.deepEqual(await sb(() => window.screwbender.errors()), []);
 });

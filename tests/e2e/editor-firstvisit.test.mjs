@@ -8,7 +8,7 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { startPlayground, openPage, waitFrames, ROOT, BACKEND } from './lib.mjs';
+import { BACKEND, DESKTOP, ROOT, openPage, startPlayground, waitFrames } from './lib.mjs';
 
 const ARTIFACTS = path.join(ROOT, 'artifacts', `e2e-${BACKEND}`);
 let play;
@@ -81,7 +81,7 @@ test(`${BACKEND}: the preset chooser: human names, figure subtitles, description
 });
 
 test(`${BACKEND}: WebGPU without an adapter is neutral information`, async () => {
-  const context = await play.browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const context = await play.browser.newContext({ viewport: DESKTOP });
   // A browser whose WebGPU finds no adapter (as on many machines without a GPU driver for it).
   await context.addInitScript(() => {
     Object.defineProperty(navigator, 'gpu', {
@@ -126,7 +126,7 @@ test(`${BACKEND}: the strobe slider is logarithmic; the count field takes exact 
 const posesOf = (page) => page.evaluate(() => JSON.stringify(Array.from(window.screwbender.poses(), (v) => Math.round(v * 1e6) / 1e6)));
 
 test(`${BACKEND}: two tabs: the work of each is kept, and offered again after both are closed`, async () => {
-  const context = await play.browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const context = await play.browser.newContext({ viewport: DESKTOP });
   try {
     const a = await openPage(context, play.url, BACKEND);
     await a.page.evaluate(() => window.screwbender.app.run('loadPreset', 'pendulum'));
@@ -157,7 +157,7 @@ test(`${BACKEND}: two tabs: the work of each is kept, and offered again after bo
 });
 
 test(`${BACKEND}: a sandboxed frame without storage says once, in words, that work is not kept`, async () => {
-  const context = await play.browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const context = await play.browser.newContext({ viewport: DESKTOP });
   try {
     const page = await context.newPage();
     await page.setContent(`<iframe sandbox="allow-scripts" src="${play.url}" style="width:1000px;height:700px;border:0"></iframe>`);

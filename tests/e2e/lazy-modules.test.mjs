@@ -7,7 +7,7 @@
 // not load, the editor keeps working (edits, undo), and the next try loads it.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { startPlayground, waitFrames, BACKEND, EXPECTED_BACKEND } from './lib.mjs';
+import { BACKEND, DESKTOP, EXPECTED_BACKEND, startPlayground, waitFrames } from './lib.mjs';
 
 let play;
 
@@ -21,7 +21,7 @@ after(async () => {
 
 /** A first visit (a fresh context: no autosave); `requests` lists the paths it fetched, in order. */
 async function open(route) {
-  const context = await play.browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const context = await play.browser.newContext({ viewport: DESKTOP });
   const page = await context.newPage();
   const requests = [];
   const problems = [];

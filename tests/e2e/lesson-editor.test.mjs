@@ -11,7 +11,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
-import { BACKEND, startPlayground, openPage, shotPath, mouseDrag, waitFrames } from './lib.mjs';
+import { BACKEND, DESKTOP, mouseDrag, openPage, shotPath, startPlayground, waitFrames } from './lib.mjs';
 
 let play;
 let page;
@@ -208,7 +208,7 @@ test('the lesson is saved, and its link opens the same lesson in a fresh browser
   assert.match(link, /#lesson=[A-Za-z0-9_-]+$/);
   assert.ok(link.length < 8000);
 
-  const fresh = await play.browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const fresh = await play.browser.newContext({ viewport: DESKTOP });
   try {
     const p2 = await fresh.newPage();
     await p2.goto(link);
@@ -278,7 +278,7 @@ test('a lesson link over the limit gets the message; drafts survive a reload, a 
   await page.setViewportSize({ width: 390, height: 844 });
   await waitFrames(page, 2);
   await page.screenshot({ path: shotPath('lesson-editor/editor-390.png') });
-  await page.setViewportSize({ width: 1280, height: 800 });
+  await page.setViewportSize(DESKTOP);
   assert.deepEqual(problems, []);
   assert.deepEqual(await page.evaluate(() => window.__csp), [], 'no content-security-policy violation');
 });

@@ -17,7 +17,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { promisify } from 'node:util';
 import { unzipSync } from 'fflate';
-import { ROOT, BACKEND, launch, serveDir, shotPath } from './lib.mjs';
+import { BACKEND, DESKTOP, ROOT, launch, serveDir, shotPath } from './lib.mjs';
 
 const DIR = path.join(ROOT, `artifacts/e2e-${BACKEND}/lesson-package`);
 const SCORM_AGAIN = path.join(ROOT, 'node_modules/scorm-again/dist');
@@ -100,7 +100,7 @@ before(async () => {
   for (const [k, v] of Object.entries(PKGS)) unpack(k, v);
   server = await serveDir(DIR);
   browser = await started;
-  context = await browser.newContext({ viewport: { width: 1280, height: 800 }, acceptDownloads: true });
+  context = await browser.newContext({ viewport: DESKTOP, acceptDownloads: true });
   track(context);
   page = await context.newPage();
   page.on('pageerror', (e) => assert.fail(`harness: ${e.message}`));
@@ -240,7 +240,7 @@ for (const format of ['scorm12', 'scorm2004']) {
     if (v12) {
       await page.setViewportSize({ width: 390, height: 844 });
       await page.screenshot({ path: shotPath('scorm/harness-phone.png') });
-      await page.setViewportSize({ width: 1280, height: 800 });
+      await page.setViewportSize(DESKTOP);
     }
     await leave(v12 ? 'LMSFinish' : 'Terminate');
     cmi = await page.evaluate(() => window.cmi());
@@ -296,7 +296,7 @@ test('a three-lesson course starts at its menu and scores over all lessons', asy
 
 test('outside an LMS the package runs as a plain lesson and says so once', async () => {
   // A browser of its own: no progress or playground state from the launches above.
-  const own = await browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const own = await browser.newContext({ viewport: DESKTOP });
   track(own);
   const solo = await own.newPage();
   await solo.goto(`${server.url}scorm12/lesson.html`);

@@ -8,7 +8,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
-import { waitFrames, playgroundPage, openPage, openViewMenu, downloadFrom, BACKEND } from './lib.mjs';
+import { BACKEND, DESKTOP, downloadFrom, openPage, openViewMenu, playgroundPage, waitFrames } from './lib.mjs';
 
 let play;
 let page;
@@ -206,7 +206,7 @@ test('dark theme: the toggle darkens the page and the canvas, and is kept in the
 });
 
 test('prefers-color-scheme: dark gives the dark theme on a first visit', async () => {
-  const context = await play.browser.newContext({ viewport: { width: 1280, height: 800 }, colorScheme: 'dark' });
+  const context = await play.browser.newContext({ viewport: DESKTOP, colorScheme: 'dark' });
   try {
     const { page: p, problems: pp } = await openPage(context, play.url, BACKEND);
     const s = await p.evaluate(() => ({ theme: document.documentElement.dataset.theme, setting: window.screwbender.app.view.theme }));

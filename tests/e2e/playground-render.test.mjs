@@ -7,7 +7,7 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { waitFrames, canvasStats, playgroundPage, ROOT, BACKEND, EXPECTED_BACKEND as EXPECTED } from './lib.mjs';
+import { BACKEND, DESKTOP, ROOT, EXPECTED_BACKEND as EXPECTED, canvasStats, playgroundPage, waitFrames } from './lib.mjs';
 
 const ARTIFACTS = path.join(ROOT, 'artifacts', `e2e-${BACKEND}`);
 
@@ -17,7 +17,7 @@ let problems;
 
 before(async () => {
   fs.mkdirSync(ARTIFACTS, { recursive: true });
-  ({ play, page, problems } = await playgroundPage({ viewport: { width: 1280, height: 800 } }));
+  ({ play, page, problems } = await playgroundPage({ viewport: DESKTOP }));
 });
 
 after(async () => {

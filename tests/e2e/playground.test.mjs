@@ -12,10 +12,9 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { openPage, waitFrames, mouseDrag, startPlayground, ROOT, BACKEND } from './lib.mjs';
+import { BACKEND, DESKTOP, ROOT, mouseDrag, openPage, startPlayground, waitFrames } from './lib.mjs';
 
 const ARTIFACTS = path.join(ROOT, 'artifacts', `e2e-${BACKEND}`);
-const VIEWPORT = { width: 1280, height: 800 };
 
 let play;
 let url;
@@ -25,7 +24,7 @@ let problems;
 
 before(async () => {
   fs.mkdirSync(ARTIFACTS, { recursive: true });
-  play = await startPlayground({ viewport: VIEWPORT, acceptDownloads: true });
+  play = await startPlayground({ viewport: DESKTOP, acceptDownloads: true });
   ({ url, context } = play);
   ({ page, problems } = await openPage(context, url, BACKEND));
 });
@@ -197,7 +196,7 @@ test(`${BACKEND}: a share link reproduces the session in a fresh browser context
   await page.keyboard.press('2');
   const link = await sb(() => window.screwbender.app.parts.session.shareLink());
   const session = await sb(() => window.screwbender.session());
-  const other = await play.browser.newContext({ viewport: VIEWPORT });
+  const other = await play.browser.newContext({ viewport: DESKTOP });
   const p2 = await other.newPage();
   await p2.goto(BACKEND === 'webgl2' ? link.replace('/#', '/?backend=webgl2#') : link);
   await p2.evaluate(() => window.screwbender.ready);
@@ -301,14 +300,15 @@ test(`${BACKEND}: touch: one finger orbits, two fingers pinch-zoom`, async () =>
   const cam0 = await sb(() => window.screwbender.app.viewer.camera.toJSON());
   const touch = (type, points) => cdp.send('Input.dispatchTouchEvent', { type, touchPoints: points.map(([x, y], id) => ({ x, y, id })) });
   // One finger on empty ground (bottom left), dragged sideways.
-  await touch('touchStart', [[200, 650]]);
-  for (let k = 1; k <= 5; k++) await touch('touchMove', [[200 + 20 * k, 650]]);
+  const y = DESKTOP.height - 100;
+  await touch('touchStart', [[200, y]]);
+  for (let k = 1; k <= 5; k++) await touch('touchMove', [[200 + 20 * k, y]]);
   await touch('touchEnd', []);
   const cam1 = await sb(() => window.screwbender.app.viewer.camera.toJSON());
   assert.ok(Math.abs(cam1.yaw - cam0.yaw) > 0.2, `yaw ${cam0.yaw} -> ${cam1.yaw}`);
   // Two fingers moving apart zoom in.
-  await touch('touchStart', [[200, 650], [260, 650]]);
-  for (let k = 1; k <= 5; k++) await touch('touchMove', [[200 - 10 * k, 650], [260 + 10 * k, 650]]);
+  await touch('touchStart', [[200, y], [260, y]]);
+  for (let k = 1; k <= 5; k++) await touch('touchMove', [[200 - 10 * k, y], [260 + 10 * k, y]]);
   await touch('touchEnd', []);
   const cam2 = await sb(() => window.screwbender.app.viewer.camera.toJSON());
   assert.ok(cam2.distance < cam1.distance * 0.8, `distance ${cam1.distance} -> ${cam2.distance}`);

@@ -4,7 +4,7 @@
 // Each case opens the link in a fresh browser context (no autosave) unless it says otherwise.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { BACKEND, openPage, startPlayground, waitFrames } from './lib.mjs';
+import { BACKEND, DESKTOP, openPage, startPlayground, waitFrames } from './lib.mjs';
 
 let play;
 
@@ -18,7 +18,7 @@ after(async () => {
 
 /** Opens the playground at `query` in a new context (or `context`); returns {page, problems, context}. */
 async function open(query, context = null) {
-  const ctx = context ?? (await play.browser.newContext({ viewport: { width: 1280, height: 800 } }));
+  const ctx = context ?? (await play.browser.newContext({ viewport: DESKTOP }));
   const { page, problems } = await openPage(ctx, play.url, BACKEND, { path: query });
   return { page, problems, context: ctx };
 }

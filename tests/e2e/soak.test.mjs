@@ -15,10 +15,9 @@
 // the counts are printed, and the seed is named in every failure message.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { waitFrames, playgroundPage, BACKEND } from './lib.mjs';
+import { BACKEND, DESKTOP, playgroundPage, waitFrames } from './lib.mjs';
 import { prng } from '../js/prng.mjs';
 
-const VIEWPORT = { width: 1280, height: 800 };
 const BATCHES = Number(process.env.SOAK_BATCHES ?? 4);
 if (!(Number.isInteger(BATCHES) && BATCHES >= 2)) throw new Error(`SOAK_BATCHES=${process.env.SOAK_BATCHES}: a whole number of at least 2`);
 /** App operations per batch, and real mouse drags after each batch. */
@@ -40,7 +39,7 @@ let page;
 let problems;
 
 before(async () => {
-  ({ play, page, problems } = await playgroundPage({ viewport: VIEWPORT }));
+  ({ play, page, problems } = await playgroundPage({ viewport: DESKTOP }));
 });
 
 after(async () => {
@@ -169,7 +168,7 @@ async function drag(from, dx, dy, steps = 3) {
   await page.mouse.up();
 }
 
-const onScreen = (p) => p && Number.isFinite(p.x) && Number.isFinite(p.y) && p.x > 20 && p.y > 80 && p.x < VIEWPORT.width - 300 && p.y < VIEWPORT.height - 60;
+const onScreen = (p) => p && Number.isFinite(p.x) && Number.isFinite(p.y) && p.x > 20 && p.y > 80 && p.x < DESKTOP.width - 300 && p.y < DESKTOP.height - 60;
 
 test(`${BACKEND}: soak: random edits and drags keep the page healthy (seed ${SEED})`, async () => {
   console.log(`# soak: seed ${SEED} (SOAK_SEED=${SEED} to reproduce), ${BATCHES} batches`);

@@ -12,7 +12,7 @@
 // toolbar's states readable at 4.5:1. Screenshots: artifacts/e2e-<backend>/truth-*.png.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { playgroundPage, openPage, waitFrames, mouseDrag, BACKEND } from './lib.mjs';
+import { BACKEND, DESKTOP, mouseDrag, openPage, playgroundPage, waitFrames } from './lib.mjs';
 
 let play;
 let page;
@@ -30,7 +30,7 @@ const sb = (f, arg) => page.evaluate(f, arg);
 const SIZES = [[1280, 800], [390, 844], [844, 390]];
 
 test(`${BACKEND}: the methods table on the L cycle: C¹ jumps are 0, SLERP + linear's are its closed form and its accelerations impulses`, async () => {
-  await page.setViewportSize({ width: 1280, height: 800 });
+  await page.setViewportSize(DESKTOP);
   const r = await sb(async () => {
     const { app } = window.screwbender;
     app.run('loadPreset', 'l_cycle_rotated');
@@ -106,7 +106,7 @@ const easeState = () =>
   });
 
 test(`${BACKEND}: Ease in / out gives du/dt = 0 at both ends, keeps the times, says so, and one undo takes it back`, async () => {
-  await page.setViewportSize({ width: 1280, height: 800 });
+  await page.setViewportSize(DESKTOP);
   await sb(async () => {
     const { app } = window.screwbender;
     app.run('loadPreset', 'cylinder5');
@@ -140,7 +140,7 @@ test(`${BACKEND}: Ease in / out gives du/dt = 0 at both ends, keeps the times, s
 });
 
 test(`${BACKEND}: ?lesson=screw opens lesson 1 by its id; a wrong answer says why; Finish shows the summary and the next lesson`, async () => {
-  const context = await play.browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const context = await play.browser.newContext({ viewport: DESKTOP });
   try {
     const { page: p, problems: pp } = await openPage(context, play.url, BACKEND, { path: `${BACKEND === 'webgl2' ? '&' : '?'}lesson=screw` });
     await p.evaluate(() => window.screwbender.lessons.then((L) => L.ready));
@@ -221,7 +221,8 @@ test(`${BACKEND}: the first-visit hint goes after the first orbit`, async () => 
 });
 
 test(`${BACKEND}: every toolbar state (off, on, hover on either, disabled) reads at 4.5:1 or more`, async () => {
-  await page.setViewportSize({ width: 1280, height: 800 });
+  // A window tall enough for the buttons' names (shorter ones put them in the tooltips).
+  await page.setViewportSize({ width: 1440, height: 900 });
   await sb(() => {
     const { app } = window.screwbender;
     app.run('loadPreset', 'cylinder5');
@@ -318,14 +319,14 @@ test(`${BACKEND}: the Top view frames the poses below the header, above the time
       assert.ok(p.y > 0 && p.y < h && p.x > 0 && p.x < w, `${w}x${h}: ${what} on screen`);
     }
   }
-  await page.setViewportSize({ width: 1280, height: 800 });
+  await page.setViewportSize(DESKTOP);
   assert.deepEqual(problems, []);
 });
 
 test(`${BACKEND}: a preset is framed clear of the panel and the dock: pose 2's rotate gizmo of the tumbling cylinder stays between them`, async () => {
   // A page of its own: the framing starts from a first visit's view, not from the views the
   // tests above left.
-  const context = await play.browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const context = await play.browser.newContext({ viewport: DESKTOP });
   try {
     const { page: p, problems: pp } = await openPage(context, play.url, BACKEND);
     await p.evaluate(async () => {

@@ -8,7 +8,7 @@
 // The pictures of the timeline for the docs are scripts/docs-shots.mjs's.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { waitFrames, openPage, playgroundPage, BACKEND } from './lib.mjs';
+import { BACKEND, DESKTOP, openPage, playgroundPage, waitFrames } from './lib.mjs';
 
 let play;
 let page;
@@ -401,7 +401,7 @@ test(`${BACKEND}: times and velocities survive a reload and a share link; old se
   assert.equal(await json(), want);
   assert.deepEqual(await times(), TIMES);
   // The share link, in a fresh page of its own (its own storage is the context's: cleared first).
-  const ctx = await play.browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const ctx = await play.browser.newContext({ viewport: DESKTOP });
   try {
     const { page: other, problems: otherProblems } = await openPage(ctx, play.url, BACKEND, { path: link.slice(link.indexOf('#')) });
     assert.equal(await other.evaluate(() => window.screwbender.app.motion.toJson()), want);

@@ -10,7 +10,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
-import { waitFrames, playgroundPage, openViewMenu, downloadFrom } from './lib.mjs';
+import { DESKTOP, downloadFrom, openViewMenu, playgroundPage, waitFrames } from './lib.mjs';
 import { webmInfo } from './containers.mjs';
 
 let play;
@@ -101,7 +101,7 @@ test('orthographic: the projection changes, persists, and a real click still sel
 });
 
 test('the View menu at phone size and at 1280×800: on screen, by keyboard, Esc closes it', async () => {
-  for (const size of [{ width: 390, height: 844 }, { width: 1280, height: 800 }]) {
+  for (const size of [{ width: 390, height: 844 }, DESKTOP]) {
     await page.setViewportSize(size);
     await waitFrames(page, 2);
     await page.focus('#t-view');
@@ -138,7 +138,7 @@ test('a bad video format is refused with a message, and nothing is recorded', as
 });
 
 test('cancelling a recording stops it and downloads nothing', async () => {
-  await page.setViewportSize({ width: 1280, height: 800 });
+  await page.setViewportSize(DESKTOP);
   await waitFrames(page, 2);
   const anim = await page.evaluate(() => ({ u: window.screwbender.app.anim.u, playing: window.screwbender.app.anim.playing }));
   let downloads = 0;

@@ -7,7 +7,7 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { ROOT, BACKEND, playgroundPage, waitFrames } from './lib.mjs';
+import { BACKEND, DESKTOP, ROOT, playgroundPage, waitFrames } from './lib.mjs';
 
 const ARTIFACTS = path.join(ROOT, `artifacts/e2e-${BACKEND}`);
 let play;
@@ -97,7 +97,7 @@ test(`${BACKEND}: Methods view plots Chaudhry–Cameron's vertices with end cond
   await sb(() => document.querySelector('#dock section[data-view=methods] .cc h4').scrollIntoView({ block: 'start' }));
   await waitFrames(page, 2);
   await page.screenshot({ path: path.join(ARTIFACTS, 'view-methods-cc-phone.png') });
-  await page.setViewportSize({ width: 1280, height: 800 });
+  await page.setViewportSize(DESKTOP);
   assert.deepEqual(problems, []);
   assert.deepEqual((await sb(() => window.screwbender.errors())).filter((m) => !m.startsWith('Warning: ')), []);
 });
