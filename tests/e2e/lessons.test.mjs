@@ -506,6 +506,8 @@ test('axe finds no serious or critical violation in the lesson menu, card and ex
 
 test('screenshots of each lesson (docs/screenshots/lessons/ with DOCS_SHOTS=1)', async () => {
   fs.mkdirSync(SHOTS, { recursive: true });
+  // At the size of the docs' other pictures (scripts/docs-shots.mjs), not the tests' window.
+  await page.setViewportSize({ width: 1280, height: 800 });
   // The refused URLs of an earlier test leave their message up for 9 s: dismissed, as a reader
   // would, so that it is not in the pictures.
   // The card may sit over the banner: its close button by keyboard, as a user would reach it.
