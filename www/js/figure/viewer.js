@@ -183,8 +183,7 @@ export class Viewer {
       this.requestDraw();
     });
     this.resizeObserver.observe(this.canvas);
-    this.dirty = true;
-    this.raf = this.visible ? requestAnimationFrame(this.loop) : 0;
+    this.requestDraw();
   }
 
   /**
@@ -228,8 +227,7 @@ export class Viewer {
     this.visible = on;
     if (on && !this.raf && this.renderer) {
       this.lastNow = undefined;
-      this.dirty = true;
-      this.raf = requestAnimationFrame(this.loop);
+      this.requestDraw();
     }
   }
 
@@ -287,8 +285,8 @@ export class Viewer {
 
   /**
    * Starts the frame loop unless it runs. It stops by itself when nothing is due (paused, the
-   * last frame drawn): a page that shows a still figure then asks the processor for nothing,
-   * where a loop that looked every display frame kept it awake.
+   * last frame drawn), so that a page showing a still figure asks the processor for nothing
+   * between changes.
    */
   wake() {
     if (!this.raf && this.visible && this.renderer) this.raf = requestAnimationFrame(this.loop);
