@@ -11,6 +11,14 @@ export DEBIAN_FRONTEND=noninteractive
 # cargo's bin dir may be missing from PATH in a non-login shell; wasm-bindgen lands there.
 export PATH="${CARGO_HOME:-$HOME/.cargo}/bin:$PATH"
 
+# Line tables, not full debug info, for the workspace's own crates in the scripts' debug and
+# test builds (their dependencies have only line tables already, Cargo.toml): a failing test
+# still names its file and line, and the suite's cold debug builds take less of the processor
+# (the wasm tests' above all, where the linker and wasm-bindgen carry the DWARF). Set here, so
+# that every script's builds agree and share their artifacts; cargo run by hand keeps full debug
+# info.
+export CARGO_PROFILE_DEV_DEBUG=${CARGO_PROFILE_DEV_DEBUG:-line-tables-only}
+
 # The only Rust target besides the host that this project builds for (used by the scripts).
 # shellcheck disable=SC2034
 WASM_TARGET=wasm32-unknown-unknown
