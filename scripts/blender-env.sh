@@ -20,5 +20,6 @@ flock 9
 if [[ ! -x $venv/bin/python ]]; then
   timed "venv of CPython 3.11" "$py" -m venv "$venv"
 fi
-timed "pip install bpy (pinned)" "$venv/bin/pip" install --quiet --disable-pip-version-check \
+uv=$(uv_bin)
+timed "uv pip install bpy (pinned)" "$uv" pip install --quiet --python "$venv/bin/python" \
   -r tests/blender/requirements.txt

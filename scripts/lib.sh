@@ -91,6 +91,27 @@ as_root() {
   if ((EUID == 0)); then "$@"; else sudo "$@"; fi
 }
 
+# The uv that installs the test environments' pinned requirements (.venv, .venv-blender and the
+# clean venvs of the Python stage): it resolves, downloads and links the same pinned wheels as
+# pip with a small fraction of pip's processor time, and leaves the bytecode to be compiled on
+# first import, of the modules a test imports only (docs/speed/suite.md has the measurements).
+# The wheel itself is still built and installed with each venv's own pip, as users install it.
+UV_VERSION=0.13.9
+
+# uv_bin: the path of uv $UV_VERSION, installed on first use into .venv-uv/ (ignored) by a venv's
+# pip; several stages may ask at once, so under a lock.
+uv_bin() {
+  local dir=$REPO_ROOT/.venv-uv
+  (
+    flock 9
+    if [[ ! -x $dir/bin/uv || $("$dir/bin/uv" --version 2>/dev/null | awk '{print $2}') != "$UV_VERSION" ]]; then
+      [[ -x $dir/bin/pip ]] || python3 -m venv "$dir" >&2
+      "$dir/bin/pip" install --quiet --disable-pip-version-check "uv==$UV_VERSION" >&2
+    fi
+  ) 9>"$REPO_ROOT/.venv-uv.lock"
+  echo "$dir/bin/uv"
+}
+
 # python_at X.Y: the path of CPython X.Y: pyenv's (`pyenv root`, default ~/.pyenv), else
 # pythonX.Y on PATH; fails when there is none.
 python_at() {

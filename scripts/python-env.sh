@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The Python test environment: a virtual environment in .venv/ (ignored) with the pinned
-# python/requirements-dev.txt. Run by the Python stage (scripts/test.d/python.sh), and started
+# python/requirements-dev.txt, installed by uv (scripts/lib.sh `uv_bin`). Run by the Python stage (scripts/test.d/python.sh), and started
 # early in the background by scripts/test.sh so that the install (mostly one core, and the
 # network on a fresh machine) runs beside the Rust stages; a lock makes the stage wait for it.
 #
@@ -17,5 +17,6 @@ flock 9
 if [[ ! -x $venv/bin/python ]]; then
   timed "python venv" "$py" -m venv "$venv"
 fi
-timed "pip install (pinned)" "$venv/bin/pip" install --quiet --disable-pip-version-check \
+uv=$(uv_bin)
+timed "uv pip install (pinned)" "$uv" pip install --quiet --python "$venv/bin/python" \
   -r python/requirements-dev.txt

@@ -60,8 +60,8 @@ prepare_venv() {
   label=$("$py" -c 'import platform; print(platform.python_version())')
   dir=$compat/$label
   timed "venv of CPython $label" "$py" -m venv "$dir"
-  timed "pip install requirements-compat.txt (CPython $label)" "$dir/bin/pip" install --quiet \
-    --disable-pip-version-check -r python/requirements-compat.txt
+  timed "uv pip install requirements-compat.txt (CPython $label)" "$(uv_bin)" pip install --quiet \
+    --python "$dir/bin/python" -r python/requirements-compat.txt
 }
 
 # test_wheel_on PYTHON: the wheel into PYTHON's venv (prepare_venv's); then the tests, not
