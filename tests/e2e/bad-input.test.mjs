@@ -11,6 +11,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
+import os from 'node:os';
 import path from 'node:path';
 import { BACKEND, DESKTOP, ROOT, playgroundPage, waitFrames } from './lib.mjs';
 
@@ -158,12 +159,21 @@ test(`${BACKEND}: oversized files are refused by size, nothing changed`, async (
   await fresh();
   const before = await session();
   const limit = await sb(() => window.screwbender.app.limits.maxDocumentBytes);
-  const big = Buffer.alloc(limit + 1, 0x20);
-  let msg = await nextError(() => page.locator('#json-file').setInputFiles({ name: 'big.json', mimeType: 'application/json', buffer: big }));
-  assert.match(msg, new RegExp(`big\\.json is ${limit + 1} bytes; the limit is ${limit} bytes`));
-  const mesh = Buffer.alloc((32 << 20) + 1, 0x20);
-  msg = await nextError(() => page.locator('#obj-file').setInputFiles({ name: 'big.obj', mimeType: 'text/plain', buffer: mesh }));
-  assert.match(msg, /The mesh file is over 32 MiB/);
+  // Written to disk and chosen by path: Playwright hands a local browser the path, where a
+  // buffer of 32 MiB would cross the DevTools protocol in base64 (seconds of both cores).
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'sb-big-'));
+  try {
+    const big = path.join(dir, 'big.json');
+    fs.writeFileSync(big, Buffer.alloc(limit + 1, 0x20));
+    let msg = await nextError(() => page.locator('#json-file').setInputFiles(big));
+    assert.match(msg, new RegExp(`big\\.json is ${limit + 1} bytes; the limit is ${limit} bytes`));
+    const mesh = path.join(dir, 'big.obj');
+    fs.writeFileSync(mesh, Buffer.alloc((32 << 20) + 1, 0x20));
+    msg = await nextError(() => page.locator('#obj-file').setInputFiles(mesh));
+    assert.match(msg, /The mesh file is over 32 MiB/);
+  } finally {
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
   assert.equal(await session(), before);
 });
 
