@@ -79,6 +79,8 @@ test('figures never touch localStorage (no persist attribute)', async () => {
   const h = await handleOf(page, 'fig-jarek', 1);
   await drag(page, h, 30, -20);
   await showFigure(page, 'fig-fourpoint');
+  // Paused again: the shared page's later tests would draw its frames for nothing.
+  await page.evaluate(() => document.getElementById('fig-screw').pause());
   assert.deepEqual(await page.evaluate(() => window.__storage), []);
   assert.equal(await page.evaluate(() => localStorage.length), 0);
   assert.deepEqual(problems, []);
@@ -202,6 +204,7 @@ test('off-screen figures draw no frames', async () => {
   // fig-screw (on screen, playing) draws; fig-jarek (below the fold, playing) does not.
   assert.ok(f1[0] >= f0[0] + 2, `on-screen figure drew ${f1[0] - f0[0]} frames`);
   assert.equal(f1[1], f0[1], 'the off-screen figure drew nothing');
+  await page.evaluate(() => ['fig-screw', 'fig-jarek'].forEach((i) => document.getElementById(i).pause()));
   assert.deepEqual(problems, []);
 });
 
