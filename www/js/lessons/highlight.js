@@ -1,5 +1,5 @@
 // The highlight of a lesson step: a ring around a control, a panel entry, a pose's handle or a
-// gizmo handle, followed every frame while the step shows it, and the means to reach what it
+// gizmo handle, followed every frame while anything on the page moves, and the means to reach what it
 // points at. The card covers none of the page's chrome (css/lessons.css makes room for it), so
 // the ring's target is reachable where it is, with two exceptions handled here: a control that
 // its container's scrolling hides (the panel, a toolbar kept to one row) is scrolled into view,
@@ -7,6 +7,9 @@
 // it.
 import { el } from '../dom.js';
 import { foldPanelOnSmallScreens } from '../editor/fold.js';
+
+/** How long (ms) the ring keeps following its target after it last moved. */
+const QUIET_MS = 1000;
 
 /**
  * Creates the highlight ring (#lesson-spot) of the lesson card `parts` ({card, proxy}: card.js)
@@ -23,6 +26,8 @@ export function createHighlight(app, { card, proxy }) {
   let target = null;
   let raf = 0;
   let lastKey = '';
+  /** When the ring last moved (performance.now()); its frame loop stops QUIET_MS after that. */
+  let movedAt = 0;
 
   /** Whether a step's highlight opened the panel (a later step folds it again on phones). */
   let openedPanel = false;
@@ -130,7 +135,8 @@ export function createHighlight(app, { card, proxy }) {
     proxy.hidden = false;
   }
 
-  function place() {
+  function place(now = performance.now()) {
+    raf = 0;
     const r = targetRect();
     spotEl.hidden = !r;
     if (r) {
@@ -143,16 +149,38 @@ export function createHighlight(app, { card, proxy }) {
       const key = [window.innerWidth, window.innerHeight, r.x, r.y, r.w, r.h].map(Math.round).join('|');
       if (key !== lastKey) {
         lastKey = key;
+        movedAt = now;
         const node = targetNode();
         reach(node);
         // A button the student cannot press where it is: a stand-in on the card.
         if (node && target.control && node instanceof HTMLButtonElement) setProxy(hittable(node) ? null : node);
       }
     }
-    // One loop at a time: `place` is also called from outside (a resize, a new step).
+    // One loop at a time: `place` is also called from outside (a resize, a new step). It follows
+    // the target every frame while the target moves and for QUIET_MS after, then rests until
+    // something may move it again (wake): a loop looking every display frame would keep the
+    // processor busy for as long as a lesson stays open.
     cancelAnimationFrame(raf);
-    if (target) raf = requestAnimationFrame(place);
+    raf = 0;
+    if (target && now - movedAt < QUIET_MS) raf = requestAnimationFrame(place);
   }
+
+  /** Follows the target again from the next frame on (something on the page may move it). */
+  function wake() {
+    if (!target || raf) return;
+    movedAt = performance.now();
+    raf = requestAnimationFrame(place);
+  }
+  // What can move a target: the figure (a drawn frame announces playback, view and motion
+  // changes), the window, scrolling, the user's input, CSS transitions and animations, and any
+  // change of the page's elements but the ring's own.
+  for (const topic of ['motion', 'view', 'playback', 'selection', 'layout']) app.on(topic, wake);
+  for (const type of ['resize', 'scroll', 'pointerdown', 'pointermove', 'pointerup', 'wheel', 'keydown', 'transitionrun', 'animationstart', 'transitionend', 'animationend']) {
+    window.addEventListener(type, wake, { capture: true, passive: true });
+  }
+  new MutationObserver((records) => {
+    if (records.some((m) => m.target !== spotEl)) wake();
+  }).observe(document.body, { subtree: true, childList: true, attributes: true, characterData: true });
 
   return {
     set,
