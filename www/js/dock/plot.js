@@ -66,22 +66,35 @@ let playheadSource = null;
 /** Every live chart with a playhead (see sync()). */
 const charts = new Set();
 let polling = false;
+/** How long (ms) the charts keep reading the playhead every frame after it last moved. */
+const QUIET_MS = 1000;
+/** When the playhead last moved or something may have moved it (performance.now()). */
+let movedAt = 0;
+/** The playhead last read, as `t|u`. */
+let lastAt = '';
 
 /**
  * Sets the playhead's source for every chart (the dock does, with the app's playback time).
- * Charts read it once per animation frame while any exists, and move their playhead only when
- * it changed.
+ * Charts read it once per animation frame while it moves and for a second after, and move their
+ * playhead only when it changed; then they rest until wakePlayheads (a loop reading it every
+ * display frame would keep the processor busy for as long as the dock stays open).
  */
 export function setPlayheadSource(source) {
   playheadSource = source;
+  wakePlayheads();
+}
+
+/** Reads the playhead every frame again: the app's playback, motion or timing changed. */
+export function wakePlayheads() {
+  movedAt = performance.now();
   startPolling();
 }
 
 function startPolling() {
   if (polling || !playheadSource || charts.size === 0) return;
   polling = true;
-  const tick = () => {
-    if (charts.size === 0) {
+  const tick = (now) => {
+    if (charts.size === 0 || now - movedAt > QUIET_MS) {
       polling = false;
       return;
     }
@@ -96,6 +109,11 @@ export function syncPlayheads() {
   if (!playheadSource) return;
   const at = readPlayhead();
   if (!at) return;
+  const key = `${at.t}|${at.u}`;
+  if (key !== lastAt) {
+    lastAt = key;
+    movedAt = performance.now();
+  }
   // Hidden charts (another view, the dock closed) catch up when drawn again.
   for (const c of charts) if (c.box.isConnected && c.box.offsetParent !== null) c.playheadAt(at);
 }
@@ -294,7 +312,7 @@ export function lineChart(parent, { title, x = 'u', y, series, height = 150, log
   watchTheme();
   if (playhead) {
     charts.add(chart);
-    startPolling();
+    wakePlayheads();
   }
   return chart;
 }

@@ -40,7 +40,7 @@
  * @property {(step: number) => void} [goTo] the steps view: show step `step`
  */
 
-import { setPlayheadSource } from '../dock/plot.js';
+import { setPlayheadSource, wakePlayheads } from '../dock/plot.js';
 import { without, stage } from './rects.js';
 
 /** The smallest free part of the window (CSS px) the 3-D view moves into beside the dock. */
@@ -107,6 +107,8 @@ export class Dock {
     app.on('layout', again);
     this.saved = null;
     setPlayheadSource(() => this.playhead());
+    // What moves the charts' playhead: playback and seeking, a new motion or new key times.
+    for (const topic of ['playback', 'motion', 'view']) app.on(topic, wakePlayheads);
   }
 
   // ------------------------------------------------------------------ tabs in one row
