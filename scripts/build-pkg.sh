@@ -12,12 +12,12 @@
 # The viewer also carries the bunny6 preset's mesh, viewer/vendor/bunny.obj (with bunny.NOTICE:
 # its origin and terms), beside the sources that fetch it.
 #
-# The viewer has two renderer modules: viewer/pkg/ with feature webgpu only (no wgpu-core, GL
-# backend or shader translation: the browser compiles the WGSL; no file import either: the
-# element reads a glTF or CSV `src` with the `screwbender/full` module, fetched for that only) and
-# viewer/pkg-gl/ with webgl,files (WebGL2 through wgpu's GL backend and naga; the playground's
-# module), which the element imports only when WebGPU has no usable adapter. Both go through
-# wasm-bindgen --remove-name-section and wasm-opt -Oz.
+# The viewer has two renderer modules: viewer/pkg/ with feature webgpu (no wgpu-core, GL backend
+# or shader translation: the browser compiles the WGSL; no file import either: the element reads
+# a glTF or CSV `src` with the `screwbender/full` module, fetched for that only) and
+# viewer/pkg-gl/ with webgl,gltf-mesh (WebGL2 through wgpu's GL backend and naga; the
+# playground's module, built once for both), which the element imports only when WebGPU has no
+# usable adapter. Both go through wasm-bindgen --remove-name-section and wasm-opt -Oz.
 #
 # Steps: cargo build --profile wasm-release (release, with the dependencies optimised for size:
 # see Cargo.toml) for wasm32 without features (so no wgpu), wasm-bindgen
@@ -173,11 +173,11 @@ else
   node_types "$PKG_DIR"
 fi
 
-# The viewer's renderer modules (the WebGL2 one, the longest build, first). Without `files` for
-# WebGPU: glTF's document model and the JSON parsing of its structs are a large part of a module
-# that every figure downloads; a figure with a .glb or .csv `src` fetches full/.
+# The viewer's renderer modules (the WebGL2 one, the longest build, first). Without `files`:
+# glTF's document model and the JSON parsing of its structs are a large part of a module that
+# every figure downloads; a figure with a .glb or .csv `src` fetches full/.
 if [[ ${VIEWER:-1} == 1 ]]; then
-  start_module viewer-gl webgl,files "$PKG_DIR/viewer/pkg-gl" -Oz
+  start_module viewer-gl webgl,gltf-mesh "$PKG_DIR/viewer/pkg-gl" -Oz
   start_module viewer webgpu "$PKG_DIR/viewer/pkg" -Oz
 fi
 # The `screwbender/full` entry (full/): the math module plus file export and import (glTF, CSV),

@@ -12,8 +12,8 @@
 # uplot and lil-gui from node_modules into www/). Serve: scripts/serve.mjs (no-store caching,
 # right MIME).
 #
-#   www/pkg-webgpu/  features webgpu,files: the first frame (the <screw-bender> figure's module)
-#   www/pkg-gl/      features webgl,files: where WebGPU has no usable adapter (or ?backend=webgl2)
+#   www/pkg-webgpu/  features webgpu,gltf-mesh: the first frame (the <screw-bender> figure's module)
+#   www/pkg-gl/      features webgl,gltf-mesh: where WebGPU has no usable adapter (or ?backend=webgl2)
 #   www/pkg-full/    features export,methods,tracks,teaching,fit, no renderer: the analysis views,
 #                    fetched when first used (www/js/editor/modules.js)
 set -euo pipefail
@@ -29,8 +29,8 @@ build() {
     ./scripts/setup.sh rust wasm-bindgen npm
   fi
 
-  ./scripts/wasm-module.sh webgpu,files "$WWW_DIR/pkg-webgpu" -Oz
-  ./scripts/wasm-module.sh webgl,files "$WWW_DIR/pkg-gl" -Oz
+  ./scripts/wasm-module.sh webgpu,gltf-mesh "$WWW_DIR/pkg-webgpu" -Oz
+  ./scripts/wasm-module.sh webgl,gltf-mesh "$WWW_DIR/pkg-gl" -Oz
   ./scripts/wasm-module.sh export,methods,tracks,teaching,fit "$WWW_DIR/pkg-full" -Os
   # www/pkg/ is no module of the page's (nothing imports it): a stale copy is not served.
   rm -rf "$WWW_DIR/pkg"

@@ -15,7 +15,7 @@ configure({
   modules: {
     main: async () => ({ ...glue, default: () => init({ module_or_path: bytes }) }),
     gl: async () => ({ ...glueGl, default: () => initGl({ module_or_path: bytesGl }) }),
-    files: () => Promise.reject(new Error('both modules read files themselves')),
+    files: () => Promise.reject(new Error('the notebook figure reads no glTF or CSV file')),
   },
   css,
   bunny,

@@ -37,16 +37,24 @@ async function clickExport(label, count = 1) {
   return downloads;
 }
 
-/** Drops files {name, bytes (Uint8Array | string)} on the page as a real DataTransfer drop. */
+/**
+ * Drops files {name, bytes (Uint8Array | string)} on the page as a real DataTransfer drop, and
+ * waits for the import's outcome: a changed session, a new message or the import dialog (the
+ * files are read asynchronously, and the first glTF or CSV fetches the analysis module).
+ */
 async function drop(files) {
   await page.evaluate(async (list) => {
+    const sb = window.screwbender;
+    const state = () => JSON.stringify({ ...sb.session(), camera: null });
+    const before = state();
+    const messages = sb.errors().length;
     const dt = new DataTransfer();
     for (const f of list) dt.items.add(new File([Uint8Array.from(f.bytes)], f.name));
     for (const type of ['dragenter', 'dragover', 'drop']) {
       window.dispatchEvent(new DragEvent(type, { dataTransfer: dt, bubbles: true, cancelable: true }));
     }
-    // The import reads the files asynchronously.
-    await new Promise((r) => setTimeout(r, 300));
+    const done = () => sb.errors().length > messages || document.getElementById('reduce-dialog') || state() !== before;
+    for (const t0 = performance.now(); !done() && performance.now() - t0 < 20000; ) await new Promise((r) => setTimeout(r, 20));
   }, files.map((f) => ({ name: f.name, bytes: [...(typeof f.bytes === 'string' ? Buffer.from(f.bytes) : f.bytes)] })));
   await waitFrames(page, 1);
 }
@@ -75,6 +83,16 @@ test(`${BACKEND}: Export glTF (.glb) downloads a GLB named for what it holds (â€
   // Change the motion, then drop the exported file: the control poses come back.
   await page.evaluate(() => window.screwbender.app.run('loadPreset', 'cylinder5'));
   await drop([{ name: 'l_cycle_rotated-motion.glb', bytes }]);
+  assertPosesClose(await poses(), before, 1e-6);
+  // The file's own object (the preset's, as drawn) comes along as the imported glTF mesh, and a
+  // reload restores it from the autosave at once, read by the renderer module itself.
+  const object = () => page.evaluate(() => ({ object: window.screwbender.app.view.object, kind: window.screwbender.app.imported?.kind, errors: window.screwbender.errors() }));
+  assert.deepEqual(await object(), { object: 'obj', kind: 'gltf', errors: [] });
+  await page.reload();
+  await page.evaluate(() => window.screwbender.ready);
+  await waitFrames(page, 1);
+  assert.deepEqual(await object(), { object: 'obj', kind: 'gltf', errors: [] });
+  assert.equal(await page.evaluate(() => performance.getEntriesByType('resource').some((r) => r.name.includes('/pkg-full/'))), false, 'the analysis module was fetched to draw the object');
   assertPosesClose(await poses(), before, 1e-6);
   assert.deepEqual(problems, []);
 });

@@ -15,7 +15,7 @@
 // and the analysis module are fetched when a view is first opened (editor/dock-host.js).
 import { Viewer, newModel } from './figure/viewer.js';
 import { buildUi } from './editor/ui.js';
-import { renderModule, glModule, analysisModule } from './editor/modules.js';
+import { renderModule, glModule, analysisModule, loadedAnalysis } from './editor/modules.js';
 import notices from './editor/notices.js';
 import session, { History } from './editor/session.js';
 import files from './editor/files.js';
@@ -315,6 +315,11 @@ export class App {
   /** The analysis module (editor/modules.js), fetched on first use; rejects with a message. */
   analysis() {
     return analysisModule(this.wasm.Motion);
+  }
+
+  /** The analysis module if it has loaded (analysis()), else null. */
+  loadedAnalysis() {
+    return loadedAnalysis();
   }
 
   // ---------------------------------------------------------------- startup

@@ -76,11 +76,10 @@
 //!
 //! ## Features
 //!
-//! * `json` (default): [`MotionDocument::from_json`] / [`MotionDocument::to_json`] and metrics as
-//!   JSON (serde_json).
+//! * `json` (default): [`MotionDocument::from_json`] / [`MotionDocument::to_json`], metrics as
+//!   JSON and meshes from glTF ([`mesh::Mesh::from_gltf`]) (serde_json).
 //! * `gltf` (default, implies `json`): glTF 2.0 export and import of motions
-//!   ([`export_motion`], [`import_motion_file`], [`GltfAsset`]) and meshes from glTF
-//!   (gltf-json).
+//!   ([`export_motion`], [`import_motion_file`], [`GltfAsset`]) (gltf-json).
 //!
 //! ## Robustness
 //!
@@ -109,7 +108,7 @@ mod timing;
 /// Triangle meshes of the objects: [`mesh::Mesh`] and the shapes (`presets/mesh.rs`), and the
 /// limits of the files it is read from (`formats/obj.rs`, `formats/gltf/mesh.rs`).
 pub mod mesh {
-    #[cfg(feature = "gltf")]
+    #[cfg(feature = "json")]
     pub use crate::formats::gltf::mesh::MAX_GLTF_MESH_BYTES;
     pub use crate::formats::obj::{MAX_OBJ_BYTES, MAX_OBJ_TRIANGLES};
     pub use crate::presets::mesh::*;

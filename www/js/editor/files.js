@@ -3,8 +3,9 @@
 // drag-and-drop import.
 //
 // Export and import go through the same core functions as `screwbender export` / `import`
-// (Motion.exportFile, importMotionFile), so a file written here equals the CLI's. Every import
-// is one undoable edit, and a failed one changes nothing. The functions take the app; the
+// (Motion.exportFile, importMotionFile: the analysis module's, fetched for the first file in or
+// out; OBJ and glTF objects the renderer module reads itself), so a file written here equals the
+// CLI's. Every import is one undoable edit, and a failed one changes nothing. The functions take the app; the
 // default export is the app's part (see app.js for the part contract).
 import { IMPORT_SIZE, BUNNY_PRESET, fetchBunny } from '../figure/drawing.js';
 import { SLOT } from '../figure/slots.js';
@@ -122,9 +123,17 @@ export async function importFiles(app, fileList) {
   const bytes = new Uint8Array(await main.arrayBuffer());
   const buffers = {};
   for (const f of files) if (f !== main) buffers[f.name] = new Uint8Array(await f.arrayBuffer());
+  // Reading motions from glTF and CSV is the analysis module's (fetched on the first import).
+  let importer;
+  try {
+    importer = await importerOf(app);
+  } catch (e) {
+    app.parts.notices.show(`Import failed, nothing was changed: ${e.message}`);
+    return false;
+  }
   let doc;
   try {
-    doc = app.wasm.importMotionFile(main.name, bytes, buffers);
+    doc = importer.importMotionFile(main.name, bytes, buffers);
   } catch (e) {
     // A glTF without animation may be a mesh for the object.
     if (kind !== 'csv' && /anim/i.test(e.message)) {
@@ -138,7 +147,7 @@ export async function importFiles(app, fileList) {
   let mesh = null;
   if (kind !== 'csv') {
     try {
-      if (app.wasm.importedMesh(main.name, bytes)) mesh = meshOf('gltf', bytes);
+      if (importer.importedMesh(main.name, bytes)) mesh = meshOf('gltf', bytes);
     } catch {
       mesh = null; // an animation without a readable mesh: the current object stays
     }
@@ -159,10 +168,24 @@ async function importPoses(app, doc, fileName, mesh = null) {
       app.parts.notices.show(`${fileName}: another import is waiting for an answer; nothing was changed.`);
       return false;
     }
+    // Thinning and fitting are the analysis module's; where it has loaded (a lesson with
+    // measured poses fetches it as it opens) the dialog opens at once, in the same task.
+    let analysis = app.loadedAnalysis();
+    if (!analysis) {
+      try {
+        analysis = await importerOf(app);
+      } catch (e) {
+        app.parts.notices.show(`Import failed, nothing was changed: ${fileName}: ${e.message}`);
+        return false;
+      }
+      if (document.getElementById('reduce-dialog')) {
+        app.parts.notices.show(`${fileName}: another import is waiting for an answer; nothing was changed.`);
+        return false;
+      }
+    }
     const radius = Math.max(1e-3, ...app.viewer.bodyPoints().map((p) => Math.hypot(...p)));
-    // Fitting is the analysis module's (fetched on first use).
-    const fitPoses = async (d, o) => (await app.analysis()).fitPoses(d, o);
-    const choice = await askReduction(doc, fileName, radius, app.wasm.reducePoses, fitPoses);
+    const fitPoses = async (d, o) => analysis.fitPoses(d, o);
+    const choice = await askReduction(doc, fileName, radius, analysis.reducePoses, fitPoses);
     if (!choice) {
       app.parts.notices.show(`${fileName}: import cancelled, nothing was changed.`, 'info');
       return false;
@@ -174,6 +197,17 @@ async function importPoses(app, doc, fileName, mesh = null) {
   const ok = importDocument(app, doc, fileName, mesh, fit);
   if (ok && kept) app.parts.notices.show(`${fileName}: ${kept}.`, 'info');
   return ok;
+}
+
+/**
+ * The analysis module, which reads motions from files (importMotionFile, importedMesh) and thins
+ * or fits many poses; the first time fetched, with a toast meanwhile.
+ */
+async function importerOf(app) {
+  const loaded = app.loadedAnalysis();
+  if (loaded) return loaded;
+  app.ui?.toast('Loading the file reader…');
+  return app.analysis();
 }
 
 /** The session form of a mesh file: OBJ text, or glTF bytes as base64. */

@@ -1,10 +1,11 @@
 // The playground's WebAssembly modules and the code it fetches only when first used.
 //
 // The first frame needs only the renderer: the WebGPU module the <screw-bender> figure uses
-// (pkg-webgpu/: the motion, the WebGPU renderer, file import and export), or where WebGPU has no
+// (pkg-webgpu/: the motion, the WebGPU renderer, OBJ and glTF objects), or where WebGPU has no
 // usable adapter (or ?backend=webgl2) the WebGL2 one (pkg-gl/); element/modules.js names them.
-// The analysis views, the comparison methods and the teaching functions are in a third module
-// (pkg-full/: no renderer), fetched with the dock or a lesson that measures a motion. Its
+// The analysis views, file import and export, the comparison methods and the teaching functions
+// are in a third module (pkg-full/: no renderer), fetched with the dock, the first import or
+// export of a file, or a lesson that measures a motion or has measured poses. Its
 // Motion and the renderer module's are separate instances: the renderer module's Motion gets
 // the methods only the analysis module has (motionMetrics, methodSample, compareMethods,
 // quaternionSpline, keyframeTracks) once that module has loaded, each run on the analysis
@@ -98,9 +99,14 @@ export function lazy(what, load) {
 export function analysisModule(RenderMotion) {
   return loadAnalysis().then((m) => {
     forwardMotionMethods(RenderMotion, m.Motion);
+    analysisLoaded = m;
     return m;
   });
 }
+
+/** The analysis module once analysisModule has resolved, else null (for code that must not wait). */
+export const loadedAnalysis = () => analysisLoaded;
+let analysisLoaded = null;
 
 // A module whose fetch failed stays failed under its URL (the browser keeps it in its module
 // map), so a retry asks for it under another one.

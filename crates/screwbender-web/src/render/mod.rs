@@ -173,7 +173,7 @@ impl RendererHandle {
     /// Reads a glTF 2.0 asset (`.glb`, or `.gltf` with embedded buffers; [`Mesh::from_gltf`]),
     /// scales it like [`RendererHandle::set_obj_mesh`] and puts it in `slot`. Returns the
     /// triangle count; on error the slot keeps its previous mesh.
-    #[cfg(feature = "files")]
+    #[cfg(feature = "gltf-mesh")]
     #[wasm_bindgen(js_name = setGltfMesh)]
     pub fn set_gltf_mesh(
         &mut self,

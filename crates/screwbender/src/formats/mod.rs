@@ -1,4 +1,5 @@
-//! Files in and out: the JSON motion document, CSV, glTF 2.0 (feature `gltf`), and the
+//! Files in and out: the JSON motion document, CSV, glTF 2.0 (motions with the feature `gltf`,
+//! meshes with `json`), and the
 //! sampling that turns a motion into keyframes within a tolerance.
 //!
 //! From the bottom up: `keyframes.rs` (what every keyframe import shares), `document.rs`,
@@ -9,7 +10,7 @@
 //! `base64.rs` (the `data:` URIs of embedded glTF buffers); the shapes themselves are in
 //! `presets::mesh`.
 
-#[cfg(feature = "gltf")]
+#[cfg(feature = "json")]
 pub(crate) mod base64;
 pub(crate) mod csv;
 pub(crate) mod document;

@@ -1,5 +1,5 @@
 //! Triangle meshes of the scene objects ([`Shape`]) (f64, no GPU). User files become meshes in
-//! `formats` ([`Mesh::from_obj`], and [`Mesh::from_gltf`] with the feature `gltf`).
+//! `formats` ([`Mesh::from_obj`], and [`Mesh::from_gltf`] with the feature `json`).
 //!
 //! A [`Mesh`] is an indexed triangle list in the object's local frame, counter-clockwise seen
 //! from outside, with one normal per vertex. Flat faces (boxes, prisms, caps) get their own

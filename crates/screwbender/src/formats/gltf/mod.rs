@@ -1,12 +1,14 @@
-//! glTF 2.0: the GLB container (always, so meshes and imports can recognise it), and with the
-//! feature `gltf` the motion export, the control-pose import and meshes of user objects.
+//! glTF 2.0: the GLB container (always, so meshes and imports can recognise it), meshes of user
+//! objects with the feature `json` (they read the JSON chunk as plain JSON: a renderer module
+//! draws a user's glTF object without gltf-json's document model), and with the feature `gltf`
+//! the motion export and the control-pose import.
 
 #[cfg(feature = "gltf")]
 pub(crate) mod export;
 pub(crate) mod glb;
 #[cfg(feature = "gltf")]
 pub(crate) mod import;
-#[cfg(feature = "gltf")]
+#[cfg(feature = "json")]
 pub(crate) mod mesh;
 #[cfg(feature = "gltf")]
 pub(crate) mod names;
