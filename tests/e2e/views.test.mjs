@@ -223,6 +223,12 @@ test(`${BACKEND}: the open view survives a reload; V closes the dock`, async () 
   await page.keyboard.press('v');
   assert.equal(await sb(() => window.screwbender.app.view.dock), '');
   assert.ok(!(await page.locator('#dock').isVisible()));
+  // Pressed while the dock may still be loading after the reload: it stays closed after.
+  await sb(async () => {
+    while (window.screwbender.app.parts.dockHost.loading) await window.screwbender.app.parts.dockHost.loading;
+  });
+  assert.equal(await sb(() => window.screwbender.app.view.dock), '');
+  assert.ok(!(await page.locator('#dock').isVisible()));
   assert.deepEqual(problems, []);
 });
 

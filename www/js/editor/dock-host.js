@@ -100,11 +100,23 @@ export default {
       async open(id) {
         if (!app.dock) {
           wanted = id || '';
-          if (!id) return null;
+          if (!id) {
+            // Closed while it loads (V, the toolbar button): closed at once, and it stays
+            // closed when the load ends.
+            if (loading) {
+              document.getElementById('dock').classList.remove('open');
+              app.updateView({ dock: '' });
+              app.ui?.refresh();
+            }
+            return null;
+          }
+          if (loading) document.getElementById('dock').classList.add('open');
           loading ??= load();
           await loading;
-          // Meanwhile another view may have been asked for, or the dock closed.
-          if (!app.dock || wanted !== id) return app.dock?.current ?? null;
+          if (!app.dock) return null;
+          // Meanwhile another view may have been asked for (its own call opens it), or the dock
+          // closed.
+          if (wanted !== id) return wanted ? app.dock.current : openNow('');
         }
         return openNow(id);
       },
