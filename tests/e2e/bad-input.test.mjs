@@ -4,7 +4,8 @@
 //   E2E_BACKEND=webgpu|webgl2 node --test tests/e2e/bad-input.test.mjs
 //
 // Bad files go through the real file inputs (#json-file, #obj-file) and the paste dialog, bad
-// share links through a real navigation: each shows a banner message naming the bad element,
+// share links given to the open page (a hashchange, as a link pasted into its address bar)
+// and, two of them, through a real load: each shows a banner message naming the bad element,
 // and window.screwbender.session() is exactly what it was. Security: the Content-Security-Policy
 // is in force (no violation while the page is used; eval is blocked), no script uses innerHTML
 // or similar, and text from files (names, file names, values) is shown as text, never as HTML.
@@ -220,7 +221,7 @@ test(`${BACKEND}: text from files is shown as text, never as HTML`, async () => 
   assert.deepEqual(await sb(() => window.__csp), []);
 });
 
-test(`${BACKEND}: bad share links show a message and keep the saved session`, async () => {
+test(`${BACKEND}: bad share links, at load or given to the open page, show a message and keep the session`, async () => {
   await fresh('bunny6');
   await page.keyboard.press('2');
   const saved = await session();
@@ -239,8 +240,28 @@ test(`${BACKEND}: bad share links show a message and keep the saved session`, as
     ['levels beyond the cap', b64({ ...s, options: { ...s.options, levels: 40 } }), /levels: 40 is out of range/],
     ['oversized', 'A'.repeat(2_000_004), /the link's session is 2000004 characters long; the limit is 2000000/],
   ];
-  const q = BACKEND === 'webgl2' ? '?backend=webgl2' : '';
+  // Each row given to the open page (pasted into its address bar: a hashchange): a message in
+  // the words of a load, and nothing changes, no undo step either.
+  const undoSteps = () => sb(() => window.screwbender.app.history.undoStack.length);
+  const steps = await undoSteps();
   for (const [row, hash, want] of rows) {
+    const n = await errorCount();
+    await sb((h) => {
+      location.hash = `#s=${h}`;
+    }, hash);
+    await page.waitForFunction((k) => window.screwbender.errors().length > k, n);
+    const msgs = (await sb(() => window.screwbender.errors())).slice(n);
+    assert.equal(msgs.length, 1, `${row}: ${JSON.stringify(msgs)}`);
+    assert.match(msgs[0], /^The shared link could not be opened: /, row);
+    assert.match(msgs[0], want, row);
+    assert.equal(await session(), saved, `${row}: the session changed`);
+    assert.equal(await undoSteps(), steps, `${row}: an undo step was added`);
+    assert.equal(await sb(() => location.hash), '', `${row}: the link stayed in the address`);
+  }
+  assert.deepEqual(problems, []);
+  // At load, a decoding error and a refused session: the autosaved session is kept.
+  const q = BACKEND === 'webgl2' ? '?backend=webgl2' : '';
+  for (const [row, hash, want] of rows.filter(([r]) => r === 'cut off' || r === 'zero quaternion')) {
     const p = await context.newPage();
     const errors = [];
     p.on('pageerror', (e) => errors.push(e.message));

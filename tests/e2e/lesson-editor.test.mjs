@@ -231,6 +231,16 @@ test('the lesson is saved, and its link opens the same lesson in a fresh browser
     await p2.waitForFunction(() => document.querySelector('.le-say')?.textContent.includes('lesson link'));
     assert.deepEqual(await current(p2), saved, 'the link opens as the same lesson');
     assert.equal((await drafts(p2)).length, 2, 'each opened lesson is a draft of its own');
+    // The link pasted into the address bar of the open page: only the hash changes (no load),
+    // and the lesson opens.
+    await p2.evaluate(async () => {
+      (await window.screwbender.lessons).close();
+      history.replaceState(null, '', location.pathname);
+    });
+    await p2.evaluate((h) => {
+      location.hash = h;
+    }, new URL(link).hash);
+    await p2.waitForFunction(async () => (await window.screwbender.lessons).lesson?.id === 'editor-check');
   } finally {
     await fresh.close();
   }

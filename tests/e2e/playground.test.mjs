@@ -191,7 +191,7 @@ test(`${BACKEND}: reload restores the autosaved session exactly`, async () => {
   assert.equal(afterReload, before);
 });
 
-test(`${BACKEND}: a share link reproduces the session in a fresh browser context`, async () => {
+test(`${BACKEND}: a share link reproduces the session in a fresh browser context, and in the open page`, async () => {
   await fresh('bunny6');
   await page.keyboard.press('2');
   const link = await sb(() => window.screwbender.app.parts.session.shareLink());
@@ -208,6 +208,22 @@ test(`${BACKEND}: a share link reproduces the session in a fresh browser context
   assert.deepEqual(s2.options, session.options);
   assert.equal(s2.view.scene, 'bunny6');
   await other.close();
+  // The same link pasted into the address bar of the open page, which shows something else by
+  // then: only the hash changes (no load), and the link opens as one undoable edit.
+  await fresh('cylinder5');
+  // Undo does not move the view: the session without its camera.
+  const shown = await sb(() => JSON.stringify({ ...window.screwbender.session(), camera: null }));
+  await sb((l) => {
+    location.hash = new URL(l).hash;
+  }, link);
+  await page.waitForFunction(() => window.screwbender.app.view.scene === 'bunny6');
+  const s3 = await sb(() => window.screwbender.session());
+  assert.ok(maxDiff(flat(s3.document), flat(session.document)) < 1e-12);
+  assert.deepEqual(s3.options, session.options);
+  assert.equal(await sb(() => location.hash), '', 'the link stayed in the address');
+  assert.equal(await sb(() => window.screwbender.app.history.undoLabels[0]), 'Open the shared link');
+  await page.keyboard.press('Control+z');
+  assert.equal(await sb(() => JSON.stringify({ ...window.screwbender.session(), camera: null })), shown);
 });
 
 test(`${BACKEND}: bad JSON and OBJ input show a message and change nothing`, async () => {

@@ -163,6 +163,29 @@ export default {
       app.changed(false);
     }
 
+    /**
+     * A share link (`#s=…`) given to the open page: pasted into the address bar of a tab that
+     * shows the playground, only the address's hash changes, and the browser does not load the
+     * page again. Opened as one undoable edit (Ctrl+Z brings back what was there) with the
+     * link's camera; the hash then leaves the address, as at load. A bad link says why in the
+     * words of a load and changes nothing. Returns true when the link was opened.
+     */
+    function openLinked() {
+      const hash = location.hash.match(/^#s=(.+)$/);
+      if (!hash) return false;
+      history.replaceState(history.state, '', location.pathname + location.search);
+      const before = snapshot();
+      try {
+        applySession(decodeHash(hash[1]));
+      } catch (e) {
+        app.parts.notices.show(`The shared link could not be opened: ${e.message}`);
+        return false;
+      }
+      record(before, null, performance.now(), 'Open the shared link');
+      app.changed();
+      return true;
+    }
+
     /** A snapshot for undo (no camera: undo does not move the view). */
     function snapshot() {
       return JSON.stringify(session(false));
@@ -184,10 +207,16 @@ export default {
       snapshot,
       autosave,
 
-      /** Saves after every change of the motion or the display that asks for it. */
+      /**
+       * Saves after every change of the motion or the display that asks for it; opens a share
+       * link that arrives while the page is open (openLinked).
+       */
       bind() {
         app.on('motion', (d) => d?.save !== false && autosave());
+        window.addEventListener('hashchange', () => openLinked());
       },
+
+      openLinked,
 
       /**
        * Shows preset `id` without an undo step (the first scene of a visit, a test's start; the

@@ -155,10 +155,15 @@ export function createMenu(app, { open, openText, current }) {
     e.preventDefault();
   });
 
-  // A lesson carried by the page's address (`#lesson=…`, editor/menu-section.js reads it).
-  if (location.hash.startsWith('#lesson=')) {
-    player().then(async (p) => (await import('./editor/menu-section.js')).openLinkedLesson(app, openText, p?.ready));
-  }
+  // A lesson carried by the page's address (`#lesson=…`, editor/menu-section.js reads it): at
+  // load, or pasted into the address bar of the open page (only the hash changes, no load).
+  const openLinked = () => {
+    if (location.hash.startsWith('#lesson=')) {
+      player().then(async (p) => (await import('./editor/menu-section.js')).openLinkedLesson(app, openText, p?.ready));
+    }
+  };
+  openLinked();
+  window.addEventListener('hashchange', openLinked);
 
   return {
     open: openMenu,
