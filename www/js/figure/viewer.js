@@ -178,7 +178,13 @@ export class Viewer {
     if (this.dark) this.renderer.setBackground(...BACKGROUND.dark);
     this.renderer.setMesh(SLOT.handle, 'unit-sphere', true);
     this.renderer.setMesh(SLOT.arrow, 'unit-cone', true);
+    // A resize observer also reports when its observation starts, which comes right after the
+    // first frame: a frame is drawn only for a size other than the last one drawn.
+    this.drawnSize = null;
     this.resizeObserver = new ResizeObserver(() => {
+      const m = this.measure();
+      const d = this.drawnSize;
+      if (d && m.w === d.w && m.h === d.h && m.cssW === d.cssW && m.cssH === d.cssH) return;
       this.sizeCache = null;
       this.requestDraw();
     });
@@ -348,7 +354,10 @@ export class Viewer {
     this.renderer.setCamera(Float32Array.from(vp), Float32Array.from(this.camera.eye));
     const t1 = performance.now();
     // A frame the renderer could not draw (surface not ready) stays due.
-    if (this.renderer.render()) this.dirty = false;
+    if (this.renderer.render()) {
+      this.dirty = false;
+      this.drawnSize = this.sizeCache;
+    }
     const t2 = performance.now();
     this.stats.renderMs = t2 - t1;
     this.stats.frameMs = t2 - t0;
