@@ -183,6 +183,8 @@ export default {
       }
       record(before, null, performance.now(), 'Open the shared link');
       app.changed();
+      app.ui?.refresh();
+      app.ui?.toast('Opened the shared link (Undo brings back what was shown)');
       return true;
     }
 
