@@ -70,8 +70,9 @@ let polling = false;
 const QUIET_MS = 1000;
 /** When the playhead last moved or something may have moved it (performance.now()). */
 let movedAt = 0;
-/** The playhead last read, as `t|u`. */
-let lastAt = '';
+/** The playhead last read. */
+let lastT = NaN;
+let lastU = NaN;
 
 /**
  * Sets the playhead's source for every chart (the dock does, with the app's playback time).
@@ -109,9 +110,9 @@ export function syncPlayheads() {
   if (!playheadSource) return;
   const at = readPlayhead();
   if (!at) return;
-  const key = `${at.t}|${at.u}`;
-  if (key !== lastAt) {
-    lastAt = key;
+  if (at.t !== lastT || at.u !== lastU) {
+    lastT = at.t;
+    lastU = at.u;
     movedAt = performance.now();
   }
   // Hidden charts (another view, the dock closed) catch up when drawn again.

@@ -126,7 +126,7 @@ export async function importFiles(app, fileList) {
   // Reading motions from glTF and CSV is the analysis module's (fetched on the first import).
   let importer;
   try {
-    importer = await importerOf(app);
+    importer = app.loadedAnalysis() ?? (await fetchAnalysis(app));
   } catch (e) {
     app.parts.notices.show(`Import failed, nothing was changed: ${e.message}`);
     return false;
@@ -173,7 +173,7 @@ async function importPoses(app, doc, fileName, mesh = null) {
     let analysis = app.loadedAnalysis();
     if (!analysis) {
       try {
-        analysis = await importerOf(app);
+        analysis = await fetchAnalysis(app);
       } catch (e) {
         app.parts.notices.show(`Import failed, nothing was changed: ${fileName}: ${e.message}`);
         return false;
@@ -200,12 +200,10 @@ async function importPoses(app, doc, fileName, mesh = null) {
 }
 
 /**
- * The analysis module, which reads motions from files (importMotionFile, importedMesh) and thins
- * or fits many poses; the first time fetched, with a toast meanwhile.
+ * Fetches the analysis module, which reads motions from files (importMotionFile, importedMesh)
+ * and thins or fits many poses, with a toast meanwhile (app.loadedAnalysis() has it once there).
  */
-async function importerOf(app) {
-  const loaded = app.loadedAnalysis();
-  if (loaded) return loaded;
+function fetchAnalysis(app) {
   app.ui?.toast('Loading the file reader…');
   return app.analysis();
 }

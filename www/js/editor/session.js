@@ -174,15 +174,15 @@ export default {
       const hash = location.hash.match(/^#s=(.+)$/);
       if (!hash) return false;
       history.replaceState(history.state, '', location.pathname + location.search);
-      const before = snapshot();
-      try {
-        applySession(decodeHash(hash[1]));
-      } catch (e) {
-        app.parts.notices.show(`The shared link could not be opened: ${e.message}`);
-        return false;
-      }
-      record(before, null, performance.now(), 'Open the shared link');
-      app.changed();
+      const open = () => {
+        try {
+          applySession(decodeHash(hash[1]));
+        } catch (e) {
+          throw new Error(`The shared link could not be opened: ${e.message}`);
+        }
+        return true;
+      };
+      if (app.parts.session.edit(open, null, 'Open the shared link') !== true) return false;
       app.ui?.refresh();
       app.ui?.toast('Opened the shared link (Undo brings back what was shown)');
       return true;

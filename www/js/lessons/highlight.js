@@ -136,6 +136,8 @@ export function createHighlight(app, { card, proxy }) {
   }
 
   function place(now = performance.now()) {
+    // One loop at a time: `place` is also called from outside (a resize, a new step).
+    cancelAnimationFrame(raf);
     raf = 0;
     const r = targetRect();
     spotEl.hidden = !r;
@@ -156,12 +158,9 @@ export function createHighlight(app, { card, proxy }) {
         if (node && target.control && node instanceof HTMLButtonElement) setProxy(hittable(node) ? null : node);
       }
     }
-    // One loop at a time: `place` is also called from outside (a resize, a new step). It follows
-    // the target every frame while the target moves and for QUIET_MS after, then rests until
-    // something may move it again (wake): a loop looking every display frame would keep the
-    // processor busy for as long as a lesson stays open.
-    cancelAnimationFrame(raf);
-    raf = 0;
+    // It follows the target every frame while the target moves and for QUIET_MS after, then
+    // rests until something may move it again (wake): a loop looking every display frame would
+    // keep the processor busy for as long as a lesson stays open.
     if (target && now - movedAt < QUIET_MS) raf = requestAnimationFrame(place);
   }
 
