@@ -40,7 +40,7 @@ setup_wasm_bindgen() {
     log "wasm-bindgen $want: present"
     return
   fi
-  log "installing wasm-bindgen-cli $want (found: ${have:-none}); ~5 min on 2 cores"
+  log "installing wasm-bindgen-cli $want (found: ${have:-none}); about a minute on 2 cores"
   timed "wasm-bindgen-cli $want" build_wasm_bindgen_cli "$want"
   have=$(wasm-bindgen --version | awk '{print $2}')
   [[ $have == "$want" ]] || die "wasm-bindgen --version says $have, wanted $want"
@@ -87,9 +87,9 @@ TOML
     # --force: replaces a wasm-bindgen of another version; the build dir is thrown away.
     # Only the two programs the project runs, without TLS (the test runner talks plain HTTP to
     # the local ChromeDriver; TLS is for remote WebDriver services and costs a C and assembly
-    # build), at opt-level 1: they run for seconds per suite, while an optimised build of them
-    # is a large part of a fresh machine's install (docs/speed/suite.md).
-    CARGO_PROFILE_RELEASE_OPT_LEVEL=1 CARGO_PROFILE_RELEASE_DEBUG=0 \
+    # build), unoptimised: they run for seconds per suite, while any optimised build of them is
+    # a large part of a fresh machine's install (docs/speed/suite.md compares the levels).
+    CARGO_PROFILE_RELEASE_OPT_LEVEL=0 CARGO_PROFILE_RELEASE_DEBUG=0 \
       cargo install --path . --locked --force --no-default-features \
       --bin wasm-bindgen --bin wasm-bindgen-test-runner --target-dir "$work/target"
   )
