@@ -14,9 +14,9 @@ export const IDLE_CAP_MS = 5000;
 /**
  * Records every request of `page` (a playwright-core Page, and its workers) from now on.
  * `untilIdle()` waits until no request has been in flight for IDLE_MS, or IDLE_CAP_MS from its
- * call, and returns {done, open, failed, failures}: the URLs of the requests that finished,
- * that were still in flight, and that failed, and each failure as {url, error} (Chromium's
- * error text, such as net::ERR_ABORTED for a request the page itself cancelled).
+ * call, and returns {done, open, failed}: the URLs of the requests that finished and that were
+ * still in flight, and each request that failed as {url, error} (Chromium's error text, such as
+ * net::ERR_ABORTED for a request the page itself cancelled).
  */
 export function watchRequests(page) {
   const requests = new Map();
@@ -33,11 +33,8 @@ export function watchRequests(page) {
       const cap = Date.now() + IDLE_CAP_MS;
       const inFlight = () => [...requests.values()].includes('open');
       while (Date.now() < cap && (inFlight() || Date.now() - lastChange < IDLE_MS)) await new Promise((r) => setTimeout(r, 50));
-      const out = { done: [], open: [], failed: [], failures: [] };
-      for (const [r, state] of requests) {
-        out[state].push(r.url());
-        if (state === 'failed') out.failures.push({ url: r.url(), error: r.failure()?.errorText ?? 'unknown' });
-      }
+      const out = { done: [], open: [], failed: [] };
+      for (const [r, state] of requests) out[state].push(state === 'failed' ? { url: r.url(), error: r.failure()?.errorText ?? 'unknown' } : r.url());
       return out;
     },
   };

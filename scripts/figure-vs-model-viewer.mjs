@@ -70,18 +70,18 @@ async function measure(browser, url, site, file, shown) {
   const requests = watchRequests(page);
   await page.goto(`${url}${file}`);
   await page.evaluate(shown);
-  const { done, open, failures } = await requests.untilIdle();
+  const { done, open, failed } = await requests.untilIdle();
   await context.close();
   // A request the page cancelled itself (net::ERR_ABORTED) is no failure of the site: on a busy
   // machine <model-viewer>'s request for its model is sometimes reported so although the model
   // loaded. The page asked for that file, so it counts as downloaded (once, if another request
   // for it finished); any other failure is a broken page.
-  const cancelled = failures.filter((f) => f.error === 'net::ERR_ABORTED' && !done.includes(f.url)).map((f) => f.url);
-  const failed = failures.filter((f) => f.error !== 'net::ERR_ABORTED');
+  const cancelled = failed.filter((f) => f.error === 'net::ERR_ABORTED' && !done.includes(f.url)).map((f) => f.url);
+  const broken = failed.filter((f) => f.error !== 'net::ERR_ABORTED');
   const origin = new URL(url).origin;
   const fetched = [...done, ...open, ...cancelled];
   const elsewhere = fetched.filter((u) => !u.startsWith(origin) && !/^(data|blob):/.test(u));
-  const problems = [...errors.map((e) => `page error: ${e}`), ...failed.map((f) => `failed: ${f.url} (${f.error})`), ...elsewhere.map((u) => `another origin: ${u}`)];
+  const problems = [...errors.map((e) => `page error: ${e}`), ...broken.map((f) => `failed: ${f.url} (${f.error})`), ...elsewhere.map((u) => `another origin: ${u}`)];
   if (problems.length) throw new Error(`${file}: ${problems.join('; ')}`);
   for (const u of cancelled) console.log(`${file}: ${u} was cancelled by the page (net::ERR_ABORTED); counted as downloaded`);
   const sizeOf = fileSizes(site);
