@@ -2,8 +2,9 @@
 // The embeddable figure <screw-bender> (www/js/element/screw-bender.js) on the course example
 // page (www/examples/course.html) and on pages built around it: figures never touch storage
 // unless asked to persist, read-only figures ignore drags, an editable one emits `change`, the
-// wheel scrolls the page until a figure has the focus, bad attributes are named inside their
-// figure, off-screen figures draw nothing, and the control bar's layout on phones. Most tests
+// wheel scrolls the page until a figure has the focus, bad attributes and a fault in a gesture
+// are named inside their figure, off-screen figures draw nothing, and the control bar's layout
+// on phones. Most tests
 // share one course page, so the order matters: the editable figure's first drag selects its pose
 // (later drags of a selected pose emit no `select`), the storage test comes before `persist`
 // writes to the context's storage, and the bad attributes, whose 404s are console errors, come
@@ -208,6 +209,40 @@ test('off-screen figures draw no frames', async () => {
   assert.deepEqual(problems, []);
 });
 
+test('an error in a hover or press on an editable figure is shown in that figure, never thrown into the page', async () => {
+  const { page, problems } = await sharedCourse();
+  const before = problems.length;
+  await page.evaluate(async () => {
+    const el = document.createElement('screw-bender');
+    el.id = 'press-fails';
+    el.setAttribute('loading', 'eager');
+    el.setAttribute('preset', 'l_cycle_edit');
+    el.setAttribute('editable', '');
+    window.__errors = [];
+    el.addEventListener('error', (e) => window.__errors.push(e.detail.message));
+    document.querySelector('main').append(el);
+    await el.ready;
+    // A fault inside the press (here: the pick of a pose) stands for any the figure's code might meet.
+    el.viewer.pickPose = () => {
+      throw new Error('the pick failed');
+    };
+  });
+  const h = await handleOf(page, 'press-fails', 1);
+  await drag(page, h, 20, 10);
+  const r = await page.evaluate(() => {
+    const el = document.getElementById('press-fails');
+    const msg = el.shadowRoot.querySelector('.msg');
+    const out = { errors: window.__errors, message: msg.hidden ? null : msg.textContent };
+    el.remove();
+    return out;
+  });
+  // The hover on the way in, the press and each hover after it met the fault: each said so.
+  assert.ok(r.errors.length >= 2, `${r.errors.length} error events`);
+  assert.deepEqual(new Set(r.errors), new Set(['the pick failed']));
+  assert.equal(r.message, 'the pick failed');
+  assert.deepEqual(problems.slice(before), []);
+});
+
 test('bad attributes and sources: a message naming attribute and value in that figure, an error event, others unharmed', async () => {
   const { page, problems } = await sharedCourse();
   const cases = [
@@ -306,12 +341,27 @@ test('persist="key": the figure restores its saved motion from that key and save
       return el.id;
     });
     const h = await handleOf(page, id, 1);
+    // What the press met (the pose under it, where the handle was then) and the events the drag
+    // fired, to name what went wrong when the pose did not move.
+    await page.evaluate(() => {
+      const el = document.getElementById('persisted');
+      window.__seen = { events: [], press: null };
+      for (const type of ['select', 'change', 'error']) el.addEventListener(type, () => window.__seen.events.push(type));
+      const at = (e) => {
+        const r = el.viewer.canvas.getBoundingClientRect();
+        const pt = [e.clientX - r.left, e.clientY - r.top];
+        window.__seen.press = { pt, pose: el.viewer.pickPose(pt), handle: el.viewer.screenOfPose(1), canvas: [r.left, r.top, r.width, r.height] };
+      };
+      el.shadowRoot.addEventListener('pointerdown', at, true);
+    });
     await drag(page, h, 30, 20);
+    const seen = await page.evaluate(() => window.__seen);
+    assert.deepEqual(problems, []);
+    assert.deepEqual(seen.events, ['select', 'change'], `a drag from the handle at ${h.x},${h.y}: ${JSON.stringify(seen)}`);
     const stored = await page.evaluate(() => JSON.parse(localStorage.getItem('course.fig')).document.poses[1].origin);
     const now = await page.evaluate(() => Array.from(document.getElementById('persisted').motion.pose(1).origin));
     assert.deepEqual(stored, now);
     assert.ok(Math.hypot(now[0] - 1, now[1] - 1, now[2]) > 0.05, `pose 1 moved to ${now}`);
-    assert.deepEqual(problems, []);
   } finally {
     await page.close();
   }

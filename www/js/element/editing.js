@@ -65,14 +65,15 @@ export function editTool(fig) {
     fig.viewer.requestDraw();
   };
   return {
-    press: (pt, e) => {
-      const part = v().gizmoHit(pt);
-      if (part && begin(part, pt, e)) return 'drag';
-      const k = v().pickPose(pt);
-      if (k < 0) return null;
-      if (k !== fig.model.selected) fig.select(k);
-      return begin('view', pt, e) ? 'drag' : 'taken';
-    },
+    press: (pt, e) =>
+      fig.guardNow(() => {
+        const part = v().gizmoHit(pt);
+        if (part && begin(part, pt, e)) return 'drag';
+        const k = v().pickPose(pt);
+        if (k < 0) return null;
+        if (k !== fig.model.selected) fig.select(k);
+        return begin('view', pt, e) ? 'drag' : 'taken';
+      }, 'taken'),
     drag: (pt, e) =>
       fig.guard(() => {
         const d = fig.drag;
@@ -85,9 +86,10 @@ export function editTool(fig) {
       }),
     release: () => fig.guard(end),
     cancel: () => fig.guard(end),
-    hover: (pt) => hoverPoseTool(v(), fig.model, pt),
-    click: () => {
-      if (fig.model.selected >= 0) fig.select(-1);
-    },
+    hover: (pt) => fig.guardNow(() => hoverPoseTool(v(), fig.model, pt)),
+    click: () =>
+      fig.guardNow(() => {
+        if (fig.model.selected >= 0) fig.select(-1);
+      }),
   };
 }

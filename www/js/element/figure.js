@@ -168,6 +168,19 @@ export class Figure {
     }
   }
 
+  /**
+   * Runs the synchronous `f` and returns its value, for callers that need it at once (the
+   * pointer tool's press); what it throws is shown in the figure, as guard's, and gives `fallback`.
+   */
+  guardNow(f, fallback) {
+    try {
+      return f();
+    } catch (e) {
+      this.fail(e.attribute ?? null, e.message, e.value);
+      return fallback;
+    }
+  }
+
   /** Shows `message` inside the figure and fires `error` {attribute, value, message}. */
   fail(attribute, message, value) {
     this.el.msg.textContent = message;
