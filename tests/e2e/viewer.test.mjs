@@ -2,9 +2,9 @@
 // The embeddable figure <screw-bender> (www/js/element/screw-bender.js) on the course example
 // page (www/examples/course.html) and on pages built around it: figures never touch storage
 // unless asked to persist, read-only figures ignore drags, an editable one emits `change`, the
-// wheel scrolls the page until a figure has the focus, bad attributes and a fault in a gesture
-// are named inside their figure, off-screen figures draw nothing, and the control bar's layout
-// on phones. Most tests
+// wheel scrolls the page until a figure has the focus, bad attributes, a fault in a gesture and
+// a stylesheet that did not load are named inside their figure, a figure starts only once
+// styled, off-screen figures draw nothing, and the control bar's layout on phones. Most tests
 // share one course page, so the order matters: the editable figure's first drag selects its pose
 // (later drags of a selected pose emit no `select`), the storage test comes before `persist`
 // writes to the context's storage, and the bad attributes, whose 404s are console errors, come
@@ -311,6 +311,62 @@ test('bad attributes and sources: a message naming attribute and value in that f
   assert.equal(r.levels, 5);
   // The failed loads logged console errors only for the missing file (the browser's own 404 line).
   assert.deepEqual(problems.filter((p) => !/404|Not Found/.test(p)), []);
+});
+
+test('a figure starts once its stylesheet applies (ready, the first frame at its laid-out size); one that fails is named', async () => {
+  const { page, problems } = await sharedCourse();
+  const before = problems.length;
+  // The stylesheet of the figures made below comes late, then not at all (the course's own
+  // figures have theirs).
+  let answer = 'late';
+  const seen = [];
+  await page.route('**/css/screw-bender.css', async (route) => {
+    seen.push(answer);
+    if (answer === 'late') {
+      await new Promise((res) => setTimeout(res, 1500));
+      await route.continue();
+    } else await route.fulfill({ status: 404, body: '' });
+  });
+  try {
+    const make = () =>
+      page.evaluate(async () => {
+        const el = document.createElement('screw-bender');
+        el.setAttribute('loading', 'eager');
+        el.setAttribute('preset', 'l_cycle_edit');
+        const errors = [];
+        el.addEventListener('error', (e) => errors.push(e.detail.message));
+        document.querySelector('main').prepend(el);
+        await el.ready;
+        const box = el.shadowRoot.querySelector('canvas').getBoundingClientRect();
+        const msg = el.shadowRoot.querySelector('.msg');
+        const out = {
+          styled: !!el.shadowRoot.querySelector('link').sheet,
+          canvas: [box.width, box.height],
+          host: el.getBoundingClientRect().width,
+          drawnAt: el.viewer.pixelSize().cssW,
+          errors,
+          message: msg.hidden ? null : msg.textContent,
+        };
+        el.remove();
+        return out;
+      });
+    const late = await make();
+    assert.equal(late.styled, true, 'ready waited for the stylesheet');
+    // Styled, the canvas spans the figure (unstyled it is the 300 × 150 default).
+    assert.ok(Math.abs(late.canvas[0] - late.host) < 1, `canvas ${late.canvas} in a figure ${late.host} wide`);
+    assert.equal(late.drawnAt, late.canvas[0], 'the viewer measured the styled canvas');
+    assert.deepEqual(late.errors, []);
+    answer = 'missing';
+    const missing = await make();
+    assert.equal(missing.errors.length, 1);
+    assert.match(missing.errors[0], /^The figure's stylesheet did not load \(http:.*\/css\/screw-bender\.css\)\.$/);
+    assert.equal(missing.message, missing.errors[0]);
+    assert.deepEqual(seen, ['late', 'missing']);
+  } finally {
+    await page.unroute('**/css/screw-bender.css');
+  }
+  // The only console line is the browser's own for the missing file.
+  assert.deepEqual(problems.slice(before).filter((p) => !/404|Not Found/.test(p)), []);
 });
 
 test('persist="key": the figure restores its saved motion from that key and saves edits there', async () => {

@@ -116,6 +116,7 @@ export function buildChrome(host) {
     caption: fig.querySelector('.caption slot'),
     labels: fig.querySelector('.labels'),
     live: fig.querySelector('.live'),
+    stylesheet: link,
   };
   return { root, el };
 }

@@ -14,7 +14,7 @@ import { describePose, say } from './description.js';
 import { editTool } from './editing.js';
 import { FEATURES } from './features.js';
 import { Labels } from './labels.js';
-import { drawWhenShown, forget, isPrinting, keepStill, printable, showPoster, whenNear } from './loading.js';
+import { drawWhenShown, forget, isPrinting, keepStill, printable, showPoster, whenNear, whenStyled } from './loading.js';
 import { ALIASES, OptionError, bool, canonical, check } from './options.js';
 import { Playback } from './playback.js';
 import { fetchSource, persist, restorePersisted } from './source.js';
@@ -49,6 +49,10 @@ export class Figure {
     const { root, el } = buildChrome(host);
     this.root = root;
     this.el = el;
+    /** The message for a stylesheet that did not load, else null (loading.js). */
+    this.unstyled = null;
+    /** Resolves once the shadow tree's stylesheet applies (loading.js). */
+    this.styled = whenStyled(this);
     bindChrome(this);
     this.labels = new Labels(this);
     this.playback = new Playback(this);
@@ -65,7 +69,9 @@ export class Figure {
       showPoster(this);
       await whenNear(this);
       if (this.disposed) return;
-      const w = await loadWasm({ webgl2: this.opts.backend === 'webgl2' });
+      // The renderer measures the canvas: it starts once the stylesheet has laid it out (the
+      // stylesheet loads beside the module, and is usually there first).
+      const [w] = await Promise.all([loadWasm({ webgl2: this.opts.backend === 'webgl2' }), this.styled]);
       if (this.disposed) return;
       this.wasm = w;
       this.limits = w.limits();
@@ -190,6 +196,12 @@ export class Figure {
   }
 
   clearMessage() {
+    // A stylesheet that did not load (loading.js whenStyled) stays named: no option mends it.
+    if (this.unstyled) {
+      this.el.msg.textContent = this.unstyled;
+      this.el.msg.hidden = false;
+      return;
+    }
     this.el.msg.hidden = true;
     this.el.msg.textContent = '';
     this.el.fig.classList.remove('failed');

@@ -1,7 +1,7 @@
 // When a figure starts and when it draws, for pages of many figures, slide decks and print:
 // - loading: "lazy" (the default) starts a figure (wasm module, renderer, motion) only when it
-//   comes within NEAR of the viewport, "eager" at once; a `poster` image shows until the first
-//   frame is drawn;
+//   comes within NEAR of the viewport, "eager" at once, and either only once its stylesheet
+//   applies; a `poster` image shows until the first frame is drawn;
 // - a started figure draws only while it is near the viewport (the IntersectionObserver) and
 //   rendered visibly (not on a hidden slide: display, visibility or opacity, checkVisibility);
 //   far from the viewport for SUSPEND_MS it frees its renderer (GPU data, and the WebGL context
@@ -79,6 +79,32 @@ export function whenNear(fig) {
       fig.wake = null;
       resolve();
     };
+  });
+}
+
+/**
+ * Resolves once `fig`'s stylesheet applies: at once for a <style> (a bundle's inlined text) or a
+ * <link> already loaded, else on its load, or on its failure, which the figure names (it goes on
+ * unstyled). Until then the shadow tree has no layout of its own (a 300 × 150 canvas, bare
+ * controls), so the renderer, the first frame and `ready` wait for it: a host that measures the
+ * figure once it is ready measures the figure it shows. Called when the figure is built, so that
+ * a load that ends before the figure starts is heard.
+ */
+export function whenStyled(fig) {
+  const node = fig.el.stylesheet;
+  if (!(node instanceof HTMLLinkElement) || node.sheet) return Promise.resolve();
+  return new Promise((resolve) => {
+    const done = (e) => {
+      node.removeEventListener('load', done);
+      node.removeEventListener('error', done);
+      if (e.type === 'error') {
+        fig.unstyled = `The figure's stylesheet did not load (${node.href}).`;
+        fig.fail(null, fig.unstyled);
+      }
+      resolve();
+    };
+    node.addEventListener('load', done);
+    node.addEventListener('error', done);
   });
 }
 
