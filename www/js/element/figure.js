@@ -166,25 +166,25 @@ export class Figure {
 
   /** Runs `f` (sync or async) so that nothing it throws reaches the host page. */
   guard(f) {
-    try {
-      return Promise.resolve(f()).catch((e) => this.fail(e.attribute ?? null, e.message, e.value));
-    } catch (e) {
-      this.fail(e.attribute ?? null, e.message, e.value);
-      return Promise.resolve();
-    }
+    return Promise.resolve(this.guardNow(f)).catch((e) => this.failWith(e));
   }
 
   /**
-   * Runs the synchronous `f` and returns its value, for callers that need it at once (the
-   * pointer tool's press); what it throws is shown in the figure, as guard's, and gives `fallback`.
+   * Runs `f` and returns its value at once, for callers that need it so (the pointer tool's
+   * press); what it throws is shown in the figure, as guard's, and gives `fallback`.
    */
   guardNow(f, fallback) {
     try {
       return f();
     } catch (e) {
-      this.fail(e.attribute ?? null, e.message, e.value);
+      this.failWith(e);
       return fallback;
     }
+  }
+
+  /** Shows a thrown error (an OptionError names its attribute and value) in the figure. */
+  failWith(e) {
+    this.fail(e.attribute ?? null, e.message, e.value);
   }
 
   /** Shows `message` inside the figure and fires `error` {attribute, value, message}. */
